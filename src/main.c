@@ -1,8 +1,181 @@
-/* main.c - the utak command (placeholder until the TABLETOP issue lands). */
+/* main.c - the utak command: reads a world, runs Utak in it, prints what happened.
+ *
+ * The only file that sees both sides of the wall (impression.h): it owns the body
+ * (World, Table: the simulator) and hands the mind only impressions. It alone
+ * prints diagnostics and chooses the exit status: 0 done, 1 a task was not
+ * achieved, 2 bad usage or bad input. */
+#include <getopt.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
-int main(void)
+#include "utak/act.h"
+#include "utak/motion.h"
+#include "utak/table.h"
+#include "utak/util.h"
+#include "utak/world.h"
+
+#define UTAK_VERSION "0.1.0"
+
+static const char usage_text[] =
+	"usage: utak [OPTIONS] WORLD [TASK]\n"
+	"Runs Utak, the robot of Rosenberg and Jenkin's TABLETOP, in the world file WORLD.\n"
+	"\n"
+	"  --act SCRIPT   carry out motor commands, e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
+	"  --dump LIST    print dumps after the commands, comma-separated: table\n"
+	"  -o FILE        write the final state as a world file\n"
+	"  -h, --help     this text\n"
+	"  -V, --version  the version\n"
+	"See utak(1) and, for the world file, utak(5).\n";
+
+/* The dumps, in the order they are printed whatever order --dump names them. */
+typedef struct Body {
+	World world;
+	Table table;
+} Body;
+
+typedef void DumpFn(const Body *b, FILE *f);
+
+static void dump_table(const Body *b, FILE *f)
 {
-	fprintf(stderr, "utak: not built yet\n");
+	fprintf(f, "TABLE %d x %d, north at the top:\n", (int)b->table.w, (int)b->table.h);
+	table_dump(&b->table, &b->world, f);
+}
+
+static const struct {
+	const char *name;
+	DumpFn *fn;
+} dumps[] = {
+	{"table", dump_table},
+};
+enum { DUMP_COUNT = sizeof dumps / sizeof dumps[0] };
+
+static int usage_error(const char *fmt, const char *arg)
+{
+	fputs("utak: ", stderr);
+	fprintf(stderr, fmt, arg);
+	fputs(" (utak --help for usage)\n", stderr);
 	return 2;
+}
+
+/* parse_dumps(list, want): sets want[i] for each name in the comma-separated list. */
+static int parse_dumps(const char *list, bool want[DUMP_COUNT])
+{
+	const char *s = list;
+	for (;;) {
+		size_t n = strcspn(s, ",");
+		int i = 0;
+		while (i < DUMP_COUNT && !(strlen(dumps[i].name) == n && strncmp(dumps[i].name, s, n) == 0))
+			i++;
+		if (i == DUMP_COUNT) {
+			char known[256] = "";
+			for (int k = 0; k < DUMP_COUNT; k++) {
+				strcat(known, k ? ", " : "");
+				strcat(known, dumps[k].name);
+			}
+			fprintf(stderr, "utak: --dump: unknown dump '%.*s' (known: %s)\n", (int)(n > 40 ? 40 : n),
+				s, known);
+			return 2;
+		}
+		want[i] = true;
+		if (s[n] == 0)
+			return 0;
+		s += n + 1;
+	}
+}
+
+int main(int argc, char **argv)
+{
+	static const struct option longopts[] = {
+		{"act", required_argument, NULL, 'a'},
+		{"dump", required_argument, NULL, 'd'},
+		{"help", no_argument, NULL, 'h'},
+		{"version", no_argument, NULL, 'V'},
+		{NULL, 0, NULL, 0},
+	};
+	const char *act = NULL, *outfile = NULL;
+	bool want[DUMP_COUNT] = {false}, any_dump = false;
+	int c;
+	opterr = 0;
+	while ((c = getopt_long(argc, argv, ":o:hV", longopts, NULL)) != -1) {
+		switch (c) {
+		case 'a':
+			act = optarg;
+			break;
+		case 'd':
+			if (parse_dumps(optarg, want))
+				return 2;
+			any_dump = true;
+			break;
+		case 'o':
+			outfile = optarg;
+			break;
+		case 'h':
+			fputs(usage_text, stdout);
+			return 0;
+		case 'V':
+			puts("utak " UTAK_VERSION);
+			return 0;
+		case ':':
+			return usage_error("option '%s' needs an argument", argv[optind - 1]);
+		default:
+			return usage_error("unknown option '%s'", argv[optind - 1]);
+		}
+	}
+	if (optind >= argc)
+		return usage_error("%s", "no WORLD file given");
+	if (argc - optind > 2)
+		return usage_error("too many arguments, from '%s' (quote the TASK)", argv[optind + 2]);
+	const char *path = argv[optind], *task = optind + 1 < argc ? argv[optind + 1] : NULL;
+	if (task) {
+		fprintf(stderr, "utak: tasks are not implemented yet; drive Utak with --act\n");
+		return 2;
+	}
+
+	MotorCommand *cmds = NULL;
+	int ncmds = 0;
+	Diag d;
+	if (act && act_parse(act, strlen(act), &cmds, &ncmds, &d)) {
+		fprintf(stderr, "utak: %s\n", d.msg);
+		return 2;
+	}
+	Body body;
+	if (world_read(&body.world, path, &d) || table_build(&body.table, &body.world, &d)) {
+		world_free(&body.world); /* safe on a world that failed to read */
+		fprintf(stderr, "utak: %s\n", d.msg);
+		free(cmds);
+		return 2;
+	}
+	if (!any_dump)
+		want[0] = true; /* the TABLE */
+
+	for (int i = 0; i < ncmds; i++) {
+		MotorOutcome out;
+		motion_execute(&body.world, &body.table, &cmds[i], &out);
+		printf("act %d: ", i + 1);
+		motion_print(&cmds[i], &out, stdout);
+		putchar('\n');
+	}
+	for (int i = 0; i < DUMP_COUNT; i++)
+		if (want[i])
+			dumps[i].fn(&body, stdout);
+
+	int status = 0;
+	if (outfile) {
+		FILE *f = fopen(outfile, "w");
+		if (!f) {
+			fprintf(stderr, "utak: %s: cannot write\n", outfile);
+			status = 2;
+		} else {
+			world_write(&body.world, f);
+			if (fclose(f) != 0) {
+				fprintf(stderr, "utak: %s: cannot write\n", outfile);
+				status = 2;
+			}
+		}
+	}
+	free(cmds);
+	table_free(&body.table);
+	world_free(&body.world);
+	return status;
 }
