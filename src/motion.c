@@ -10,8 +10,9 @@
  * adding steps, so no rounding drifts in.
  *
  * What collides: the moving object's squares may be floor or its own; Utak's
- * square may be floor, his own current square, or the held object's (he is a
- * point outside the polygon, but the two digital shapes can share a square).
+ * square may be floor, or the held object's (he is a point outside the polygon,
+ * but the two digital shapes can share a square), or his current square when an
+ * object he let go of shares it, so long as his point does not enter that object.
  *
  * INVARIANT kept: table_validate(). COMPLEXITY: per step, O(squares of the
  * moving shape) to clear, test and stamp it. */
@@ -54,6 +55,23 @@ static Vec2 motion_utak_at(const Motion *m, double f)
 	return vec2_add(m->utak0, vec2_scale(m->delta, f));
 }
 
+/* enters_polygon(p, a, b): Utak's step from a to b ends inside p or crosses one
+ * of its edges. Needed only where his square is shared with an object (he let go
+ * of it beside him): there the TABLE cannot tell whether his point stays out. */
+static bool enters_polygon(const Polygon *p, Vec2 a, Vec2 b)
+{
+	if (geom_point_in_polygon(p, b))
+		return true;
+	for (int32_t i = 0; i < p->count; i++) {
+		Vec2 c = p->v[i], d = p->v[(i + 1) % p->count];
+		double o1 = geom_orient(a, b, c), o2 = geom_orient(a, b, d);
+		double o3 = geom_orient(c, d, a), o4 = geom_orient(c, d, b);
+		if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+			return true;
+	}
+	return false;
+}
+
 /* motion_try(m, f): moves the world to pose f if that pose is legal. The held
  * object is lifted off the TABLE, tested at the new pose and put down at the new
  * or the old one. */
@@ -79,7 +97,8 @@ static bool motion_try(Motion *m, double f)
 	table_square_of(u, &ux, &uy);
 	table_square_of(w->utak, &cx, &cy);
 	int32_t who = table_owner(t, ux, uy);
-	bool utak_ok = who == TABLE_FLOOR || (ux == cx && uy == cy && who != TABLE_VERGE);
+	bool utak_ok = who == TABLE_FLOOR ||
+		       (ux == cx && uy == cy && who > 0 && !enters_polygon(&w->objects[who - 1].shape, w->utak, u));
 	if (!utak_ok && held >= 0) {
 		/* His square may be one the held object's new projection claims. */
 		table_stamp_object(t, &p, held);
