@@ -336,8 +336,9 @@ static int statement(Reader *r)
 				    word_text(k, shown, sizeof shown));
 	}
 	if (r->count > MAX_WORDS)
-		return fail(r, r->words[MAX_WORDS].col, "too many words (a polygon has at most %s points)",
-			    "64");
+		return diag_set(r->d, r->name, r->line, r->words[MAX_WORDS].col,
+				"too many words (%d); a polygon has at most %d points", (int)r->count,
+				GEOM_MAX_VERTICES);
 	if (word_is(k, "table"))
 		return statement_table(r);
 	if (word_is(k, "verge"))

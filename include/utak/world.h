@@ -20,7 +20,7 @@
 /* Limits of the world file, each documented in man/utak.5. */
 enum {
 	WORLD_MAX_SIDE = 8192,		/* a TABLE side, in squares */
-	WORLD_MAX_SQUARES = 1 << 26,	/* W x H: 64 Mi squares, 128 MiB of TABLE */
+	WORLD_MAX_SQUARES = 1 << 25,	/* W x H: 32 Mi squares, 64 MiB of TABLE */
 	WORLD_MAX_OBJECTS = 4096,	/* objects; also walls */
 	WORLD_MAX_NAME = 31,		/* characters in an object's name */
 	WORLD_MAX_LINE = 4096,		/* characters in one line */
