@@ -12,6 +12,7 @@
 #include "utak/act.h"
 #include "utak/motion.h"
 #include "utak/table.h"
+#include "utak/task.h"
 #include "utak/util.h"
 #include "utak/world.h"
 
@@ -24,6 +25,7 @@ static const char usage_text[] =
 	"  --act SCRIPT   carry out motor commands, e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
 	"  --dump LIST    print dumps after the commands, comma-separated: table\n"
 	"  -o FILE        write the final state as a world file\n"
+	"  -n, --dry-run  read WORLD and TASK, say how the task reads, and stop\n"
 	"  -h, --help     this text\n"
 	"  -V, --version  the version\n"
 	"See utak(1) and, for the world file, utak(5).\n";
@@ -90,14 +92,15 @@ int main(int argc, char **argv)
 		{"act", required_argument, NULL, 'a'},
 		{"dump", required_argument, NULL, 'd'},
 		{"help", no_argument, NULL, 'h'},
+		{"dry-run", no_argument, NULL, 'n'},
 		{"version", no_argument, NULL, 'V'},
 		{NULL, 0, NULL, 0},
 	};
 	const char *act = NULL, *outfile = NULL;
-	bool want[DUMP_COUNT] = {false}, any_dump = false;
+	bool want[DUMP_COUNT] = {false}, any_dump = false, dry_run = false;
 	int c;
 	opterr = 0;
-	while ((c = getopt_long(argc, argv, ":o:hV", longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":o:hnV", longopts, NULL)) != -1) {
 		switch (c) {
 		case 'a':
 			act = optarg;
@@ -109,6 +112,9 @@ int main(int argc, char **argv)
 			break;
 		case 'o':
 			outfile = optarg;
+			break;
+		case 'n':
+			dry_run = true;
 			break;
 		case 'h':
 			fputs(usage_text, stdout);
@@ -127,14 +133,21 @@ int main(int argc, char **argv)
 	if (argc - optind > 2)
 		return usage_error("too many arguments, from '%s' (quote the TASK)", argv[optind + 2]);
 	const char *path = argv[optind], *task = optind + 1 < argc ? argv[optind + 1] : NULL;
-	if (task) {
-		fprintf(stderr, "utak: tasks are not implemented yet; drive Utak with --act\n");
+	Diag d;
+	Task goal;
+	if (task && task_parse(task, &goal, &d)) {
+		fprintf(stderr, "utak: %s\n", d.msg);
+		return 2;
+	}
+	if (task && act)
+		return usage_error("%s", "give either --act or a TASK, not both");
+	if (task && !dry_run) {
+		fprintf(stderr, "utak: the controller is not built yet; drive Utak with --act\n");
 		return 2;
 	}
 
 	MotorCommand *cmds = NULL;
 	int ncmds = 0;
-	Diag d;
 	if (act && act_parse(act, strlen(act), &cmds, &ncmds, &d)) {
 		fprintf(stderr, "utak: %s\n", d.msg);
 		return 2;
@@ -145,6 +158,21 @@ int main(int argc, char **argv)
 		fprintf(stderr, "utak: %s\n", d.msg);
 		free(cmds);
 		return 2;
+	}
+	if (dry_run) {
+		if (task) {
+			char form[64];
+			const char *number = task_paper_number(&goal);
+			task_short_form(&goal, form, sizeof form);
+			printf("task: \"%s\" reads as \"%s\"", task, form);
+			if (number)
+				printf(", the paper's task %s", number);
+			putchar('\n');
+		}
+		free(cmds);
+		table_free(&body.table);
+		world_free(&body.world);
+		return 0;
 	}
 	if (!any_dump)
 		want[0] = true; /* the TABLE */
