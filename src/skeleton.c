@@ -1,0 +1,513 @@
+/* skeleton.c - the exact distance transform and the digital skeleton of free space
+ * (paper 4.2; see skeleton.h for the digital topology and the units).
+ *
+ * ALGORITHM
+ * 1. Distance transform: Meijster, Roerdink and Hesselink, "A general algorithm for
+ *    computing distance transforms in linear time" (Mathematical Morphology and its
+ *    Applications to Image and Signal Processing, 2000). Phase 1 scans every column
+ *    for the distance g to the nearest blocked cell in that column; phase 2 takes,
+ *    in every row, the lower envelope of the parabolas (x - u)^2 + g(u)^2. The cells
+ *    just outside the grid are blocked: phase 1 starts each column at distance 1 from
+ *    the rows -1 and h, and phase 2 runs over columns -1 .. w with g = 0 at both ends.
+ * 2. Thinning: distance-ordered homotopic thinning (Pudney, "Distance-ordered homotopic
+ *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
+ *    here in 2D with the (4, 8) topology. Free cells are visited in order of
+ *    increasing dist2 (a counting sort: a bucket queue with all keys known in
+ *    advance; ties by cell index, so the result is deterministic). A visited cell is
+ *    deleted when it is simple (deleting it changes neither the 4-components of the
+ *    set nor the 8-components of its complement: a 256-entry table over the 8
+ *    neighbours, built from the definition of Bertrand's topological numbers
+ *    T4 = 1 and T8bar = 1) and is not an end point (exactly one 4-neighbour in the
+ *    set: keeping end points keeps the branches that reach into corridors and
+ *    niches). A deletion can make an already visited neighbour deletable; such
+ *    neighbours go on a stack and are tried again at once, so when the scan ends no
+ *    cell of the set is deletable. Visiting in distance order peels the space like
+ *    Blum's grassfire, so what is left lies on the ridge of the distance map, the
+ *    medial axis.
+ * 3. Pruning: an end point made by a one-cell notch in a wall grows a spur to the
+ *    medial axis. Every branch from an end point to a junction cell (degree >= 3) is
+ *    removed when it has at most SKELETON_SPUR_FACTOR * clearance(junction) +
+ *    SKELETON_SPUR_SLACK cells (see skeleton.h); branches are judged all at once on
+ *    the thinned set, one round, and a branch joining two end points (a component
+ *    that is a simple arc) is never removed. Removing a branch that hangs off a
+ *    junction changes no topology. Then step 2's deletion test runs again over the
+ *    skeleton, because a junction that lost a branch may now be deletable.
+ *
+ * INVARIANTS (tested in tests/unit/test_skeleton.c against flood-fill oracles)
+ *    skeleton cells are free; the skeleton has as many 4-components as the free
+ *    space and, in each, as many loops (8-components of its complement not joined to
+ *    the outside) as the space has holes; no skeleton cell is deletable by step 2.
+ *
+ * MEMORY  dist2 and on (5 bytes a cell, kept), and while computing: a padded state
+ *    byte per cell, the visiting order and a stack (4 bytes a cell each), and the
+ *    counting-sort histogram (4 bytes per possible dist2 value, at most (side/2)^2).
+ *
+ * COMPLEXITY  O(w h): the transform is two passes per axis; the sort is two passes;
+ *    every cell is visited once plus once per deleted neighbour (at most 8); pruning
+ *    walks each branch once. Measured by bench/skelbench.c. */
+#include "utak/skeleton.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/util.h"
+
+/* ---------------------------------------------------------------- distance transform */
+
+/* floor division for a positive divisor (C's '/' truncates toward zero). */
+static int32_t skeleton_floor_div(int32_t a, int32_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+void skeleton_edt(const Grid *g, int32_t *dist2)
+{
+	const int32_t w = g->w, h = g->h;
+	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
+	if (w == 0 || h == 0)
+		return;
+	/* Phase 1, row by row so that the inner loop runs along memory: dist2 holds g,
+	 * the distance along the column to the nearest blocked cell (or to row -1 / h). */
+	for (int32_t x = 0; x < w; x++)
+		dist2[x] = g->cells[x] == GRID_FREE ? 1 : 0;
+	for (int32_t y = 1; y < h; y++) {
+		const uint8_t *c = g->cells + (size_t)y * w;
+		int32_t *row = dist2 + (size_t)y * w, *prev = row - w;
+		for (int32_t x = 0; x < w; x++)
+			row[x] = c[x] == GRID_FREE ? prev[x] + 1 : 0;
+	}
+	for (int32_t x = 0; x < w; x++) {
+		int32_t *last = dist2 + (size_t)(h - 1) * w;
+		if (last[x] > 1)
+			last[x] = 1;
+	}
+	for (int32_t y = h - 2; y >= 0; y--) {
+		int32_t *row = dist2 + (size_t)y * w, *next = row + w;
+		for (int32_t x = 0; x < w; x++)
+			if (next[x] + 1 < row[x])
+				row[x] = next[x] + 1;
+	}
+	/* Phase 2 over the columns u = 0 .. w + 1 standing for x = -1 .. w; gg[u] is g^2. */
+	const int32_t n = w + 2;
+	int32_t *gg = util_alloc((size_t)n, sizeof *gg);
+	int32_t *s = util_alloc((size_t)n, sizeof *s);
+	int32_t *t = util_alloc((size_t)n, sizeof *t);
+	for (int32_t y = 0; y < h; y++) {
+		int32_t *row = dist2 + (size_t)y * w;
+		gg[0] = gg[n - 1] = 0;
+		for (int32_t x = 0; x < w; x++)
+			gg[x + 1] = row[x] * row[x];
+		int32_t q = 0;
+		s[0] = 0;
+		t[0] = 0;
+		for (int32_t u = 1; u < n; u++) {
+			/* pop the parabolas that u's parabola lies under at their own start */
+			while (q >= 0) {
+				int32_t a = t[q] - s[q], b = t[q] - u;
+				if (a * a + gg[s[q]] <= b * b + gg[u])
+					break;
+				q--;
+			}
+			if (q < 0) {
+				q = 0;
+				s[0] = u;
+			} else {
+				int32_t i = s[q];
+				int32_t sep = skeleton_floor_div(u * u - i * i + gg[u] - gg[i], 2 * (u - i));
+				if (sep + 1 < n) {
+					q++;
+					s[q] = u;
+					t[q] = sep + 1;
+				}
+			}
+		}
+		for (int32_t u = n - 1; u >= 0; u--) {
+			int32_t d = u - s[q];
+			if (u >= 1 && u <= w)
+				row[u - 1] = d * d + gg[s[q]];
+			if (u == t[q])
+				q--;
+		}
+	}
+	free(gg);
+	free(s);
+	free(t);
+}
+
+/* ---------------------------------------------------------------- simple points */
+
+/* The 8 neighbours in counter-clockwise order from east; even indices are the 4
+ * edge neighbours. Bit i of a neighbourhood mask is neighbour i being in the set. */
+static const int8_t SKELETON_DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+static const int8_t SKELETON_DY[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+
+/* skeleton_is_simple_mask(m): Bertrand's T4(p, X) = 1 and T8(p, complement) = 1 for
+ * the neighbourhood m, straight from the definitions by a tiny union-find. In the ring
+ * of 8 neighbours two cells are 4-adjacent exactly when consecutive; two background
+ * cells are 8-adjacent when consecutive or when both are edge neighbours two apart. */
+static bool skeleton_is_simple_mask(unsigned m)
+{
+	int parent[8];
+	for (int i = 0; i < 8; i++)
+		parent[i] = i;
+	for (int i = 0; i < 8; i++) {
+		int j = (i + 1) % 8, k = (i + 2) % 8;
+		bool fi = (m >> i) & 1, fj = (m >> j) & 1, fk = (m >> k) & 1;
+		int a, b;
+		if (fi == fj) {
+			for (a = i; parent[a] != a; a = parent[a])
+				;
+			for (b = j; parent[b] != b; b = parent[b])
+				;
+			parent[a] = b;
+		}
+		if (!fi && !fk && i % 2 == 0) {
+			for (a = i; parent[a] != a; a = parent[a])
+				;
+			for (b = k; parent[b] != b; b = parent[b])
+				;
+			parent[a] = b;
+		}
+	}
+	int t4 = 0, t8bar = 0;
+	bool seen[8] = {false};
+	for (int i = 0; i < 8; i++) {
+		int r;
+		for (r = i; parent[r] != r; r = parent[r])
+			;
+		bool fg = (m >> i) & 1;
+		/* a foreground component counts for T4 only when it holds an edge neighbour */
+		if (fg && i % 2 == 0 && !seen[r]) {
+			seen[r] = true;
+			t4++;
+		}
+		if (!fg && !seen[r]) {
+			seen[r] = true;
+			t8bar++;
+		}
+	}
+	return t4 == 1 && t8bar == 1;
+}
+
+static void skeleton_build_simple_table(bool table[256])
+{
+	for (unsigned m = 0; m < 256; m++)
+		table[m] = skeleton_is_simple_mask(m);
+}
+
+/* ---------------------------------------------------------------- thinning */
+
+enum {
+	SKELETON_IN = 1,	/* still in the set */
+	SKELETON_VISITED = 2,	/* reached in the distance order */
+	SKELETON_STACKED = 4	/* on the re-try stack */
+};
+
+/* The thinning works on a copy of the grid padded by one background cell on every
+ * side, so that a neighbourhood never needs a bounds check. */
+typedef struct Thinner {
+	int32_t w, h, pw;	/* grid size, padded width w + 2 */
+	uint8_t *state;		/* (w + 2) * (h + 2) SKELETON_* bits */
+	int32_t off[8];		/* padded index offsets of the 8 neighbours */
+	int32_t *stack;		/* padded indices to try again */
+	int32_t top;
+	const int32_t *dist2;	/* w * h, unpadded */
+	bool simple[256];
+} Thinner;
+
+static unsigned thinner_mask(const Thinner *t, int32_t pi)
+{
+	unsigned m = 0;
+	for (int i = 0; i < 8; i++)
+		m |= (unsigned)(t->state[pi + t->off[i]] & SKELETON_IN) << i;
+	return m;
+}
+
+/* thinner_dist2(t, pi): dist2 of the cell at padded index pi. */
+static int32_t thinner_dist2(const Thinner *t, int32_t pi)
+{
+	return t->dist2[(size_t)(pi / t->pw - 1) * t->w + (pi % t->pw - 1)];
+}
+
+/* thinner_deletable(t, pi): pi is simple and not a ridge end. A ridge end has exactly
+ * one 4-neighbour in the set and no 8-neighbour in the set farther from the obstacles:
+ * it is the tip of a branch of the medial axis (the distance map has a local maximum
+ * there along the branch). Without the second condition every cell of the grassfire
+ * front that happens to lose its side neighbours first would be kept as an end, and
+ * grow a spur; with it, a branch whose distance rises from its tip (toward a convex
+ * corner of the space) burns back to its junction, as Blum's branches into corners
+ * carry no choice of route. */
+static bool thinner_deletable(const Thinner *t, int32_t pi)
+{
+	unsigned m = thinner_mask(t, pi);
+	if (!t->simple[m])
+		return false;
+	int edge = (int)((m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1));
+	if (edge != 1)
+		return true;
+	int32_t d = thinner_dist2(t, pi);
+	for (int i = 0; i < 8; i++)
+		if (((m >> i) & 1) && thinner_dist2(t, pi + t->off[i]) > d)
+			return true;
+	return false;
+}
+
+/* thinner_delete_from(t, pi): deletes pi, then every visited cell that its deletion
+ * (or a later one) makes deletable. */
+static void thinner_delete_from(Thinner *t, int32_t pi)
+{
+	t->state[pi] &= (uint8_t)~SKELETON_IN;
+	t->top = 0;
+	for (;;) {
+		for (int i = 0; i < 8; i++) {
+			int32_t qi = pi + t->off[i];
+			uint8_t st = t->state[qi];
+			if ((st & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
+			    (SKELETON_IN | SKELETON_VISITED)) {
+				t->state[qi] = st | SKELETON_STACKED;
+				t->stack[t->top++] = qi;
+			}
+		}
+		/* find the next stacked cell that is deletable now */
+		for (;;) {
+			if (t->top == 0)
+				return;
+			pi = t->stack[--t->top];
+			t->state[pi] &= (uint8_t)~SKELETON_STACKED;
+			if (thinner_deletable(t, pi))
+				break;
+		}
+		t->state[pi] &= (uint8_t)~SKELETON_IN;
+	}
+}
+
+/* ---------------------------------------------------------------- pruning */
+
+/* thinner_degree(t, pi): the 4-neighbours of pi in the set. */
+static int thinner_degree(const Thinner *t, int32_t pi)
+{
+	return (t->state[pi + t->off[0]] & SKELETON_IN) + (t->state[pi + t->off[2]] & SKELETON_IN) +
+	       (t->state[pi + t->off[4]] & SKELETON_IN) + (t->state[pi + t->off[6]] & SKELETON_IN);
+}
+
+/* thinner_prune(t, dist2): removes the spurs (see the header comment); returns the
+ * number of cells removed. Spurs are found on the set as thinned, then removed. */
+static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, int32_t nset)
+{
+	/* order[0 .. nset) lists the padded indices of the set; cells to remove are
+	 * collected at the end of the stack array, which is as long as the grid. */
+	int32_t nremove = 0;
+	int32_t *remove = t->stack;
+	for (int32_t k = 0; k < nset; k++) {
+		int32_t end = order[k];
+		if (thinner_degree(t, end) != 1)
+			continue;
+		int32_t prev = -1, cur = end, length = 1;
+		bool to_junction = false;
+		for (;;) {
+			int32_t next = -1;
+			for (int i = 0; i < 8; i += 2) {
+				int32_t qi = cur + t->off[i];
+				if (qi != prev && (t->state[qi] & SKELETON_IN)) {
+					next = qi;
+					break;
+				}
+			}
+			int d = thinner_degree(t, next);
+			if (d >= 3) {
+				to_junction = true;
+				int32_t jx = next % t->pw - 1, jy = next / t->pw - 1;
+				double r = sqrt((double)dist2[(size_t)jy * t->w + jx]);
+				if (length > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK)
+					to_junction = false;
+				break;
+			}
+			if (d <= 1)
+				break;
+			prev = cur;
+			cur = next;
+			length++;
+		}
+		if (!to_junction)
+			continue;
+		/* walk it again, recording the cells */
+		prev = -1;
+		cur = end;
+		for (;;) {
+			remove[nremove++] = cur;
+			int32_t next = -1;
+			for (int i = 0; i < 8; i += 2) {
+				int32_t qi = cur + t->off[i];
+				if (qi != prev && (t->state[qi] & SKELETON_IN)) {
+					next = qi;
+					break;
+				}
+			}
+			if (thinner_degree(t, next) >= 3)
+				break;
+			prev = cur;
+			cur = next;
+		}
+	}
+	for (int32_t k = 0; k < nremove; k++)
+		t->state[remove[k]] &= (uint8_t)~SKELETON_IN;
+	return nremove;
+}
+
+/* ---------------------------------------------------------------- the skeleton */
+
+void skeleton_init(Skeleton *s) { *s = (Skeleton){0}; }
+
+void skeleton_free(Skeleton *s)
+{
+	free(s->dist2);
+	free(s->on);
+	*s = (Skeleton){0};
+}
+
+void skeleton_compute(Skeleton *s, const Grid *g)
+{
+	skeleton_free(s);
+	const int32_t w = g->w, h = g->h;
+	const size_t n = (size_t)w * (size_t)h;
+	s->w = w;
+	s->h = h;
+	s->dist2 = util_alloc(n, sizeof *s->dist2);
+	s->on = util_alloc(n, 1);
+	if (n == 0)
+		return;
+	skeleton_edt(g, s->dist2);
+
+	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
+	const size_t pn = (size_t)(w + 2) * (size_t)(h + 2);
+	t.state = util_alloc(pn, 1);
+	t.stack = util_alloc(n, sizeof *t.stack);
+	for (int i = 0; i < 8; i++)
+		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
+	skeleton_build_simple_table(t.simple);
+
+	/* counting sort of the free cells by dist2, ties by index */
+	int32_t maxd = 0;
+	int32_t nfree = 0;
+	for (size_t i = 0; i < n; i++) {
+		if (s->dist2[i] > maxd)
+			maxd = s->dist2[i];
+		nfree += g->cells[i] == GRID_FREE;
+	}
+	int32_t *start = util_alloc((size_t)maxd + 2, sizeof *start);
+	int32_t *order = util_alloc((size_t)nfree + 1, sizeof *order);
+	for (size_t i = 0; i < n; i++)
+		if (g->cells[i] == GRID_FREE)
+			start[s->dist2[i] + 1]++;
+	for (int32_t d = 0; d <= maxd; d++)
+		start[d + 1] += start[d];
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *c = g->cells + (size_t)y * w;
+		const int32_t *d2 = s->dist2 + (size_t)y * w;
+		uint8_t *st = t.state + (size_t)(y + 1) * t.pw + 1;
+		for (int32_t x = 0; x < w; x++) {
+			if (c[x] != GRID_FREE)
+				continue;
+			st[x] = SKELETON_IN;
+			order[start[d2[x]]++] = (y + 1) * t.pw + x + 1;
+		}
+	}
+	free(start);
+
+	for (int32_t k = 0; k < nfree; k++) {
+		int32_t pi = order[k];
+		t.state[pi] |= SKELETON_VISITED;
+		if (thinner_deletable(&t, pi))
+			thinner_delete_from(&t, pi);
+	}
+
+	/* the set, in index order, for pruning */
+	int32_t nset = 0;
+	for (int32_t k = 0; k < nfree; k++)
+		if (t.state[order[k]] & SKELETON_IN)
+			order[nset++] = order[k];
+	s->pruned = thinner_prune(&t, s->dist2, order, nset);
+	if (s->pruned > 0) {
+		/* a junction that lost a branch may be deletable now */
+		for (int32_t k = 0; k < nset; k++) {
+			int32_t pi = order[k];
+			if ((t.state[pi] & SKELETON_IN) && thinner_deletable(&t, pi))
+				thinner_delete_from(&t, pi);
+		}
+	}
+
+	s->count = 0;
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *st = t.state + (size_t)(y + 1) * t.pw + 1;
+		uint8_t *on = s->on + (size_t)y * w;
+		for (int32_t x = 0; x < w; x++) {
+			on[x] = st[x] & SKELETON_IN;
+			s->count += on[x];
+		}
+	}
+	free(order);
+	free(t.state);
+	free(t.stack);
+}
+
+int skeleton_degree(const Skeleton *s, int32_t x, int32_t y)
+{
+	return skeleton_on(s, x + 1, y) + skeleton_on(s, x - 1, y) + skeleton_on(s, x, y + 1) +
+	       skeleton_on(s, x, y - 1);
+}
+
+double skeleton_clearance(const Skeleton *s, int32_t x, int32_t y)
+{
+	return sqrt((double)s->dist2[(size_t)y * s->w + x]);
+}
+
+/* skeleton_is_pinwheel(s, x, y): the 2x2 block with lower-left cell (x, y) is all
+ * skeleton and each of its cells has a skeleton edge neighbour outside the block: the
+ * one 2x2 block thinning cannot remove, since each cell is then a branch's root. */
+static bool skeleton_is_pinwheel(const Skeleton *s, int32_t x, int32_t y)
+{
+	return (skeleton_on(s, x - 1, y) || skeleton_on(s, x, y - 1)) &&
+	       (skeleton_on(s, x + 2, y) || skeleton_on(s, x + 1, y - 1)) &&
+	       (skeleton_on(s, x - 1, y + 1) || skeleton_on(s, x, y + 2)) &&
+	       (skeleton_on(s, x + 2, y + 1) || skeleton_on(s, x + 1, y + 2));
+}
+
+bool skeleton_validate(const Skeleton *s, const Grid *g)
+{
+	if (s->w != g->w || s->h != g->h)
+		return false;
+	int32_t count = 0;
+	for (int32_t y = 0; y < s->h; y++)
+		for (int32_t x = 0; x < s->w; x++) {
+			size_t i = (size_t)y * s->w + x;
+			bool free_cell = g->cells[i] == GRID_FREE;
+			if ((s->dist2[i] == 0) == free_cell)
+				return false;
+			if (s->on[i] && !free_cell)
+				return false;
+			count += s->on[i] != 0;
+			if (skeleton_on(s, x, y) && skeleton_on(s, x + 1, y) && skeleton_on(s, x, y + 1) &&
+			    skeleton_on(s, x + 1, y + 1) && !skeleton_is_pinwheel(s, x, y))
+				return false;
+		}
+	return count == s->count;
+}
+
+void skeleton_dump(const Skeleton *s, const Grid *g, FILE *out)
+{
+	int32_t junctions = 0, ends = 0;
+	for (int32_t y = s->h - 1; y >= 0; y--) {
+		for (int32_t x = 0; x < s->w; x++) {
+			char c = grid_free_at(g, x, y) ? '.' : '#';
+			if (skeleton_on(s, x, y)) {
+				int d = skeleton_degree(s, x, y);
+				c = d >= 3 ? '+' : d <= 1 ? '*' : 'o';
+				junctions += d >= 3;
+				ends += d <= 1;
+			}
+			fputc(c, out);
+		}
+		fputc('\n', out);
+	}
+	fprintf(out, "skeleton: %d cells, %d junction cells, %d end points, %d pruned\n", (int)s->count,
+		(int)junctions, (int)ends, (int)s->pruned);
+}

@@ -1,0 +1,318 @@
+/* test_skeleton.c - the distance transform and the skeleton (skeleton.h, paper 4.2),
+ * against brute-force oracles: an O(n^2) distance transform, and flood-fill counts of
+ * components and holes under the (4, 8) topology of skeleton.h. */
+#include <stdlib.h>
+
+#include "oracle.h"
+#include "test.h"
+#include "utak/skeleton.h"
+
+/* brute_edt: the definition, with the ring of cells just outside the grid blocked. */
+static int32_t brute_edt_at(const Grid *g, int x, int y)
+{
+	if (!grid_free_at(g, x, y))
+		return 0;
+	int32_t best = INT32_MAX;
+	for (int by = -1; by <= g->h; by++)
+		for (int bx = -1; bx <= g->w; bx++) {
+			if (grid_free_at(g, bx, by))
+				continue;
+			int32_t d = (bx - x) * (bx - x) + (by - y) * (by - y);
+			if (d < best)
+				best = d;
+		}
+	return best;
+}
+
+static bool edt_matches_brute(const Grid *g)
+{
+	int32_t *d = malloc(sizeof(int32_t) * (size_t)(g->w * g->h + 1));
+	skeleton_edt(g, d);
+	bool ok = true;
+	for (int y = 0; y < g->h && ok; y++)
+		for (int x = 0; x < g->w && ok; x++)
+			ok = d[y * g->w + x] == brute_edt_at(g, x, y);
+	free(d);
+	return ok;
+}
+
+TEST_CASE(edt_equals_brute_force_on_random_grids)
+{
+	oracle_seed = 1;
+	for (int trial = 0; trial < 300; trial++) {
+		Grid g;
+		int w = 1 + oracle_rand_below(40), h = 1 + oracle_rand_below(40);
+		int percent = trial % 3 == 0 ? 2 : oracle_rand_below(60);
+		oracle_random_grid(&g, w, h, percent, trial % 2 ? 0 : 3);
+		TEST_CHECK(edt_matches_brute(&g));
+		grid_free(&g);
+	}
+}
+
+TEST_CASE(edt_all_free_all_blocked_and_thin_grids)
+{
+	int sizes[][2] = {{1, 1}, {1, 30}, {30, 1}, {2, 2}, {37, 23}, {64, 64}};
+	for (int k = 0; k < 6; k++)
+		for (int fill = 0; fill <= 1; fill++) {
+			Grid g;
+			grid_init(&g, sizes[k][0], sizes[k][1], fill ? GRID_FREE : GRID_BLOCKED);
+			TEST_CHECK(edt_matches_brute(&g));
+			grid_free(&g);
+		}
+	/* by hand: a free 5x5 grid, the centre is 3 from the outside ring */
+	Grid g;
+	grid_init(&g, 5, 5, GRID_FREE);
+	int32_t d[25];
+	skeleton_edt(&g, d);
+	TEST_CHECK(d[2 * 5 + 2] == 9 && d[0] == 1 && d[1 * 5 + 1] == 4);
+	grid_free(&g);
+}
+
+/* topology_matches(g, s): per free 4-component, exactly one skeleton 4-component,
+ * and the same number of holes (each counted on that component alone). */
+static bool topology_matches(const Grid *g, const Skeleton *s)
+{
+	int n = g->w * g->h;
+	int *flab = malloc(sizeof(int) * (size_t)(n + 1));
+	int *slab = malloc(sizeof(int) * (size_t)(n + 1));
+	uint8_t *one = malloc((size_t)n + 1);
+	int fc = oracle_label(g->cells, g->w, g->h, 4, flab);
+	int sc = oracle_label(s->on, g->w, g->h, 4, slab);
+	bool ok = fc == sc;
+	/* each skeleton component lies in one free component, and no two share one */
+	int *owner = malloc(sizeof(int) * (size_t)(fc + 1));
+	for (int k = 0; k < fc; k++)
+		owner[k] = -1;
+	for (int i = 0; i < n && ok; i++) {
+		if (slab[i] < 0)
+			continue;
+		int f = flab[i];
+		ok = f >= 0 && (owner[f] < 0 || owner[f] == slab[i]);
+		owner[f] = slab[i];
+	}
+	for (int k = 0; k < fc && ok; k++) {
+		ok = owner[k] >= 0;
+		for (int i = 0; i < n; i++)
+			one[i] = flab[i] == k;
+		int fh = oracle_holes(one, g->w, g->h);
+		for (int i = 0; i < n; i++)
+			one[i] = slab[i] == owner[k];
+		int sh = oracle_holes(one, g->w, g->h);
+		if (fh != sh)
+			fprintf(stderr, "  component %d: %d holes in space, %d loops in skeleton\n", k,
+				fh, sh);
+		ok = ok && fh == sh;
+	}
+	free(owner);
+	free(one);
+	free(flab);
+	free(slab);
+	return ok;
+}
+
+/* thin_by_definition(g, s): every skeleton cell that is not an end point changes the
+ * numbers of components or holes when removed (it is not simple). */
+static bool thin_by_definition(const Skeleton *s)
+{
+	int n = s->w * s->h;
+	int *lab = malloc(sizeof(int) * (size_t)(n + 1));
+	uint8_t *set = malloc((size_t)n + 1);
+	memcpy(set, s->on, (size_t)n);
+	int c0 = oracle_label(set, s->w, s->h, 4, lab), h0 = oracle_holes(set, s->w, s->h);
+	bool ok = true;
+	for (int i = 0; i < n && ok; i++) {
+		if (!set[i] || skeleton_degree(s, i % s->w, i / s->w) == 1)
+			continue;
+		set[i] = 0;
+		int c1 = oracle_label(set, s->w, s->h, 4, lab), h1 = oracle_holes(set, s->w, s->h);
+		set[i] = 1;
+		ok = c1 != c0 || h1 != h0;
+		if (!ok)
+			fprintf(stderr, "  cell (%d, %d) could go\n", i % s->w, i / s->w);
+	}
+	free(lab);
+	free(set);
+	return ok;
+}
+
+static void dump_on_failure(const Skeleton *s, const Grid *g, bool ok)
+{
+	if (!ok)
+		skeleton_dump(s, g, stderr);
+}
+
+TEST_CASE(skeleton_topology_on_random_grids)
+{
+	oracle_seed = 7;
+	for (int trial = 0; trial < 200; trial++) {
+		Grid g;
+		int w = 2 + oracle_rand_below(36), h = 2 + oracle_rand_below(36);
+		oracle_random_grid(&g, w, h, oracle_rand_below(45), oracle_rand_below(6));
+		Skeleton s;
+		skeleton_init(&s);
+		skeleton_compute(&s, &g);
+		bool ok = skeleton_validate(&s, &g);
+		dump_on_failure(&s, &g, ok);
+		TEST_CHECK(ok);
+		ok = topology_matches(&g, &s);
+		dump_on_failure(&s, &g, ok);
+		TEST_CHECK(ok);
+		if (trial < 60) {
+			ok = thin_by_definition(&s);
+			dump_on_failure(&s, &g, ok);
+			TEST_CHECK(ok);
+		}
+		skeleton_free(&s);
+		grid_free(&g);
+	}
+}
+
+/* count_blocks(s, &pinwheels): the 2x2 blocks all of skeleton, and among them the
+ * pinwheels, whose four cells each have a skeleton edge neighbour outside the block. */
+static int count_blocks(const Skeleton *s, int *pinwheels)
+{
+	int blocks = 0;
+	*pinwheels = 0;
+	for (int y = 0; y + 1 < s->h; y++)
+		for (int x = 0; x + 1 < s->w; x++) {
+			if (!(skeleton_on(s, x, y) && skeleton_on(s, x + 1, y) && skeleton_on(s, x, y + 1) &&
+			      skeleton_on(s, x + 1, y + 1)))
+				continue;
+			blocks++;
+			int arms = 0;
+			for (int k = 0; k < 4; k++) {
+				int cx = x + (k & 1), cy = y + (k >> 1);
+				int ox = (k & 1) ? 1 : -1, oy = (k >> 1) ? 1 : -1;
+				arms += skeleton_on(s, cx + ox, cy) || skeleton_on(s, cx, cy + oy);
+			}
+			*pinwheels += arms == 4;
+		}
+	return blocks;
+}
+
+/* One cell thick, precisely: no cell can go (thin_by_definition, above), and a 2x2
+ * block of skeleton is always a pinwheel: four loops or branches meeting, as between
+ * four one-cell obstacles, where the (4, 8) topology needs every cell. Among obstacles
+ * that are rectangles a few cells apart there is no 2x2 block at all. */
+TEST_CASE(skeleton_2x2_blocks_only_pinwheels)
+{
+	oracle_seed = 99;
+	int blocks_in_clutter = 0;
+	for (int trial = 0; trial < 200; trial++) {
+		Grid g;
+		bool clutter = trial % 2 == 0;
+		oracle_random_grid(&g, 48, 40, clutter ? oracle_rand_below(30) : 0,
+				   1 + oracle_rand_below(8));
+		Skeleton s;
+		skeleton_init(&s);
+		skeleton_compute(&s, &g);
+		int pinwheels, blocks = count_blocks(&s, &pinwheels);
+		bool ok = blocks == pinwheels && (clutter || blocks == 0);
+		dump_on_failure(&s, &g, ok);
+		TEST_CHECK(ok);
+		blocks_in_clutter += blocks;
+		skeleton_free(&s);
+		grid_free(&g);
+	}
+	/* the clutter does make pinwheels, so the first check above was exercised */
+	TEST_CHECK(blocks_in_clutter > 0);
+}
+
+TEST_CASE(skeleton_ring_has_one_loop_and_clearance)
+{
+	static const char *const rows[] = {
+	    "...............",
+	    "...............",
+	    "...............",
+	    "......###......",
+	    "......###......",
+	    "......###......",
+	    "...............",
+	    "...............",
+	    "...............",
+	};
+	Grid g;
+	oracle_grid_from(&g, rows, 9);
+	Skeleton s;
+	skeleton_init(&s);
+	skeleton_compute(&s, &g);
+	TEST_CHECK(skeleton_validate(&s, &g));
+	TEST_CHECK(topology_matches(&g, &s));
+	TEST_CHECK(oracle_holes(s.on, g.w, g.h) == 1);
+	for (int y = 0; y < g.h; y++)
+		for (int x = 0; x < g.w; x++)
+			if (skeleton_on(&s, x, y))
+				TEST_CHECK(skeleton_clearance(&s, x, y) >= 1.0);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+TEST_CASE(skeleton_of_diagonal_pinch_is_two_components)
+{
+	/* two rooms that touch only at the corner of two diagonally touching blocked
+	 * cells: not connected (skeleton.h), so two skeleton components */
+	static const char *const rows[] = {
+	    "....#....",
+	    "....#....",
+	    "....#....",
+	    "#####....",
+	    ".....####",
+	    "....#....",
+	    "....#....",
+	};
+	Grid g;
+	oracle_grid_from(&g, rows, 7);
+	Skeleton s;
+	skeleton_init(&s);
+	skeleton_compute(&s, &g);
+	int lab[63];
+	TEST_CHECK(oracle_label(s.on, g.w, g.h, 4, lab) == oracle_label(g.cells, g.w, g.h, 4, lab));
+	TEST_CHECK(topology_matches(&g, &s));
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+TEST_CASE(skeleton_of_corridor_is_its_middle)
+{
+	/* a corridor 3 wide, closed at both ends: the skeleton is its middle row but for
+	 * the end cells, whose distance (1, to the end walls) rises inward */
+	Grid g;
+	grid_init(&g, 12, 3, GRID_FREE);
+	Skeleton s;
+	skeleton_init(&s);
+	skeleton_compute(&s, &g);
+	TEST_CHECK(s.count == 10);
+	for (int x = 1; x < 11; x++)
+		TEST_CHECK(skeleton_on(&s, x, 1));
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+TEST_CASE(skeleton_all_blocked_and_empty)
+{
+	Grid g;
+	grid_init(&g, 6, 4, GRID_BLOCKED);
+	Skeleton s;
+	skeleton_init(&s);
+	skeleton_compute(&s, &g);
+	TEST_CHECK(s.count == 0 && skeleton_validate(&s, &g));
+	grid_free(&g);
+	grid_init(&g, 1, 1, GRID_FREE);
+	skeleton_compute(&s, &g);
+	TEST_CHECK(s.count == 1 && skeleton_validate(&s, &g));
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+int main(void)
+{
+	TEST_RUN(edt_equals_brute_force_on_random_grids);
+	TEST_RUN(edt_all_free_all_blocked_and_thin_grids);
+	TEST_RUN(skeleton_topology_on_random_grids);
+	TEST_RUN(skeleton_2x2_blocks_only_pinwheels);
+	TEST_RUN(skeleton_ring_has_one_loop_and_clearance);
+	TEST_RUN(skeleton_of_diagonal_pinch_is_two_components);
+	TEST_RUN(skeleton_of_corridor_is_its_middle);
+	TEST_RUN(skeleton_all_blocked_and_empty);
+	return TEST_EXIT();
+}
