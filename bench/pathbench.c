@@ -1,0 +1,456 @@
+/* pathbench.c - the path-finding benchmark on Moving AI maps (paper 4.1 and 5: the
+ * paper's planners compared on real maps).
+ *
+ *   pathbench [--sample N] FILE.map FILE.scen
+ *	One line per scenario (see PATHBENCH_LINE_HEADER); exit 1 when grid A* misses a
+ *	published optimum (tolerance 1e-3 + 1e-5 x length), 2 on a bad file or usage.
+ *   pathbench --table [--sample N] MAP SCEN [MAP SCEN ...]
+ *	One row per map (times, expansions, length ratios) and a row of medians over
+ *	every scenario run; the same exit status.
+ *   pathbench --corner [--scale K] MAP ...
+ *	Grid A* corner to corner (the free cell nearest the top-left corner to the one
+ *	nearest the bottom-right), each map optionally enlarged K times (every cell
+ *	becomes K x K cells), the figure the issue compares with libtcod.
+ *
+ * --sample N runs at most N scenarios of each file, evenly spaced (always the first),
+ * so that `make bench` takes minutes. Times are wall-clock milliseconds on one
+ * thread (CLOCK_MONOTONIC); every other printed number is deterministic.
+ *
+ * The skeleton planner's columns (skel ...) print "-" until the skeleton and pathgraph
+ * modules are merged; they are marked SKELETON below, where they get wired in. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "utak/grid.h"
+#include "utak/gridpath.h"
+#include "utak/movingai.h"
+#include "utak/path.h"
+#include "utak/util.h"
+
+#define PATHBENCH_NAME "pathbench"
+
+/* One scenario's results; a negative length means "not computed". */
+typedef struct BenchResult {
+	double optimum;		/* published 8-connected optimum */
+	double astar;		/* grid A* length */
+	double anyangle;	/* visibility-graph (Euclidean) optimum */
+	double rope;		/* the A* path, rope-tightened */
+	double skeleton;	/* SKELETON: the skeleton planner's path */
+	double skeleton_rope;	/* SKELETON: the same, rope-tightened */
+	double astar_ms;
+	int64_t astar_expanded;
+	double anyangle_ms;
+	int64_t anyangle_expanded;
+	double rope_ms;
+	int astar_ok;		/* the A* length matches the optimum */
+} BenchResult;
+
+/* The per-map state every planner needs, built once per map. */
+typedef struct BenchMap {
+	const char *map_path, *scen_path;
+	Grid grid;
+	MovingAiScen scen;
+	int64_t free_cells;
+	GridPathSearch astar;
+	double astar_init_ms;
+} BenchMap;
+
+static double bench_now_ms(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
+static void bench_die_usage(void)
+{
+	fprintf(stderr,
+		"usage: " PATHBENCH_NAME " [--sample N] FILE.map FILE.scen\n"
+		"       " PATHBENCH_NAME " --table [--sample N] MAP SCEN [MAP SCEN ...]\n"
+		"       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n");
+	exit(2);
+}
+
+static int bench_cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* bench_median(v, n): the median of the n values (sorts v); NAN when n == 0. */
+static double bench_median(double *v, int n)
+{
+	if (n == 0)
+		return NAN;
+	qsort(v, (size_t)n, sizeof *v, bench_cmp_double);
+	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* bench_load: reads a map (and its scenarios when scen_path is not NULL); on a bad
+ * file prints one line and exits 2. */
+static void bench_load(BenchMap *bm, const char *map_path, const char *scen_path)
+{
+	char err[MOVINGAI_ERROR_SIZE];
+	*bm = (BenchMap){.map_path = map_path, .scen_path = scen_path};
+	if (!movingai_read_map(map_path, &bm->grid, err)) {
+		fprintf(stderr, PATHBENCH_NAME ": %s\n", err);
+		exit(2);
+	}
+	if (scen_path && !movingai_read_scen(scen_path, &bm->grid, &bm->scen, err)) {
+		fprintf(stderr, PATHBENCH_NAME ": %s\n", err);
+		exit(2);
+	}
+	for (int64_t i = 0; i < (int64_t)bm->grid.w * bm->grid.h; i++)
+		bm->free_cells += bm->grid.cells[i] == GRID_FREE;
+	double t0 = bench_now_ms();
+	gridpath_init(&bm->astar, &bm->grid);
+	bm->astar_init_ms = bench_now_ms() - t0;
+}
+
+static void bench_unload(BenchMap *bm)
+{
+	gridpath_free(&bm->astar);
+	movingai_scen_free(&bm->scen);
+	grid_free(&bm->grid);
+}
+
+/* bench_selected(i, count, sample): scenario i is one of the `sample` evenly spaced
+ * ones (all when sample <= 0 or sample >= count). */
+static int bench_selected(int i, int count, int sample)
+{
+	if (sample <= 0 || sample >= count)
+		return 1;
+	/* The j-th pick is floor(j count / sample); i is picked when some j maps to it. */
+	int64_t j = ((int64_t)i * sample + count - 1) / count;
+	return j < sample && (j * count) / sample == i;
+}
+
+/* bench_run: solves problem i with every planner. */
+static BenchResult bench_run(BenchMap *bm, int i, Path *path)
+{
+	const MovingAiProblem *pr = &bm->scen.problems[i];
+	BenchResult r = {.optimum = pr->optimum, .anyangle = -1, .rope = -1, .skeleton = -1,
+			 .skeleton_rope = -1, .anyangle_ms = -1, .rope_ms = -1,
+			 .anyangle_expanded = -1};
+	double t0 = bench_now_ms();
+	GridPathStatus st = gridpath_find(&bm->astar, pr->sx, pr->sy, pr->gx, pr->gy, path, &r.astar);
+	r.astar_ms = bench_now_ms() - t0;
+	r.astar_expanded = path->expanded;
+	r.astar_ok = st == GRIDPATH_FOUND && fabs(r.astar - r.optimum) <= movingai_tolerance(r.optimum);
+	/* SKELETON: skeleton planner query and its rope-tightening go here. */
+	return r;
+}
+
+/* bench_length: a length, or "-" when not computed, in a fixed-width column. */
+static void bench_print_length(double v)
+{
+	if (v < 0)
+		printf(" %12s", "-");
+	else
+		printf(" %12.4f", v);
+}
+
+#define PATHBENCH_LINE_HEADER                                                                   \
+	"# index bucket      optimum        astar     anyangle   astar+rope     skeleton "       \
+	"   skel+rope\n"
+
+static int bench_lines(const char *map_path, const char *scen_path, int sample)
+{
+	BenchMap bm;
+	bench_load(&bm, map_path, scen_path);
+	Path path;
+	path_init(&path);
+	printf("# map %s: %d x %d, %lld free cells; %d scenarios\n", map_path, (int)bm.grid.w,
+	       (int)bm.grid.h, (long long)bm.free_cells, bm.scen.count);
+	printf(PATHBENCH_LINE_HEADER);
+	int missed = 0;
+	for (int i = 0; i < bm.scen.count; i++) {
+		if (!bench_selected(i, bm.scen.count, sample))
+			continue;
+		BenchResult r = bench_run(&bm, i, &path);
+		printf("%7d %6d", i, (int)bm.scen.problems[i].bucket);
+		bench_print_length(r.optimum);
+		bench_print_length(r.astar);
+		bench_print_length(r.anyangle);
+		bench_print_length(r.rope);
+		bench_print_length(r.skeleton);
+		bench_print_length(r.skeleton_rope);
+		printf("%s\n", r.astar_ok ? "" : "  MISSED");
+		if (!r.astar_ok) {
+			missed++;
+			fprintf(stderr, PATHBENCH_NAME ": %s:%d: grid A* length %.6f, published %.6f\n",
+				scen_path, (int)bm.scen.problems[i].line, r.astar, r.optimum);
+		}
+	}
+	path_free(&path);
+	bench_unload(&bm);
+	return missed ? 1 : 0;
+}
+
+/* bench_print_value: a figure with the given decimals, or "-" (NAN). */
+static void bench_print_value(int width, int decimals, double v)
+{
+	if (isnan(v))
+		printf(" %*s", width, "-");
+	else
+		printf(" %*.*f", width, decimals, v);
+}
+
+/* The table's columns, each a median over the map's scenarios run unless it says
+ * max. Ratios: A* over the published optimum (must be 1), any-angle over optimum,
+ * A*+rope over any-angle (median and max), and A*+rope minus the grid optimum (max). */
+#define PATHBENCH_TABLE_HEADER                                                                  \
+	"map                         size        cells    run  A*ok  A*ms    A*exp   "            \
+	"anyang/opt rope/any rope/any.max rope-opt.max  rope.ms | skel: dt.ms sk.ms pg.ms "    \
+	"q.ms q.exp sk/any skr/any\n"
+
+typedef struct BenchColumn {
+	double *v;
+	int n;
+} BenchColumn;
+
+static void bench_column_add(BenchColumn *c, double v)
+{
+	if (v < 0 || isnan(v))
+		return;
+	c->v = util_realloc(c->v, (size_t)c->n + 1, sizeof *c->v);
+	c->v[c->n++] = v;
+}
+
+static double bench_column_max(const BenchColumn *c)
+{
+	double m = NAN;
+	for (int i = 0; i < c->n; i++)
+		if (isnan(m) || c->v[i] > m)
+			m = c->v[i];
+	return m;
+}
+
+enum {
+	COL_ASTAR_MS,
+	COL_ASTAR_EXP,
+	COL_ANY_OVER_OPT,
+	COL_ROPE_OVER_ANY,
+	COL_ROPE_MINUS_OPT,
+	COL_ROPE_MS,
+	COL_COUNT
+};
+
+static void bench_print_row(const char *name, const char *size, int64_t cells, int run, int ok,
+			    BenchColumn col[COL_COUNT])
+{
+	printf("%-26s %11s %10lld %6d %5s", name, size, (long long)cells, run,
+	       ok == run ? "all" : "MISS");
+	double rope_over_any_max = bench_column_max(&col[COL_ROPE_OVER_ANY]);
+	double rope_minus_opt_max = bench_column_max(&col[COL_ROPE_MINUS_OPT]);
+	bench_print_value(6, 2, bench_median(col[COL_ASTAR_MS].v, col[COL_ASTAR_MS].n));
+	bench_print_value(8, 0, bench_median(col[COL_ASTAR_EXP].v, col[COL_ASTAR_EXP].n));
+	bench_print_value(12, 4, bench_median(col[COL_ANY_OVER_OPT].v, col[COL_ANY_OVER_OPT].n));
+	bench_print_value(8, 4, bench_median(col[COL_ROPE_OVER_ANY].v, col[COL_ROPE_OVER_ANY].n));
+	bench_print_value(12, 4, rope_over_any_max);
+	bench_print_value(12, 4, rope_minus_opt_max);
+	bench_print_value(8, 2, bench_median(col[COL_ROPE_MS].v, col[COL_ROPE_MS].n));
+	/* SKELETON: distance transform, skeleton, pathgraph, query ms, query expansions,
+	 * skeleton / any-angle, tightened skeleton / any-angle. */
+	printf(" | %11s %5s %5s %4s %5s %6s %7s\n", "-", "-", "-", "-", "-", "-", "-");
+}
+
+static const char *bench_basename(const char *path)
+{
+	const char *s = strrchr(path, '/');
+	return s ? s + 1 : path;
+}
+
+static int bench_table(int argc, char **argv, int sample)
+{
+	if (argc < 2 || argc % 2 != 0)
+		bench_die_usage();
+	BenchColumn all[COL_COUNT] = {{0}};
+	int all_run = 0, all_ok = 0;
+	int64_t all_cells = 0;
+	printf(PATHBENCH_TABLE_HEADER);
+	Path path;
+	path_init(&path);
+	for (int m = 0; m < argc; m += 2) {
+		BenchMap bm;
+		bench_load(&bm, argv[m], argv[m + 1]);
+		BenchColumn col[COL_COUNT] = {{0}};
+		int run = 0, ok = 0;
+		for (int i = 0; i < bm.scen.count; i++) {
+			if (!bench_selected(i, bm.scen.count, sample))
+				continue;
+			BenchResult r = bench_run(&bm, i, &path);
+			run++;
+			ok += r.astar_ok;
+			if (!r.astar_ok)
+				fprintf(stderr,
+					PATHBENCH_NAME ": %s:%d: grid A* length %.6f, published %.6f\n",
+					argv[m + 1], (int)bm.scen.problems[i].line, r.astar, r.optimum);
+			double v[COL_COUNT] = {
+			    r.astar_ms,
+			    (double)r.astar_expanded,
+			    r.anyangle >= 0 && r.optimum > 0 ? r.anyangle / r.optimum : NAN,
+			    r.rope >= 0 && r.anyangle > 0 ? r.rope / r.anyangle : NAN,
+			    r.rope >= 0 ? r.rope - r.optimum : NAN,
+			    r.rope_ms >= 0 ? r.rope_ms : NAN,
+			};
+			for (int c = 0; c < COL_COUNT; c++) {
+				/* rope - opt may be negative: keep it (the column is a max). */
+				if (c == COL_ROPE_MINUS_OPT && !isnan(v[c])) {
+					col[c].v = util_realloc(col[c].v, (size_t)col[c].n + 1,
+								sizeof(double));
+					col[c].v[col[c].n++] = v[c];
+					all[c].v = util_realloc(all[c].v, (size_t)all[c].n + 1,
+								sizeof(double));
+					all[c].v[all[c].n++] = v[c];
+					continue;
+				}
+				bench_column_add(&col[c], v[c]);
+				bench_column_add(&all[c], v[c]);
+			}
+		}
+		char size[32];
+		snprintf(size, sizeof size, "%dx%d", (int)bm.grid.w, (int)bm.grid.h);
+		/* The row is named after the scenario file (a map may have several). */
+		char name[64];
+		snprintf(name, sizeof name, "%s", bench_basename(argv[m + 1]));
+		for (char *dot; (dot = strrchr(name, '.')) &&
+				(strcmp(dot, ".scen") == 0 || strcmp(dot, ".map") == 0);)
+			*dot = '\0';
+		bench_print_row(name, size, bm.free_cells, run, ok, col);
+		fflush(stdout);
+		for (int c = 0; c < COL_COUNT; c++)
+			free(col[c].v);
+		all_run += run;
+		all_ok += ok;
+		all_cells += bm.free_cells;
+		bench_unload(&bm);
+	}
+	bench_print_row("MEDIAN (all scenarios)", "", all_cells, all_run, all_ok, all);
+	for (int c = 0; c < COL_COUNT; c++)
+		free(all[c].v);
+	path_free(&path);
+	return all_ok == all_run ? 0 : 1;
+}
+
+/* bench_scale(g, k): every cell becomes k x k cells. */
+static void bench_scale(Grid *g, int k)
+{
+	Grid big;
+	grid_init(&big, g->w * k, g->h * k, GRID_BLOCKED);
+	for (int32_t y = 0; y < big.h; y++)
+		for (int32_t x = 0; x < big.w; x++)
+			big.cells[(size_t)y * big.w + x] = g->cells[(size_t)(y / k) * g->w + x / k];
+	grid_free(g);
+	*g = big;
+}
+
+/* bench_nearest_free(g, cx, cy, &x, &y): the free cell nearest (cx, cy) in the
+ * max-norm, scanning rings outward in a fixed order; false when none. */
+static int bench_nearest_free(const Grid *g, int32_t cx, int32_t cy, int32_t *x, int32_t *y)
+{
+	int32_t rmax = g->w > g->h ? g->w : g->h;
+	for (int32_t r = 0; r <= rmax; r++)
+		for (int32_t dy = -r; dy <= r; dy++)
+			for (int32_t dx = -r; dx <= r; dx++) {
+				if (abs(dx) != r && abs(dy) != r)
+					continue;
+				if (grid_free_at(g, cx + dx, cy + dy)) {
+					*x = cx + dx;
+					*y = cy + dy;
+					return 1;
+				}
+			}
+	return 0;
+}
+
+/* The repetitions of a corner-to-corner query; the minimum is reported. */
+#define PATHBENCH_CORNER_REPEAT 3
+
+static int bench_corner(int argc, char **argv, int scale)
+{
+	printf("# grid A* corner to corner, best of %d runs\n", PATHBENCH_CORNER_REPEAT);
+	printf("map                         size       cells    length   expanded      ms\n");
+	Path path;
+	path_init(&path);
+	for (int m = 0; m < argc; m++) {
+		BenchMap bm;
+		bench_load(&bm, argv[m], NULL);
+		if (scale > 1) {
+			gridpath_free(&bm.astar);
+			bench_scale(&bm.grid, scale);
+			gridpath_init(&bm.astar, &bm.grid);
+			bm.free_cells *= (int64_t)scale * scale;
+		}
+		int32_t sx, sy, gx, gy;
+		char name[64], size[32];
+		snprintf(name, sizeof name, "%s", bench_basename(argv[m]));
+		char *dot = strrchr(name, '.');
+		if (dot)
+			*dot = '\0';
+		if (scale > 1) {
+			size_t n = strlen(name);
+			snprintf(name + n, sizeof name - n, " x%d", scale);
+		}
+		snprintf(size, sizeof size, "%dx%d", (int)bm.grid.w, (int)bm.grid.h);
+		double best = INFINITY, len = -1;
+		if (bench_nearest_free(&bm.grid, 0, 0, &sx, &sy) &&
+		    bench_nearest_free(&bm.grid, bm.grid.w - 1, bm.grid.h - 1, &gx, &gy))
+			for (int rep = 0; rep < PATHBENCH_CORNER_REPEAT; rep++) {
+				double t0 = bench_now_ms();
+				gridpath_find(&bm.astar, sx, sy, gx, gy, &path, &len);
+				double t = bench_now_ms() - t0;
+				best = t < best ? t : best;
+			}
+		printf("%-26s %11s %10lld", name, size, (long long)bm.free_cells);
+		if (len < 0)
+			printf(" %9s %10s %7s\n", "none", "-", "-");
+		else
+			printf(" %9.2f %10lld %7.1f\n", len, (long long)path.expanded, best);
+		fflush(stdout);
+		bench_unload(&bm);
+	}
+	path_free(&path);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	int table = 0, corner = 0, sample = 0, scale = 1, a = 1;
+	for (; a < argc && strncmp(argv[a], "--", 2) == 0; a++) {
+		if (strcmp(argv[a], "--table") == 0)
+			table = 1;
+		else if (strcmp(argv[a], "--corner") == 0)
+			corner = 1;
+		else if ((strcmp(argv[a], "--sample") == 0 || strcmp(argv[a], "--scale") == 0) &&
+			 a + 1 < argc) {
+			char *end;
+			long v = strtol(argv[a + 1], &end, 10);
+			if (*end != '\0' || v < 1 || v > 1000000) {
+				fprintf(stderr, PATHBENCH_NAME ": %s: bad number \"%s\"\n", argv[a],
+					argv[a + 1]);
+				return 2;
+			}
+			if (argv[a][2] == 's' && argv[a][3] == 'a')
+				sample = (int)v;
+			else
+				scale = (int)v;
+			a++;
+		} else
+			bench_die_usage();
+	}
+	if (table && corner)
+		bench_die_usage();
+	if (scale > 16)
+		bench_die_usage();
+	if (corner)
+		return argc - a >= 1 ? bench_corner(argc - a, argv + a, scale) : (bench_die_usage(), 2);
+	if (table)
+		return bench_table(argc - a, argv + a, sample);
+	if (argc - a != 2)
+		bench_die_usage();
+	return bench_lines(argv[a], argv[a + 1], sample);
+}

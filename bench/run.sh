@@ -1,0 +1,41 @@
+#!/bin/sh
+# run.sh - `make bench`: the path-finding benchmark (paper 4.1 and 5) over every
+# Moving AI map in ../shared/data/movingai (the data sits beside the repository).
+#
+# Prints two tables: (1) per scenario file, grid A* against the published optima
+# (a check: any miss makes this script fail), the visibility-graph any-angle optimum
+# and rope-tightening, with times and expansions; (2) grid A* corner to corner on
+# the 1024 x 1024 maps (Boston, and the three 512 x 512 maps enlarged twice), the
+# figure the issue compares with libtcod. PATHBENCH_SAMPLE scenarios of each file,
+# evenly spaced, are run so the whole takes a few minutes on 2 cores.
+set -u
+data=${MOVINGAI:-../shared/data/movingai}
+bin=${PATHBENCH:-build/rel/bench/pathbench}
+sample=${PATHBENCH_SAMPLE:-200}
+if [ ! -d "$data/maps" ] || [ ! -d "$data/scenarios" ]; then
+	echo "bench/run.sh: $data: no Moving AI data (maps/ and scenarios/)" >&2
+	exit 2
+fi
+
+# Pair every .scen with its map: the map named in its first problem line, found by
+# file name under maps/. Sorted, so the table's order is fixed.
+pairs=
+for scen in $(find "$data/scenarios" -name '*.scen' | LC_ALL=C sort); do
+	name=$(awk -F'\t' 'NR == 2 { n = split($2, p, "/"); print p[n]; exit }' "$scen")
+	map=$(find "$data/maps" -name "$name" | LC_ALL=C sort | head -n 1)
+	if [ -z "$map" ]; then
+		echo "bench/run.sh: $scen: map $name not found under $data/maps" >&2
+		exit 2
+	fi
+	pairs="$pairs $map $scen"
+done
+
+echo "== pathbench --table --sample $sample (medians per file; times in ms, one thread)"
+# shellcheck disable=SC2086
+"$bin" --table --sample "$sample" $pairs; st=$?
+echo
+echo "== grid A* corner to corner on 1024 x 1024 maps"
+"$bin" --corner "$data/maps/cities/Boston_0_1024.map" || st=1
+"$bin" --corner --scale 2 "$data/maps/rooms/8room_000.map" "$data/maps/mazes/maze512-1-0.map" \
+	"$data/maps/random/random512-10-0.map" | tail -n +3 || st=1
+exit $st
