@@ -51,7 +51,7 @@ build/chk/libutak.a: $(CHECKOBJ)
 build/chk/utak: build/chk/main.o build/chk/libutak.a
 	$(CC) $(CHECKFLAGS) -o $@ build/chk/main.o build/chk/libutak.a $(LDLIBS)
 
-build/chk/unit/%: tests/unit/%.c tests/unit/test.h build/chk/libutak.a | build/chk/unit
+build/chk/unit/%: tests/unit/%.c $(wildcard tests/unit/*.h) build/chk/libutak.a | build/chk/unit
 	$(CC) $(CHECKFLAGS) -Itests/unit -o $@ $< build/chk/libutak.a $(LDLIBS)
 
 build/rel build/chk build/chk/unit:
