@@ -2,6 +2,7 @@
  * skeleton cells, the line test against hand cases and dense sampling, paths in free
  * space exactly when a flood fill joins the ends, k distinct paths round a ring. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "oracle.h"
 #include "test.h"
@@ -360,6 +361,36 @@ TEST_CASE(entry_is_in_sight_in_a_room)
 	grid_free(&g);
 }
 
+TEST_CASE(pathgraph_dump_of_a_corridor_by_hand)
+{
+	/* a corridor 3 wide: its skeleton is the middle row from x = 1 to 10, both ends
+	 * end points, clearance 2 (to the outside rows) all along */
+	Grid g;
+	grid_init(&g, 12, 3, GRID_FREE);
+	Skeleton s;
+	Pathgraph pg;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	char *text = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&text, &len);
+	pathgraph_dump(&pg, f);
+	fclose(f);
+	const char *want = "pathgraph: 2 vertices, 1 edges\n"
+			   "vertex 0 1 1 end 1 2.000\n"
+			   "vertex 1 10 1 end 1 2.000\n"
+			   "edge 0 0 1 9.000 2.000 10\n";
+	if (strcmp(text, want) != 0)
+		fprintf(stderr, "%s", text);
+	TEST_CHECK(strcmp(text, want) == 0);
+	free(text);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
 int main(void)
 {
 	TEST_RUN(line_test_by_hand);
@@ -369,5 +400,6 @@ int main(void)
 	TEST_RUN(two_distinct_paths_round_a_ring);
 	TEST_RUN(minimum_clearance_avoids_the_narrow_way);
 	TEST_RUN(entry_is_in_sight_in_a_room);
+	TEST_RUN(pathgraph_dump_of_a_corridor_by_hand);
 	return TEST_EXIT();
 }
