@@ -190,17 +190,15 @@ bool pathgraph_segment_free(const Grid *g, Vec2 a, Vec2 b)
 static int32_t pathgraph_cx(const Pathgraph *pg, int32_t i) { return i % pg->w; }
 static int32_t pathgraph_cy(const Pathgraph *pg, int32_t i) { return i / pg->w; }
 
-/* pathgraph_corner_cut(pg, a, b, c): cells a, b, c make a staircase corner that a
- * diagonal step a -> c may cut: a and c touch at a corner and both cells orthogonal
- * to that step (b and the one opposite) are free. */
+/* pathgraph_corner_cut(pg, a, b, c): the 4-adjacent steps a -> b -> c make a staircase
+ * corner that a diagonal step a -> c may cut: the steps are perpendicular and both
+ * cells orthogonal to the diagonal (b, and a + (c - b) opposite it) are free. The
+ * fourth cell of the 2x2 block that a, b, c span is inside the grid. */
 static bool pathgraph_corner_cut(const Pathgraph *pg, int32_t a, int32_t b, int32_t c)
 {
-	int32_t ax = pathgraph_cx(pg, a), ay = pathgraph_cy(pg, a);
-	int32_t bx = pathgraph_cx(pg, b), by = pathgraph_cy(pg, b);
-	int32_t cx = pathgraph_cx(pg, c), cy = pathgraph_cy(pg, c);
-	if (abs(ax - cx) != 1 || abs(ay - cy) != 1)
-		return false;
-	return grid_free_at(pg->grid, ax + cx - bx, ay + cy - by);
+	int32_t s1 = b - a, s2 = c - b, w = pg->w;
+	bool perpendicular = (s1 == 1 || s1 == -1) ? (s2 == w || s2 == -w) : (s2 == 1 || s2 == -1);
+	return perpendicular && pg->grid->cells[a + s2] == GRID_FREE;
 }
 
 /* pathgraph_run_length(pg, cells, count, step): the length of the polyline through the
@@ -279,18 +277,32 @@ typedef struct Builder {
 	int vertex_cap, edge_cap;
 } Builder;
 
-static int32_t builder_neighbour(const Builder *b, int32_t i, int d)
+/* builder_neighbour(b, i, x, d): the skeleton cell next to cell i (in column x) in
+ * direction d, or -1. The column is passed in, tracked by the callers, because a
+ * division per step (i % w) would cost more than the rest of the walk. */
+static int32_t builder_neighbour(const Builder *b, int32_t i, int32_t x, int d)
 {
-	int32_t x = i % b->pg->w + PATHGRAPH_DX[d], y = i / b->pg->w + PATHGRAPH_DY[d];
-	return skeleton_on(b->s, x, y) ? y * b->pg->w + x : -1;
+	const int32_t w = b->pg->w;
+	const uint8_t *on = b->s->on;
+	switch (d) {
+	case 0:
+		return x + 1 < w && on[i + 1] ? i + 1 : -1;
+	case 1:
+		return i + w < w * b->pg->h && on[i + w] ? i + w : -1;
+	case 2:
+		return x > 0 && on[i - 1] ? i - 1 : -1;
+	default:
+		return i >= w && on[i - w] ? i - w : -1;
+	}
 }
 
-static int builder_degree(const Builder *b, int32_t i)
+/* builder_degree(b, i, x): skeleton 4-neighbours of cell i in column x. */
+static int builder_degree(const Builder *b, int32_t i, int32_t x)
 {
-	int d = 0;
-	for (int k = 0; k < 4; k++)
-		d += builder_neighbour(b, i, k) >= 0;
-	return d;
+	const int32_t w = b->pg->w;
+	const uint8_t *on = b->s->on;
+	return (x + 1 < w && on[i + 1]) + (x > 0 && on[i - 1]) + (i + w < w * b->pg->h && on[i + w]) +
+	       (i >= w && on[i - w]);
 }
 
 static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
@@ -313,10 +325,11 @@ static void builder_junction_set(Builder *b, int32_t seed)
 	int first = b->vcells.count;
 	intlist_push(&b->vcells, seed);
 	for (int k = first; k < b->vcells.count; k++) {
-		int32_t c = b->vcells.v[k];
+		int32_t c = b->vcells.v[k], x = c % pg->w;
 		for (int d = 0; d < 4; d++) {
-			int32_t nb = builder_neighbour(b, c, d);
-			if (nb >= 0 && pg->cell_ref[nb] == PATHGRAPH_REF_NONE && builder_degree(b, nb) >= 3) {
+			int32_t nb = builder_neighbour(b, c, x, d);
+			if (nb >= 0 && pg->cell_ref[nb] == PATHGRAPH_REF_NONE &&
+			    builder_degree(b, nb, x + PATHGRAPH_DX[d]) >= 3) {
 				pg->cell_ref[nb] = v;
 				intlist_push(&b->vcells, nb);
 			}
@@ -332,9 +345,9 @@ static void builder_junction_set(Builder *b, int32_t seed)
 	intlist_push(&b->vcells, root);
 	b->toward[root] = 0;
 	for (int k = first; k < b->vcells.count; k++) {
-		int32_t c = b->vcells.v[k];
+		int32_t c = b->vcells.v[k], x = c % pg->w;
 		for (int d = 0; d < 4; d++) {
-			int32_t nb = builder_neighbour(b, c, d);
+			int32_t nb = builder_neighbour(b, c, x, d);
 			if (nb >= 0 && nb != root && pg->cell_ref[nb] == v && b->toward[nb] == 0) {
 				b->toward[nb] = (uint8_t)(1 + (d + 2) % 4);
 				intlist_push(&b->vcells, nb);
@@ -378,8 +391,9 @@ static void builder_add_edge(Builder *b, int32_t v0, int32_t v1, int first)
 			e->min_dist2 = b->s->dist2[b->cells.v[k]];
 }
 
-/* builder_edge_from(b, v, c, nb): the edge leaving vertex v's cell c through nb. */
-static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb)
+/* builder_edge_from(b, v, c, nb, nb_x): the edge leaving vertex v's cell c through nb,
+ * which is in column nb_x. */
+static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb, int32_t nb_x)
 {
 	Pathgraph *pg = b->pg;
 	int first = b->cells.count;
@@ -390,18 +404,21 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb)
 		b->cells.v[i] = b->cells.v[j];
 		b->cells.v[j] = t;
 	}
-	int32_t prev = c, cur = nb;
+	int32_t prev = c, cur = nb, x = nb_x;
 	while (pg->cell_ref[cur] == PATHGRAPH_REF_NONE) {
 		pg->cell_ref[cur] = PATHGRAPH_REF_CHAIN;
 		intlist_push(&b->cells, cur);
-		int32_t next = -1;
+		int32_t next = -1, next_x = x;
 		for (int d = 0; d < 4 && next < 0; d++) {
-			int32_t q = builder_neighbour(b, cur, d);
-			if (q >= 0 && q != prev)
+			int32_t q = builder_neighbour(b, cur, x, d);
+			if (q >= 0 && q != prev) {
 				next = q;
+				next_x = x + PATHGRAPH_DX[d];
+			}
 		}
 		prev = cur;
 		cur = next;
+		x = next_x;
 	}
 	int32_t u = pg->cell_ref[cur];
 	assert(u >= 0);
@@ -423,10 +440,10 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	b.toward = util_alloc(n, 1);
 
 	/* (1) vertices, in row-major order of their first cell */
-	for (size_t i = 0; i < n; i++) {
+	for (size_t i = 0, x = 0; i < n; i++, x = x + 1 == (size_t)pg->w ? 0 : x + 1) {
 		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
 			continue;
-		int d = builder_degree(&b, (int32_t)i);
+		int d = builder_degree(&b, (int32_t)i, (int32_t)x);
 		if (d == 2)
 			continue;
 		intlist_push(&b.vstart, b.vcells.count);
@@ -441,14 +458,14 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	/* (2) the chains between them */
 	for (int32_t v = 0; v < pg->vertex_count; v++)
 		for (int k = b.vstart.v[v]; k < b.vstart.v[v + 1]; k++) {
-			int32_t c = b.vcells.v[k];
+			int32_t c = b.vcells.v[k], x = c % pg->w;
 			for (int d = 0; d < 4; d++) {
-				int32_t nb = builder_neighbour(&b, c, d);
+				int32_t nb = builder_neighbour(&b, c, x, d);
 				if (nb < 0)
 					continue;
 				int32_t ref = pg->cell_ref[nb];
 				if (ref == PATHGRAPH_REF_NONE) {
-					builder_edge_from(&b, v, c, nb);
+					builder_edge_from(&b, v, c, nb, x + PATHGRAPH_DX[d]);
 				} else if (ref >= 0 && ref != v && c < nb) {
 					int first = b.cells.count;
 					builder_to_root(&b, c, &b.cells);
@@ -467,10 +484,10 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
 			continue;
 		int32_t v = builder_add_vertex(&b, (int32_t)i, PATHGRAPH_LOOP);
-		int32_t nb = builder_neighbour(&b, (int32_t)i, 0);
-		for (int d = 1; nb < 0 && d < 4; d++)
-			nb = builder_neighbour(&b, (int32_t)i, d);
-		builder_edge_from(&b, v, (int32_t)i, nb);
+		int32_t x = (int32_t)(i % (size_t)pg->w), nb = -1, d = 0;
+		for (; nb < 0; d++)
+			nb = builder_neighbour(&b, (int32_t)i, x, d);
+		builder_edge_from(&b, v, (int32_t)i, nb, x + PATHGRAPH_DX[d - 1]);
 	}
 
 	/* the edges' cells, and the chain cells' references to them */
@@ -878,7 +895,7 @@ static void pathgraph_relax(Pathgraph *pg, const SearchEnds *se, int32_t node, i
 	sc->pred_arc[other] = arc;
 	sc->pred_node[other] = node;
 	Vec2 a = pathgraph_node_centre(pg, se, other), b = pathgraph_node_centre(pg, se, sc->goal);
-	pathgraph_heap_push(sc, ng + hypot(a.x - b.x, a.y - b.y), other);
+	pathgraph_heap_push(sc, ng + sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)), other);
 }
 
 /* pathgraph_astar(pg, se, src, dst, route): the shortest route from src to dst avoiding
@@ -1025,19 +1042,35 @@ static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *r
 	for (int k = sc->walk_d.count - 1; k >= 0; k--)
 		pathgraph_push_cell(l, sc->walk_d.v[k]);
 
-	path_clear(out);
-	pathgraph_push_point(out, from);
-	int i = 0;
-	pathgraph_push_point(out, pathgraph_cell_centre(pg, l->v[0]));
-	for (i = 1; i < l->count;) {
-		if (i + 1 < l->count && pathgraph_corner_cut(pg, l->v[i - 1], l->v[i], l->v[i + 1])) {
-			pathgraph_push_point(out, pathgraph_cell_centre(pg, l->v[i + 1]));
+	/* cut the staircase corners, in place: c[i - 1] always holds the last cell kept */
+	int32_t *c = l->v;
+	int m = l->count, j = 1;
+	for (int i = 1; i < m;) {
+		if (i + 1 < m && pathgraph_corner_cut(pg, c[i - 1], c[i], c[i + 1])) {
+			c[j++] = c[i + 1];
 			i += 2;
 		} else {
-			pathgraph_push_point(out, pathgraph_cell_centre(pg, l->v[i]));
+			c[j++] = c[i];
 			i += 1;
 		}
 	}
+	m = j;
+	/* merge runs of equal steps: a step is told by its index difference (+-1, +-w,
+	 * +-w +-1), which is unambiguous for w >= 3 */
+	if (pg->w >= 3) {
+		j = m > 0 ? 1 : 0;
+		for (int i = 1; i < m; i++) {
+			if (j >= 2 && c[j - 1] - c[j - 2] == c[i] - c[j - 1])
+				c[j - 1] = c[i];
+			else
+				c[j++] = c[i];
+		}
+		m = j;
+	}
+	path_clear(out);
+	pathgraph_push_point(out, from);
+	for (int i = 0; i < m; i++)
+		pathgraph_push_point(out, pathgraph_cell_centre(pg, c[i]));
 	pathgraph_push_point(out, to);
 }
 
