@@ -6,7 +6,9 @@
  *    computing distance transforms in linear time" (Mathematical Morphology and its
  *    Applications to Image and Signal Processing, 2000). Phase 1 scans every column
  *    for the distance g to the nearest blocked cell in that column; phase 2 takes,
- *    in every row, the lower envelope of the parabolas (x - u)^2 + g(u)^2. The cells
+ *    in every row, the lower envelope of the parabolas (x - u)^2 + g(u)^2 (found as in
+ *    Felzenszwalb and Huttenlocher, "Distance transforms of sampled functions", Theory
+ *    of Computing 8, 2012, with exact integer comparisons in place of divisions). The cells
  *    just outside the grid are blocked: phase 1 starts each column at distance 1 from
  *    the rows -1 and h, and phase 2 runs over columns -1 .. w with g = 0 at both ends.
  * 2. Thinning: distance-ordered homotopic thinning (Pudney, "Distance-ordered homotopic
@@ -56,9 +58,6 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
-/* floor division for a positive divisor (C's '/' truncates toward zero). */
-static int32_t skeleton_floor_div(int32_t a, int32_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-
 void skeleton_edt(const Grid *g, int32_t *dist2)
 {
 	const int32_t w = g->w, h = g->h;
@@ -86,51 +85,61 @@ void skeleton_edt(const Grid *g, int32_t *dist2)
 			if (next[x] + 1 < row[x])
 				row[x] = next[x] + 1;
 	}
-	/* Phase 2 over the columns u = 0 .. w + 1 standing for x = -1 .. w; gg[u] is g^2. */
+	/* Phase 2, one row at a time. A blocked cell at column b (or the outside at -1 and
+	 * w) is the nearest obstacle column for every cell across it from the cells
+	 * beyond, so the row falls into independent runs of free cells, each solved with
+	 * the blocked columns at its two ends. Within a run, with F(u) = u^2 + g(u)^2, the
+	 * parabola of column u at x is F(u) - 2 u x + x^2, and two parabolas a < b cross at
+	 * (F(b) - F(a)) / (2 (b - a)). The lower envelope's columns are kept in the stack
+	 * v[0 .. top]; a column is dropped when the new one crosses its left neighbour no
+	 * later than it does, compared by cross multiplication in 64 bits instead of
+	 * Meijster's integer division: exact, and no division on the critical path. */
 	const int32_t n = w + 2;
-	int32_t *gg = util_alloc((size_t)n, sizeof *gg);
-	int32_t *s = util_alloc((size_t)n, sizeof *s);
-	int32_t *t = util_alloc((size_t)n, sizeof *t);
+	int64_t *F = util_alloc((size_t)n, sizeof *F);
+	int32_t *v = util_alloc((size_t)n, sizeof *v);
 	for (int32_t y = 0; y < h; y++) {
 		int32_t *row = dist2 + (size_t)y * w;
-		gg[0] = gg[n - 1] = 0;
-		for (int32_t x = 0; x < w; x++)
-			gg[x + 1] = row[x] * row[x];
-		int32_t q = 0;
-		s[0] = 0;
-		t[0] = 0;
-		for (int32_t u = 1; u < n; u++) {
-			/* pop the parabolas that u's parabola lies under at their own start */
-			while (q >= 0) {
-				int32_t a = t[q] - s[q], b = t[q] - u;
-				if (a * a + gg[s[q]] <= b * b + gg[u])
-					break;
-				q--;
+		int32_t x0 = 0;
+		while (x0 < w) {
+			if (row[x0] == 0) {
+				x0++;
+				continue;
 			}
-			if (q < 0) {
-				q = 0;
-				s[0] = u;
-			} else {
-				int32_t i = s[q];
-				int32_t sep = skeleton_floor_div(u * u - i * i + gg[u] - gg[i], 2 * (u - i));
-				if (sep + 1 < n) {
-					q++;
-					s[q] = u;
-					t[q] = sep + 1;
+			int32_t x1 = x0;
+			while (x1 + 1 < w && row[x1 + 1] != 0)
+				x1++;
+			/* columns lo = x0 - 1 .. hi = x1 + 1, blocked at both ends */
+			int32_t lo = x0 - 1, hi = x1 + 1;
+			int32_t top = 0;
+			v[0] = lo;
+			F[0] = (int64_t)lo * lo;
+			for (int32_t u = x0; u <= hi; u++) {
+				int64_t Fu = (int64_t)u * u + (u <= x1 ? (int64_t)row[u] * row[u] : 0);
+				F[u - lo] = Fu;
+				while (top > 0) {
+					int32_t a = v[top - 1], b = v[top];
+					int64_t Fa = F[a - lo], Fb = F[b - lo];
+					/* cross(b, u) <= cross(a, b): b is nowhere lowest */
+					if ((Fu - Fb) * (b - a) > (Fb - Fa) * (u - b))
+						break;
+					top--;
 				}
+				v[++top] = u;
 			}
-		}
-		for (int32_t u = n - 1; u >= 0; u--) {
-			int32_t d = u - s[q];
-			if (u >= 1 && u <= w)
-				row[u - 1] = d * d + gg[s[q]];
-			if (u == t[q])
-				q--;
+			int32_t k = 0;
+			for (int32_t x = x0; x <= x1; x++) {
+				/* the lowest parabola at x moves right as x does */
+				while (k < top && F[v[k + 1] - lo] - F[v[k] - lo] <=
+							  2 * (int64_t)x * (v[k + 1] - v[k]))
+					k++;
+				int32_t d = x - v[k];
+				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
+			}
+			x0 = x1 + 1;
 		}
 	}
-	free(gg);
-	free(s);
-	free(t);
+	free(F);
+	free(v);
 }
 
 /* ---------------------------------------------------------------- simple points */
@@ -355,32 +364,65 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 
 /* ---------------------------------------------------------------- the skeleton */
 
+/* The working space of skeleton_compute, kept between calls so that computing the
+ * skeleton of a grid of the same size again touches no new memory. */
+struct SkeletonWork {
+	size_t cells;		/* the grid size it was made for, w * h */
+	uint8_t *state;		/* (w + 2) * (h + 2) */
+	int32_t *stack;		/* w * h */
+	int32_t *order;		/* w * h */
+	int32_t *start;		/* start_cap */
+	size_t start_cap;
+};
+
 void skeleton_init(Skeleton *s) { *s = (Skeleton){0}; }
+
+static void skeleton_free_work(struct SkeletonWork *wk)
+{
+	if (!wk)
+		return;
+	free(wk->state);
+	free(wk->stack);
+	free(wk->order);
+	free(wk->start);
+	free(wk);
+}
 
 void skeleton_free(Skeleton *s)
 {
 	free(s->dist2);
 	free(s->on);
+	skeleton_free_work(s->work);
 	*s = (Skeleton){0};
 }
 
 void skeleton_compute(Skeleton *s, const Grid *g)
 {
-	skeleton_free(s);
 	const int32_t w = g->w, h = g->h;
 	const size_t n = (size_t)w * (size_t)h;
+	const size_t pn = (size_t)(w + 2) * (size_t)(h + 2);
+	if (!s->dist2 || s->w != w || s->h != h) {
+		skeleton_free(s);
+		s->dist2 = util_alloc(n, sizeof *s->dist2);
+		s->on = util_alloc(n, 1);
+		s->work = util_alloc(1, sizeof *s->work);
+		s->work->cells = n;
+		s->work->state = util_alloc(pn, 1);
+		s->work->stack = util_alloc(n, sizeof *s->work->stack);
+		s->work->order = util_alloc(n, sizeof *s->work->order);
+	}
 	s->w = w;
 	s->h = h;
-	s->dist2 = util_alloc(n, sizeof *s->dist2);
-	s->on = util_alloc(n, 1);
+	s->count = s->pruned = 0;
 	if (n == 0)
 		return;
+	struct SkeletonWork *wk = s->work;
 	skeleton_edt(g, s->dist2);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
-	const size_t pn = (size_t)(w + 2) * (size_t)(h + 2);
-	t.state = util_alloc(pn, 1);
-	t.stack = util_alloc(n, sizeof *t.stack);
+	t.state = wk->state;
+	memset(t.state, 0, pn);
+	t.stack = wk->stack;
 	for (int i = 0; i < 8; i++)
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
 	skeleton_build_simple_table(t.simple);
@@ -393,8 +435,13 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			maxd = s->dist2[i];
 		nfree += g->cells[i] == GRID_FREE;
 	}
-	int32_t *start = util_alloc((size_t)maxd + 2, sizeof *start);
-	int32_t *order = util_alloc((size_t)nfree + 1, sizeof *order);
+	if (wk->start_cap < (size_t)maxd + 2) {
+		free(wk->start);
+		wk->start_cap = (size_t)maxd + 2;
+		wk->start = util_alloc(wk->start_cap, sizeof *wk->start);
+	}
+	int32_t *start = wk->start, *order = wk->order;
+	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 	for (size_t i = 0; i < n; i++)
 		if (g->cells[i] == GRID_FREE)
 			start[s->dist2[i] + 1]++;
@@ -411,7 +458,6 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			order[start[d2[x]]++] = (y + 1) * t.pw + x + 1;
 		}
 	}
-	free(start);
 
 	for (int32_t k = 0; k < nfree; k++) {
 		int32_t pi = order[k];
@@ -420,7 +466,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			thinner_delete_from(&t, pi);
 	}
 
-	/* the set, in index order, for pruning */
+	/* the cells left, for pruning */
 	int32_t nset = 0;
 	for (int32_t k = 0; k < nfree; k++)
 		if (t.state[order[k]] & SKELETON_IN)
@@ -435,18 +481,16 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		}
 	}
 
-	s->count = 0;
+	int32_t count = 0; /* a local, so that the loop need not store it every cell */
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *st = t.state + (size_t)(y + 1) * t.pw + 1;
 		uint8_t *on = s->on + (size_t)y * w;
 		for (int32_t x = 0; x < w; x++) {
 			on[x] = st[x] & SKELETON_IN;
-			s->count += on[x];
+			count += on[x];
 		}
 	}
-	free(order);
-	free(t.state);
-	free(t.stack);
+	s->count = count;
 }
 
 int skeleton_degree(const Skeleton *s, int32_t x, int32_t y)

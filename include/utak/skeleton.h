@@ -54,6 +54,7 @@ typedef struct Skeleton {
 	uint8_t *on;	/* w * h, row-major: 1 for a skeleton cell, else 0 */
 	int32_t count;	/* number of skeleton cells */
 	int32_t pruned; /* number of cells removed as spurs (for the bench and tests) */
+	struct SkeletonWork *work; /* working space, kept for the next grid of this size */
 } Skeleton;
 
 /* skeleton_edt(g, dist2): the exact Euclidean distance transform of g into the
@@ -63,7 +64,8 @@ void skeleton_edt(const Grid *g, int32_t *dist2);
 void skeleton_init(Skeleton *s);
 void skeleton_free(Skeleton *s);
 /* skeleton_compute(s, g): the distance transform and the pruned skeleton of g's free
- * cells, into s (any earlier contents are freed). Linear time in the cells. */
+ * cells, into s. Linear time in the cells. The memory of an earlier skeleton of a grid
+ * of the same size is reused, any other is freed. */
 void skeleton_compute(Skeleton *s, const Grid *g);
 
 /* skeleton_on(s, x, y): (x, y) is inside the grid and a skeleton cell. */

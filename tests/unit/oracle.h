@@ -16,16 +16,16 @@
 
 /* oracle_rand: a 64-bit LCG (Knuth's MMIX constants), deterministic on every platform. */
 static uint64_t oracle_seed = 12345;
-static uint32_t oracle_rand(void)
+static inline uint32_t oracle_rand(void)
 {
 	oracle_seed = oracle_seed * 6364136223846793005ULL + 1442695040888963407ULL;
 	return (uint32_t)(oracle_seed >> 33);
 }
-static int oracle_rand_below(int n) { return (int)(oracle_rand() % (uint32_t)n); }
+static inline int oracle_rand_below(int n) { return (int)(oracle_rand() % (uint32_t)n); }
 
 /* oracle_random_grid(g, w, h, percent): each cell blocked with the given probability;
  * with rects > 0, that many random rectangles are blocked on top. */
-static void oracle_random_grid(Grid *g, int w, int h, int percent, int rects)
+static inline void oracle_random_grid(Grid *g, int w, int h, int percent, int rects)
 {
 	grid_init(g, w, h, GRID_FREE);
 	for (int i = 0; i < w * h; i++)
@@ -42,7 +42,7 @@ static void oracle_random_grid(Grid *g, int w, int h, int percent, int rects)
 
 /* oracle_grid_from(g, rows, h): a grid from strings, row 0 of the strings on top
  * (north), so rows[h - 1 - y] is grid row y; '#' blocked, anything else free. */
-static void oracle_grid_from(Grid *g, const char *const *rows, int h)
+static inline void oracle_grid_from(Grid *g, const char *const *rows, int h)
 {
 	int w = (int)strlen(rows[0]);
 	grid_init(g, w, h, GRID_FREE);
@@ -54,7 +54,7 @@ static void oracle_grid_from(Grid *g, const char *const *rows, int h)
 /* oracle_label(in, w, h, conn, label): labels the cells with in[i] != 0 of a w x h
  * array by flood fill, conn 4 or 8; label[i] = component number from 0, or -1.
  * Returns the number of components. */
-static int oracle_label(const uint8_t *in, int w, int h, int conn, int *label)
+static inline int oracle_label(const uint8_t *in, int w, int h, int conn, int *label)
 {
 	int *stack = malloc(sizeof(int) * (size_t)(w * h + 1));
 	int count = 0;
@@ -91,7 +91,7 @@ static int oracle_label(const uint8_t *in, int w, int h, int conn, int *label)
 /* oracle_holes(set, w, h): the number of holes of a 4-connected set of cells: the
  * 8-components of its complement, with the outside of the grid joined to the
  * complement, minus the one that holds the outside. */
-static int oracle_holes(const uint8_t *set, int w, int h)
+static inline int oracle_holes(const uint8_t *set, int w, int h)
 {
 	int pw = w + 2, ph = h + 2;
 	uint8_t *comp = calloc((size_t)(pw * ph), 1);

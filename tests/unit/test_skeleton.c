@@ -2,6 +2,7 @@
  * against brute-force oracles: an O(n^2) distance transform, and flood-fill counts of
  * components and holes under the (4, 8) topology of skeleton.h. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "oracle.h"
 #include "test.h"
@@ -304,6 +305,38 @@ TEST_CASE(skeleton_all_blocked_and_empty)
 	grid_free(&g);
 }
 
+/* dump_to_string(s, g): skeleton_dump into a string (caller frees). */
+static char *dump_to_string(const Skeleton *s, const Grid *g)
+{
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&buf, &len);
+	skeleton_dump(s, g, f);
+	fclose(f);
+	return buf;
+}
+
+TEST_CASE(skeleton_dump_of_a_corridor_by_hand)
+{
+	Grid g;
+	grid_init(&g, 12, 3, GRID_FREE);
+	g.cells[2 * 12 + 5] = GRID_BLOCKED; /* a blocked cell in the top row */
+	Skeleton s;
+	skeleton_init(&s);
+	skeleton_compute(&s, &g);
+	char *text = dump_to_string(&s, &g);
+	const char *want = ".....#......\n"
+			   ".*oooooooo*.\n"
+			   "............\n"
+			   "skeleton: 10 cells, 0 junction cells, 2 end points, 0 pruned\n";
+	if (strcmp(text, want) != 0)
+		fprintf(stderr, "%s", text);
+	TEST_CHECK(strcmp(text, want) == 0);
+	free(text);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
 int main(void)
 {
 	TEST_RUN(edt_equals_brute_force_on_random_grids);
@@ -314,5 +347,6 @@ int main(void)
 	TEST_RUN(skeleton_of_diagonal_pinch_is_two_components);
 	TEST_RUN(skeleton_of_corridor_is_its_middle);
 	TEST_RUN(skeleton_all_blocked_and_empty);
+	TEST_RUN(skeleton_dump_of_a_corridor_by_hand);
 	return TEST_EXIT();
 }

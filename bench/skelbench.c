@@ -1,0 +1,187 @@
+/* skelbench.c - times the distance transform, the skeleton, the pathgraph and a query
+ * (paper 4.2, 4.3) on synthetic grids, to show the figures of issue 4 and linear growth.
+ *
+ *   make build/rel/bench/skelbench && build/rel/bench/skelbench [REPEATS]
+ *
+ * Grids, all from a fixed seed: "rooms" (a lattice of rooms 64 cells wide whose walls
+ * have doors), "rects" (random rectangles covering about a quarter of the grid), "maze"
+ * (a perfect maze by randomised depth-first search, corridors 3 cells wide), each at
+ * 1024, 2048 and 4096 cells a side. Each figure is the best of REPEATS runs (default
+ * 3): the least disturbed by the rest of the machine. The query runs from near one
+ * corner to near the opposite one and reports the pathgraph vertices it expanded. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "utak/grid.h"
+#include "utak/path.h"
+#include "utak/pathgraph.h"
+#include "utak/skeleton.h"
+
+static uint64_t bench_seed = 2026;
+static uint32_t bench_rand(void)
+{
+	bench_seed = bench_seed * 6364136223846793005ULL + 1442695040888963407ULL;
+	return (uint32_t)(bench_seed >> 33);
+}
+
+static double bench_now_ms(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+static void bench_fill(Grid *g, int32_t x0, int32_t y0, int32_t x1, int32_t y1, uint8_t v)
+{
+	for (int32_t y = y0 < 0 ? 0 : y0; y < y1 && y < g->h; y++)
+		for (int32_t x = x0 < 0 ? 0 : x0; x < x1 && x < g->w; x++)
+			g->cells[(size_t)y * g->w + x] = v;
+}
+
+/* rooms 64 wide, walls 2 thick, one door 6 wide in every wall segment */
+static void bench_rooms(Grid *g, int32_t side)
+{
+	const int32_t room = 64, wall = 2, door = 6;
+	grid_init(g, side, side, GRID_FREE);
+	for (int32_t k = room; k < side; k += room) {
+		bench_fill(g, k, 0, k + wall, side, GRID_BLOCKED);
+		bench_fill(g, 0, k, side, k + wall, GRID_BLOCKED);
+	}
+	for (int32_t a = 0; a < side; a += room)
+		for (int32_t k = room; k < side; k += room) {
+			int32_t d = a + wall + 4 + (int32_t)(bench_rand() % (uint32_t)(room - wall - door - 8));
+			bench_fill(g, k, d, k + wall, d + door, GRID_FREE);
+			d = a + wall + 4 + (int32_t)(bench_rand() % (uint32_t)(room - wall - door - 8));
+			bench_fill(g, d, k, d + door, k + wall, GRID_FREE);
+		}
+}
+
+/* random rectangles 4..40 cells a side until about a quarter is blocked */
+static void bench_rects(Grid *g, int32_t side)
+{
+	grid_init(g, side, side, GRID_FREE);
+	int64_t want = (int64_t)side * side / 4, blocked = 0;
+	while (blocked < want) {
+		int32_t w = 4 + (int32_t)(bench_rand() % 37), h = 4 + (int32_t)(bench_rand() % 37);
+		int32_t x = (int32_t)(bench_rand() % (uint32_t)side), y = (int32_t)(bench_rand() % (uint32_t)side);
+		bench_fill(g, x, y, x + w, y + h, GRID_BLOCKED);
+		blocked += (int64_t)w * h;
+	}
+}
+
+/* a perfect maze on a lattice of 4-cell pitch: corridors 3 wide, walls 1 thick */
+static void bench_maze(Grid *g, int32_t side)
+{
+	const int32_t pitch = 4;
+	int32_t n = side / pitch;
+	grid_init(g, side, side, GRID_BLOCKED);
+	uint8_t *seen = calloc((size_t)n * n, 1);
+	int32_t *stack = malloc(sizeof(int32_t) * (size_t)n * n);
+	int32_t top = 0;
+	stack[top++] = 0;
+	seen[0] = 1;
+	bench_fill(g, 1, 1, pitch, pitch, GRID_FREE);
+	while (top > 0) {
+		int32_t c = stack[top - 1], cx = c % n, cy = c / n;
+		int32_t options[4], count = 0;
+		static const int32_t dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+		for (int k = 0; k < 4; k++) {
+			int32_t nx = cx + dx[k], ny = cy + dy[k];
+			if (nx >= 0 && ny >= 0 && nx < n && ny < n && !seen[ny * n + nx])
+				options[count++] = k;
+		}
+		if (count == 0) {
+			top--;
+			continue;
+		}
+		int k = options[bench_rand() % (uint32_t)count];
+		int32_t nx = cx + dx[k], ny = cy + dy[k];
+		seen[ny * n + nx] = 1;
+		stack[top++] = ny * n + nx;
+		int32_t x0 = (cx < nx ? cx : nx) * pitch + 1, y0 = (cy < ny ? cy : ny) * pitch + 1;
+		bench_fill(g, x0, y0, x0 + (dx[k] ? 2 * pitch - 1 : pitch - 1),
+			   y0 + (dy[k] ? 2 * pitch - 1 : pitch - 1), GRID_FREE);
+	}
+	free(seen);
+	free(stack);
+}
+
+/* bench_free_near(g, x, y): the free cell nearest (x, y) along a diagonal walk */
+static Vec2 bench_free_near(const Grid *g, int32_t x, int32_t y, int32_t step)
+{
+	while (!grid_free_at(g, x, y)) {
+		x += step;
+		y += step;
+	}
+	return vec2(x + 0.5, y + 0.5);
+}
+
+typedef void BenchMaker(Grid *g, int32_t side);
+
+static void bench_one(const char *name, BenchMaker *make, int32_t side, int repeats)
+{
+	Grid g;
+	make(&g, side);
+	double cells = (double)side * side;
+	double t_edt = 1e30, t_skel = 1e30, t_graph = 1e30, t_query = 1e30;
+	int32_t *d2 = malloc(sizeof(int32_t) * (size_t)cells);
+	Skeleton s;
+	Pathgraph pg;
+	Path path;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	path_init(&path);
+	Vec2 from = bench_free_near(&g, 2, 2, 1), to = bench_free_near(&g, side - 3, side - 3, -1);
+	int64_t expanded = 0;
+	for (int r = 0; r < repeats; r++) {
+		double t0 = bench_now_ms();
+		skeleton_edt(&g, d2);
+		double t1 = bench_now_ms();
+		skeleton_compute(&s, &g);
+		double t2 = bench_now_ms();
+		pathgraph_build(&pg, &s, &g);
+		double t3 = bench_now_ms();
+		PathgraphQuery q = pathgraph_query_default();
+		pathgraph_find_path(&pg, from, to, &q, &path);
+		double t4 = bench_now_ms();
+		expanded = path.expanded;
+		t_edt = fmin(t_edt, t1 - t0);
+		t_skel = fmin(t_skel, t2 - t1);
+		t_graph = fmin(t_graph, t3 - t2);
+		t_query = fmin(t_query, t4 - t3);
+	}
+	printf("%-6s %5d %9.0f | %7.2f %5.2f | %7.2f %5.2f | %6.2f %5.2f | %6.3f %6lld %7.1f | %7d "
+	       "%6d %6d\n",
+	       name, (int)side, cells, t_edt, t_edt * 1e6 / cells, t_skel, t_skel * 1e6 / cells,
+	       t_graph, t_graph * 1e6 / cells, t_query, (long long)expanded, path_length(&path),
+	       (int)s.count, (int)pg.vertex_count, (int)pg.edge_count);
+	path_free(&path);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	free(d2);
+	grid_free(&g);
+}
+
+int main(int argc, char **argv)
+{
+	int repeats = argc > 1 ? atoi(argv[1]) : 3;
+	if (repeats < 1)
+		repeats = 1;
+	printf("# best of %d; skeleton includes its own distance transform\n", repeats);
+	printf("%-6s %5s %9s | %7s %5s | %7s %5s | %6s %5s | %6s %6s %7s | %7s %6s %6s\n", "grid",
+	       "side", "cells", "edt ms", "ns/c", "skel ms", "ns/c", "pg ms", "ns/c", "q ms",
+	       "expand", "length", "skcells", "verts", "edges");
+	static const int32_t sides[] = {1024, 2048, 4096};
+	for (int k = 0; k < 3; k++) {
+		bench_seed = 2026;
+		bench_one("rooms", bench_rooms, sides[k], repeats);
+		bench_seed = 2026;
+		bench_one("rects", bench_rects, sides[k], repeats);
+		bench_seed = 2026;
+		bench_one("maze", bench_maze, sides[k], repeats);
+	}
+	return 0;
+}

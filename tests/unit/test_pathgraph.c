@@ -1,0 +1,405 @@
+/* test_pathgraph.c - the pathgraph and its search (pathgraph.h, paper 4.3): edges along
+ * skeleton cells, the line test against hand cases and dense sampling, paths in free
+ * space exactly when a flood fill joins the ends, k distinct paths round a ring. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "oracle.h"
+#include "test.h"
+#include "utak/pathgraph.h"
+
+/* Sampling step for the brute line check, in cells. */
+#define SAMPLE_STEP 1e-3
+
+/* brute_segment_free: every sample point of ab lies in a free cell. */
+static bool brute_segment_free(const Grid *g, Vec2 a, Vec2 b)
+{
+	double len = hypot(b.x - a.x, b.y - a.y);
+	int n = (int)(len / SAMPLE_STEP) + 2;
+	for (int i = 0; i <= n; i++) {
+		double t = (double)i / n;
+		double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+		if (!grid_free_at(g, (int)floor(x), (int)floor(y)))
+			return false;
+	}
+	return true;
+}
+
+static bool path_in_free_space(const Grid *g, const Path *p)
+{
+	for (int i = 1; i < p->count; i++) {
+		if (!pathgraph_segment_free(g, p->pts[i - 1], p->pts[i]))
+			return false;
+		if (!brute_segment_free(g, p->pts[i - 1], p->pts[i]))
+			return false;
+	}
+	return true;
+}
+
+TEST_CASE(line_test_by_hand)
+{
+	static const char *const rows[] = {
+	    ".....",
+	    "..#..",
+	    ".#...",
+	    ".....",
+	};
+	Grid g;
+	oracle_grid_from(&g, rows, 4);
+	/* blocked: (2, 2) and (1, 1); they touch at the corner (2, 2) */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(1.5, 2.5), vec2(2.5, 1.5)));  /* the pinch */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 3.5), vec2(3.5, 0.5)));  /* through it */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(4.5, 0.5)));   /* row 0 */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 1.5), vec2(4.5, 1.5)));  /* crosses (1,1) */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(2.5, 0.5), vec2(4.5, 2.5)));   /* corner (3,1) */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(1.5, 0.5)));
+	/* touching one blocked cell at its corner is allowed: corner (3,3) of (2,2) */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(2.5, 3.5), vec2(3.5, 2.5)));
+	/* along the edge y = 2 between (1,1) blocked and (1,2) free: allowed... */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(1.0, 2.0), vec2(1.8, 2.0)));
+	/* ...but not into the pinch corner (2,2) at its end */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(1.0, 2.0), vec2(2.0, 2.0)));
+	/* leaving the grid */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(-0.5, 0.5)));
+	grid_free(&g);
+	/* along the edge between two blocked cells */
+	static const char *const wall[] = {
+	    "...",
+	    "###",
+	    "###",
+	    "...",
+	};
+	oracle_grid_from(&g, wall, 4);
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.2, 2.0), vec2(2.8, 2.0)));
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.2, 3.0), vec2(2.8, 3.0)));
+	grid_free(&g);
+}
+
+TEST_CASE(line_test_agrees_with_dense_sampling)
+{
+	oracle_seed = 3;
+	int disagree = 0, total = 0, free_count = 0;
+	for (int trial = 0; trial < 40; trial++) {
+		Grid g;
+		oracle_random_grid(&g, 24, 20, 15, 2);
+		for (int k = 0; k < 200; k++) {
+			Vec2 a = vec2(oracle_rand_below(24000) / 1000.0, oracle_rand_below(20000) / 1000.0);
+			Vec2 b = vec2(oracle_rand_below(24000) / 1000.0, oracle_rand_below(20000) / 1000.0);
+			bool fast = pathgraph_segment_free(&g, a, b), brute = brute_segment_free(&g, a, b);
+			/* the sampling can miss a sliver of a blocked cell, never the reverse */
+			TEST_CHECK(!(fast && !brute));
+			disagree += fast != brute;
+			free_count += fast;
+			total++;
+		}
+		grid_free(&g);
+	}
+	TEST_CHECK(free_count > total / 20);
+	TEST_CHECK(disagree * 100 < total);
+}
+
+/* Independent of pathgraph_validate: the edges' cells, by the definitions. */
+static bool edges_follow_skeleton(const Pathgraph *pg, const Skeleton *s)
+{
+	uint8_t *covered = calloc((size_t)(s->w * s->h), 1);
+	for (int v = 0; v < pg->vertex_count; v++) {
+		const PathgraphVertex *p = &pg->vertices[v];
+		if (!skeleton_on(s, p->x, p->y))
+			return false;
+		covered[p->y * s->w + p->x] = 1;
+	}
+	for (int e = 0; e < pg->edge_count; e++) {
+		const PathgraphEdge *ed = &pg->edges[e];
+		const int32_t *c = pg->cells + ed->first;
+		const PathgraphVertex *a = &pg->vertices[ed->v0], *b = &pg->vertices[ed->v1];
+		if (c[0] != a->y * s->w + a->x || c[ed->count - 1] != b->y * s->w + b->x)
+			return false;
+		for (int k = 0; k < ed->count; k++) {
+			int x = c[k] % s->w, y = c[k] / s->w;
+			if (!skeleton_on(s, x, y))
+				return false;
+			covered[c[k]] = 1;
+			if (k > 0) {
+				int px = c[k - 1] % s->w, py = c[k - 1] / s->w;
+				if (abs(px - x) + abs(py - y) != 1)
+					return false;
+			}
+		}
+	}
+	bool ok = true;
+	for (int i = 0; i < s->w * s->h; i++)
+		ok = ok && (covered[i] == (s->on[i] != 0));
+	free(covered);
+	return ok;
+}
+
+TEST_CASE(pathgraph_edges_on_random_grids)
+{
+	oracle_seed = 11;
+	for (int trial = 0; trial < 150; trial++) {
+		Grid g;
+		oracle_random_grid(&g, 2 + oracle_rand_below(40), 2 + oracle_rand_below(40),
+				   oracle_rand_below(35), oracle_rand_below(6));
+		Skeleton s;
+		Pathgraph pg;
+		skeleton_init(&s);
+		pathgraph_init(&pg);
+		skeleton_compute(&s, &g);
+		pathgraph_build(&pg, &s, &g);
+		TEST_CHECK(pathgraph_validate(&pg));
+		TEST_CHECK(edges_follow_skeleton(&pg, &s));
+		pathgraph_free(&pg);
+		skeleton_free(&s);
+		grid_free(&g);
+	}
+}
+
+static Vec2 random_free_point(const Grid *g)
+{
+	for (;;) {
+		int x = oracle_rand_below(g->w), y = oracle_rand_below(g->h);
+		if (grid_free_at(g, x, y))
+			return vec2(x + oracle_rand_below(1000) / 1000.0, y + oracle_rand_below(1000) / 1000.0);
+	}
+}
+
+TEST_CASE(paths_exist_iff_connected_and_lie_in_free_space)
+{
+	oracle_seed = 21;
+	int found = 0, none = 0;
+	for (int trial = 0; trial < 120; trial++) {
+		Grid g;
+		oracle_random_grid(&g, 4 + oracle_rand_below(40), 4 + oracle_rand_below(40),
+				   oracle_rand_below(40), oracle_rand_below(6));
+		int free_cells = 0;
+		for (int i = 0; i < g.w * g.h; i++)
+			free_cells += g.cells[i] == GRID_FREE;
+		if (free_cells == 0) {
+			grid_free(&g);
+			continue;
+		}
+		int *lab = malloc(sizeof(int) * (size_t)(g.w * g.h));
+		oracle_label(g.cells, g.w, g.h, 4, lab);
+		Skeleton s;
+		Pathgraph pg;
+		Path p;
+		skeleton_init(&s);
+		pathgraph_init(&pg);
+		path_init(&p);
+		skeleton_compute(&s, &g);
+		pathgraph_build(&pg, &s, &g);
+		for (int q = 0; q < 20; q++) {
+			Vec2 a = random_free_point(&g), b = random_free_point(&g);
+			bool joined = lab[(int)a.y * g.w + (int)a.x] == lab[(int)b.y * g.w + (int)b.x];
+			PathgraphQuery opt = pathgraph_query_default();
+			bool ok = pathgraph_find_path(&pg, a, b, &opt, &p);
+			TEST_CHECK(ok == joined);
+			if (!ok) {
+				TEST_CHECK(p.count == 0);
+				none++;
+				continue;
+			}
+			found++;
+			TEST_CHECK(p.pts[0].x == a.x && p.pts[0].y == a.y);
+			TEST_CHECK(p.pts[p.count - 1].x == b.x && p.pts[p.count - 1].y == b.y);
+			bool inside = path_in_free_space(&g, &p);
+			if (!inside) {
+				skeleton_dump(&s, &g, stderr);
+				for (int i = 0; i < p.count; i++)
+					fprintf(stderr, "  (%.3f, %.3f)\n", p.pts[i].x, p.pts[i].y);
+			}
+			TEST_CHECK(inside);
+		}
+		path_free(&p);
+		pathgraph_free(&pg);
+		skeleton_free(&s);
+		free(lab);
+		grid_free(&g);
+	}
+	TEST_CHECK(found > 100 && none > 10);
+}
+
+static const char *const RING[] = {
+    "....................",
+    "....................",
+    "....................",
+    "....................",
+    "........####........",
+    "........####........",
+    "........####........",
+    "....................",
+    "....................",
+    "....................",
+    "....................",
+};
+
+TEST_CASE(two_distinct_paths_round_a_ring)
+{
+	Grid g;
+	oracle_grid_from(&g, RING, 11);
+	Skeleton s;
+	Pathgraph pg;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	Path p[4];
+	for (int i = 0; i < 4; i++)
+		path_init(&p[i]);
+	PathgraphQuery opt = pathgraph_query_default();
+	int n = pathgraph_find_paths(&pg, vec2(1.5, 5.5), vec2(18.5, 5.5), &opt, 4, p);
+	TEST_CHECK(n == 2);
+	TEST_CHECK(path_length(&p[0]) <= path_length(&p[1]));
+	/* one passes above the obstacle, one below */
+	bool above = false, below = false;
+	for (int k = 0; k < 2; k++)
+		for (int i = 1; i < p[k].count; i++)
+			for (int j = 0; j <= 100; j++) {
+				Vec2 a = p[k].pts[i - 1], b = p[k].pts[i];
+				double x = a.x + (b.x - a.x) * j / 100, y = a.y + (b.y - a.y) * j / 100;
+				if (x > 8 && x < 12) {
+					above = above || y > 7;
+					below = below || y < 4;
+				}
+			}
+	TEST_CHECK(above && below);
+	for (int k = 0; k < 2; k++)
+		TEST_CHECK(path_in_free_space(&g, &p[k]));
+	for (int i = 0; i < 4; i++)
+		path_free(&p[i]);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+TEST_CASE(minimum_clearance_avoids_the_narrow_way)
+{
+	/* a wide way over the top and a gap one cell wide through the middle wall */
+	static const char *const rows[] = {
+	    "......................",
+	    "......................",
+	    "......................",
+	    "......................",
+	    "#########.############",
+	    "#########.############",
+	    "......................",
+	    "......................",
+	    "......................",
+	    "......................",
+	    "......................",
+	};
+	Grid g;
+	oracle_grid_from(&g, rows, 11);
+	/* close the top way except at the right end */
+	Skeleton s;
+	Pathgraph pg;
+	Path p;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	path_init(&p);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	PathgraphQuery opt = pathgraph_query_default();
+	TEST_CHECK(pathgraph_find_path(&pg, vec2(9.5, 8.5), vec2(9.5, 2.5), &opt, &p));
+	TEST_CHECK(path_in_free_space(&g, &p));
+	opt.min_clearance = 1.5; /* the gap's cells have clearance 1 */
+	TEST_CHECK(!pathgraph_find_path(&pg, vec2(9.5, 8.5), vec2(9.5, 2.5), &opt, &p));
+	TEST_CHECK(p.count == 0);
+	path_free(&p);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+
+	/* now with a second, wide way round the right end of the wall */
+	static const char *const rows2[] = {
+	    "......................",
+	    "......................",
+	    "......................",
+	    "......................",
+	    "#########.#######.....",
+	    "#########.#######.....",
+	    "......................",
+	    "......................",
+	    "......................",
+	    "......................",
+	    "......................",
+	};
+	oracle_grid_from(&g, rows2, 11);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	opt.min_clearance = 0;
+	TEST_CHECK(pathgraph_find_path(&pg, vec2(9.5, 8.5), vec2(9.5, 2.5), &opt, &p));
+	double narrow = path_length(&p);
+	opt.min_clearance = 1.5;
+	TEST_CHECK(pathgraph_find_path(&pg, vec2(9.5, 8.5), vec2(9.5, 2.5), &opt, &p));
+	TEST_CHECK(path_length(&p) > narrow + 4);
+	TEST_CHECK(path_in_free_space(&g, &p));
+	path_free(&p);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+TEST_CASE(entry_is_in_sight_in_a_room)
+{
+	Grid g;
+	oracle_grid_from(&g, RING, 11);
+	Skeleton s;
+	Pathgraph pg;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	int32_t x, y;
+	TEST_CHECK(pathgraph_entry(&pg, vec2(0.5, 0.5), &x, &y) == 1);
+	TEST_CHECK(skeleton_on(&s, x, y));
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(x + 0.5, y + 0.5)));
+	TEST_CHECK(pathgraph_entry(&pg, vec2(9.5, 5.5), &x, &y) == 0); /* in the obstacle */
+	TEST_CHECK(pathgraph_entry(&pg, vec2(-3, 5.5), &x, &y) == 0);	/* off the grid */
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+TEST_CASE(pathgraph_dump_of_a_corridor_by_hand)
+{
+	/* a corridor 3 wide: its skeleton is the middle row from x = 1 to 10, both ends
+	 * end points, clearance 2 (to the outside rows) all along */
+	Grid g;
+	grid_init(&g, 12, 3, GRID_FREE);
+	Skeleton s;
+	Pathgraph pg;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	char *text = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&text, &len);
+	pathgraph_dump(&pg, f);
+	fclose(f);
+	const char *want = "pathgraph: 2 vertices, 1 edges\n"
+			   "vertex 0 1 1 end 1 2.000\n"
+			   "vertex 1 10 1 end 1 2.000\n"
+			   "edge 0 0 1 9.000 2.000 10\n";
+	if (strcmp(text, want) != 0)
+		fprintf(stderr, "%s", text);
+	TEST_CHECK(strcmp(text, want) == 0);
+	free(text);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
+int main(void)
+{
+	TEST_RUN(line_test_by_hand);
+	TEST_RUN(line_test_agrees_with_dense_sampling);
+	TEST_RUN(pathgraph_edges_on_random_grids);
+	TEST_RUN(paths_exist_iff_connected_and_lie_in_free_space);
+	TEST_RUN(two_distinct_paths_round_a_ring);
+	TEST_RUN(minimum_clearance_avoids_the_narrow_way);
+	TEST_RUN(entry_is_in_sight_in_a_room);
+	TEST_RUN(pathgraph_dump_of_a_corridor_by_hand);
+	return TEST_EXIT();
+}
