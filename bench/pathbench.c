@@ -37,16 +37,16 @@
 
 /* One scenario's results; a negative length or time means "not computed". */
 typedef struct BenchResult {
-	double optimum;		/* published 8-connected optimum */
-	double astar;		/* grid A* length */
-	double anyangle;	/* visibility-graph (Euclidean) optimum */
-	double rope;		/* the A* path, rope-tightened */
-	double skeleton;	/* SKELETON: the skeleton planner's path */
-	double skeleton_rope;	/* SKELETON: the same, rope-tightened */
+	double optimum;       /* published 8-connected optimum */
+	double astar;         /* grid A* length */
+	double anyangle;      /* visibility-graph (Euclidean) optimum */
+	double rope;          /* the A* path, rope-tightened */
+	double skeleton;      /* SKELETON: the skeleton planner's path */
+	double skeleton_rope; /* SKELETON: the same, rope-tightened */
 	double astar_ms, anyangle_ms, rope_ms;
 	int64_t astar_expanded, anyangle_expanded;
-	int astar_ok;		/* the A* length matches the optimum */
-	int rope_ok;		/* the rope is free, keeps its ends, is not longer */
+	int astar_ok; /* the A* length matches the optimum */
+	int rope_ok;  /* the rope is free, keeps its ends, is not longer */
 } BenchResult;
 
 /* The per-map state every planner needs, built once per map. */
@@ -56,8 +56,8 @@ typedef struct BenchMap {
 	MovingAiScen scen;
 	int64_t free_cells;
 	GridPathSearch astar;
-	int32_t corners;		/* convex corners: the visibility graph's vertices */
-	bool has_visibility;		/* built (corners <= the limit) */
+	int32_t corners;     /* convex corners: the visibility graph's vertices */
+	bool has_visibility; /* built (corners <= the limit) */
 	VisibilityGraph visibility;
 	double visibility_build_ms;
 } BenchMap;
@@ -75,9 +75,10 @@ static double bench_now_ms(void)
 static void bench_die_usage(void)
 {
 	fprintf(stderr,
-		"usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] FILE.map FILE.scen\n"
-		"       " PATHBENCH_NAME " --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]\n"
-		"       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n");
+	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] FILE.map FILE.scen\n"
+	        "       " PATHBENCH_NAME
+	        " --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]\n"
+	        "       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n");
 	exit(2);
 }
 
@@ -100,7 +101,7 @@ static double bench_median(double *v, int n)
  * the planners' per-map state (the visibility graph only when with_visibility); on
  * a bad file prints one line and exits 2. */
 static void bench_load(BenchMap *bm, const char *map_path, const char *scen_path,
-		       bool with_visibility)
+                       bool with_visibility)
 {
 	char err[MOVINGAI_ERROR_SIZE];
 	*bm = (BenchMap){.map_path = map_path, .scen_path = scen_path};
@@ -119,7 +120,7 @@ static void bench_load(BenchMap *bm, const char *map_path, const char *scen_path
 	if (with_visibility && bm->corners <= bench_vis_limit) {
 		double t0 = bench_now_ms();
 		bm->has_visibility = visibility_init(&bm->visibility, &bm->grid, bench_vis_limit) ==
-				     VISIBILITY_FOUND;
+		                     VISIBILITY_FOUND;
 		bm->visibility_build_ms = bench_now_ms() - t0;
 	}
 }
@@ -151,14 +152,22 @@ static int bench_selected(int i, int count, int sample)
 static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
 {
 	const MovingAiProblem *pr = &bm->scen.problems[i];
-	BenchResult r = {.optimum = pr->optimum, .anyangle = -1, .rope = -1, .skeleton = -1,
-			 .skeleton_rope = -1, .anyangle_ms = -1, .rope_ms = -1,
-			 .anyangle_expanded = -1, .rope_ok = 1};
+	BenchResult r = {.optimum = pr->optimum,
+	                 .anyangle = -1,
+	                 .rope = -1,
+	                 .skeleton = -1,
+	                 .skeleton_rope = -1,
+	                 .anyangle_ms = -1,
+	                 .rope_ms = -1,
+	                 .anyangle_expanded = -1,
+	                 .rope_ok = 1};
 	double t0 = bench_now_ms();
-	GridPathStatus st = gridpath_find(&bm->astar, pr->sx, pr->sy, pr->gx, pr->gy, path, &r.astar);
+	GridPathStatus st =
+	    gridpath_find(&bm->astar, pr->sx, pr->sy, pr->gx, pr->gy, path, &r.astar);
 	r.astar_ms = bench_now_ms() - t0;
 	r.astar_expanded = path->expanded;
-	r.astar_ok = st == GRIDPATH_FOUND && fabs(r.astar - r.optimum) <= movingai_tolerance(r.optimum);
+	r.astar_ok =
+	    st == GRIDPATH_FOUND && fabs(r.astar - r.optimum) <= movingai_tolerance(r.optimum);
 	if (st == GRIDPATH_FOUND) {
 		t0 = bench_now_ms();
 		RopeStatus rs = rope_tighten(&bm->grid, path, tight);
@@ -166,7 +175,7 @@ static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
 		if (rs == ROPE_OK) {
 			r.rope = path_length(tight);
 			r.rope_ok = r.rope <= r.astar + PATHBENCH_LENGTH_EPS &&
-				    visibility_path_free(&bm->grid, tight);
+			            visibility_path_free(&bm->grid, tight);
 		} else
 			r.rope_ok = 0;
 	}
@@ -177,7 +186,8 @@ static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
 		r.anyangle_ms = bench_now_ms() - t0;
 		r.anyangle_expanded = tight->expanded;
 		/* The any-angle optimum can be no longer than any other path. */
-		if (vs == VISIBILITY_FOUND && r.rope >= 0 && r.anyangle > r.rope + PATHBENCH_LENGTH_EPS)
+		if (vs == VISIBILITY_FOUND && r.rope >= 0 &&
+		    r.anyangle > r.rope + PATHBENCH_LENGTH_EPS)
 			r.rope_ok = 0;
 	}
 	/* SKELETON: skeleton planner query and its rope-tightening go here. */
@@ -190,12 +200,12 @@ static int bench_report(const BenchMap *bm, int i, const BenchResult *r)
 	int line = (int)bm->scen.problems[i].line;
 	if (!r->astar_ok)
 		fprintf(stderr, PATHBENCH_NAME ": %s:%d: grid A* length %.6f, published %.6f\n",
-			bm->scen_path, line, r->astar, r->optimum);
+		        bm->scen_path, line, r->astar, r->optimum);
 	if (!r->rope_ok)
 		fprintf(stderr,
-			PATHBENCH_NAME ": %s:%d: rope-tightening failed its checks (A* %.6f, "
-				       "rope %.6f, any-angle %.6f)\n",
-			bm->scen_path, line, r->astar, r->rope, r->anyangle);
+		        PATHBENCH_NAME ": %s:%d: rope-tightening failed its checks (A* %.6f, "
+		                       "rope %.6f, any-angle %.6f)\n",
+		        bm->scen_path, line, r->astar, r->rope, r->anyangle);
 	return !r->astar_ok || !r->rope_ok;
 }
 
@@ -208,8 +218,8 @@ static void bench_print_length(double v)
 		printf(" %12.4f", v);
 }
 
-#define PATHBENCH_LINE_HEADER                                                                   \
-	"# index bucket      optimum        astar     anyangle   astar+rope     skeleton "       \
+#define PATHBENCH_LINE_HEADER                                                                      \
+	"# index bucket      optimum        astar     anyangle   astar+rope     skeleton "         \
 	"   skel+rope\n"
 
 static int bench_lines(const char *map_path, const char *scen_path, int sample)
@@ -279,20 +289,23 @@ static double bench_column_max(const BenchColumn *c)
 	return m;
 }
 
-static double bench_column_median(BenchColumn *c) { return bench_median(c->v, c->n); }
+static double bench_column_median(BenchColumn *c)
+{
+	return bench_median(c->v, c->n);
+}
 
 enum {
-	COL_ASTAR_MS,		/* grid A* query time */
-	COL_ASTAR_EXP,		/* cells A* expanded */
-	COL_VIS_BUILD_MS,	/* visibility graph build, one value per map */
-	COL_VIS_MS,		/* visibility query time */
-	COL_VIS_EXP,		/* visibility nodes expanded */
-	COL_ANY_OVER_OPT,	/* any-angle optimum / published 8-connected optimum */
-	COL_ROPE_MS,		/* rope-tightening time */
-	COL_ROPE_OVER_OPT,	/* rope-tightened A* / published optimum */
-	COL_ROPE_OVER_ANY,	/* rope-tightened A* / any-angle optimum */
-	COL_ROPE_MINUS_OPT,	/* rope-tightened A* - published optimum (the issue's
-				   "never longer than the grid optimum + 1") */
+	COL_ASTAR_MS,       /* grid A* query time */
+	COL_ASTAR_EXP,      /* cells A* expanded */
+	COL_VIS_BUILD_MS,   /* visibility graph build, one value per map */
+	COL_VIS_MS,         /* visibility query time */
+	COL_VIS_EXP,        /* visibility nodes expanded */
+	COL_ANY_OVER_OPT,   /* any-angle optimum / published 8-connected optimum */
+	COL_ROPE_MS,        /* rope-tightening time */
+	COL_ROPE_OVER_OPT,  /* rope-tightened A* / published optimum */
+	COL_ROPE_OVER_ANY,  /* rope-tightened A* / any-angle optimum */
+	COL_ROPE_MINUS_OPT, /* rope-tightened A* - published optimum (the issue's
+	                       "never longer than the grid optimum + 1") */
 	COL_COUNT
 };
 
@@ -309,7 +322,7 @@ static void bench_print_header(void)
 }
 
 static void bench_print_row(const char *name, const char *size, int64_t cells, int run, int ok,
-			    double corners, BenchColumn col[COL_COUNT])
+                            double corners, BenchColumn col[COL_COUNT])
 {
 	printf("%-32s %9s %8lld %5d %4s", name, size, (long long)cells, run,
 	       ok == run ? "all" : "MISS");
@@ -374,11 +387,12 @@ static int bench_table(int argc, char **argv, int sample)
 			    [COL_VIS_BUILD_MS] = NAN,
 			    [COL_VIS_MS] = any ? r.anyangle_ms : NAN,
 			    [COL_VIS_EXP] = any ? (double)r.anyangle_expanded : NAN,
-			    [COL_ANY_OVER_OPT] = any && r.optimum > 0 ? r.anyangle / r.optimum : NAN,
+			    [COL_ANY_OVER_OPT] =
+			        any && r.optimum > 0 ? r.anyangle / r.optimum : NAN,
 			    [COL_ROPE_MS] = rope ? r.rope_ms : NAN,
 			    [COL_ROPE_OVER_OPT] = rope && r.optimum > 0 ? r.rope / r.optimum : NAN,
-			    [COL_ROPE_OVER_ANY] = rope && any && r.anyangle > 0 ? r.rope / r.anyangle
-										  : NAN,
+			    [COL_ROPE_OVER_ANY] =
+			        rope && any && r.anyangle > 0 ? r.rope / r.anyangle : NAN,
 			    [COL_ROPE_MINUS_OPT] = rope ? r.rope - r.optimum : NAN,
 			};
 			for (int c = 0; c < COL_COUNT; c++) {
@@ -392,7 +406,7 @@ static int bench_table(int argc, char **argv, int sample)
 		char name[64];
 		snprintf(name, sizeof name, "%s", bench_basename(argv[m + 1]));
 		for (char *dot; (dot = strrchr(name, '.')) &&
-				(strcmp(dot, ".scen") == 0 || strcmp(dot, ".map") == 0);)
+		                (strcmp(dot, ".scen") == 0 || strcmp(dot, ".map") == 0);)
 			*dot = '\0';
 		bench_print_row(name, size, bm.free_cells, run, ok, (double)bm.corners, col);
 		fflush(stdout);
@@ -503,13 +517,13 @@ int main(int argc, char **argv)
 		else if (strcmp(argv[a], "--corner") == 0)
 			corner = 1;
 		else if ((strcmp(argv[a], "--sample") == 0 || strcmp(argv[a], "--scale") == 0 ||
-			  strcmp(argv[a], "--vis-limit") == 0) &&
-			 a + 1 < argc) {
+		          strcmp(argv[a], "--vis-limit") == 0) &&
+		         a + 1 < argc) {
 			char *end;
 			long v = strtol(argv[a + 1], &end, 10);
 			if (*end != '\0' || v < 1 || v > 1000000) {
 				fprintf(stderr, PATHBENCH_NAME ": %s: bad number \"%s\"\n", argv[a],
-					argv[a + 1]);
+				        argv[a + 1]);
 				return 2;
 			}
 			if (strcmp(argv[a], "--sample") == 0)
@@ -527,7 +541,8 @@ int main(int argc, char **argv)
 	if (scale > 16)
 		bench_die_usage();
 	if (corner)
-		return argc - a >= 1 ? bench_corner(argc - a, argv + a, scale) : (bench_die_usage(), 2);
+		return argc - a >= 1 ? bench_corner(argc - a, argv + a, scale)
+		                     : (bench_die_usage(), 2);
 	if (table)
 		return bench_table(argc - a, argv + a, sample);
 	if (argc - a != 2)

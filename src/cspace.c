@@ -25,7 +25,10 @@
 
 #include "utak/util.h"
 
-void cspace_footprint_init(CSpaceFootprint *fp) { *fp = (CSpaceFootprint){0}; }
+void cspace_footprint_init(CSpaceFootprint *fp)
+{
+	*fp = (CSpaceFootprint){0};
+}
 
 void cspace_footprint_free(CSpaceFootprint *fp)
 {

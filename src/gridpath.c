@@ -179,7 +179,7 @@ static void gridpath_next_round(GridPathSearch *s)
 }
 
 GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t gx, int32_t gy,
-			     Path *path, double *length)
+                             Path *path, double *length)
 {
 	path_clear(path);
 	*length = -1;
@@ -240,7 +240,8 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 				ns++;
 			} else {
 				/* The no-corner-cutting rule: both orthogonal neighbours free. */
-				if (!free_cell[n] || !straight_free[d - 4] || !straight_free[(d - 3) & 3])
+				if (!free_cell[n] || !straight_free[d - 4] ||
+				    !straight_free[(d - 3) & 3])
 					continue;
 				nd++;
 			}
@@ -256,7 +257,8 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			int32_t ax = abs(goal_x - (cx + gridpath_dx[d]));
 			int32_t ay = abs(goal_y - (cy + gridpath_dy[d]));
 			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			gridpath_push(s, (GridPathOpen){gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n});
+			gridpath_push(
+			    s, (GridPathOpen){gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n});
 		}
 	}
 	path->expanded = expanded;

@@ -51,10 +51,13 @@ typedef struct RopeRun {
 typedef struct RopeSleeve {
 	RopeRun *run;
 	int count, cap;
-	bool bad;	/* the input left free space: a run missing or two runs unjoined */
+	bool bad; /* the input left free space: a run missing or two runs unjoined */
 } RopeSleeve;
 
-static bool rope_free(const Grid *g, int32_t x, int32_t y) { return grid_free_at(g, x, y); }
+static bool rope_free(const Grid *g, int32_t x, int32_t y)
+{
+	return grid_free_at(g, x, y);
+}
 
 /* rope_run_at(g, x, y): the run holding free cell (x, y). */
 static RopeRun rope_run_at(const Grid *g, int32_t x, int32_t y)
@@ -133,7 +136,8 @@ static void rope_sleeve_segment(RopeSleeve *sl, const Grid *g, Vec2 a, Vec2 b)
 			if (!(t < 1))
 				break;
 			double tm = 0.5 * (t_prev + t);
-			rope_sleeve_point(sl, g, vec2(a.x + (b.x - a.x) * tm, a.y + (b.y - a.y) * tm));
+			rope_sleeve_point(sl, g,
+			                  vec2(a.x + (b.x - a.x) * tm, a.y + (b.y - a.y) * tm));
 			t_prev = t;
 		}
 	} else if (a.y == floor(a.y)) {
@@ -163,7 +167,10 @@ static inline double rope_cross(Vec2 apex, Vec2 a, Vec2 b)
 	return vec2_cross(vec2_sub(a, apex), vec2_sub(b, apex));
 }
 
-static inline bool rope_equal(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+static inline bool rope_equal(Vec2 a, Vec2 b)
+{
+	return a.x == b.x && a.y == b.y;
+}
 
 /* rope_push_point: appends q unless it repeats the last point. */
 static void rope_push_point(Path *out, Vec2 q)
@@ -240,7 +247,7 @@ RopeStatus rope_tighten(const Grid *g, const Path *in, Path *out)
 		double line = a->y > b->y ? a->y : b->y;
 		/* Moving up (+y) the low-x end is on the left; moving down, the high-x end. */
 		portal[i] = b->y > a->y ? (RopePortal){vec2(lo, line), vec2(hi, line)}
-					: (RopePortal){vec2(hi, line), vec2(lo, line)};
+		                        : (RopePortal){vec2(hi, line), vec2(lo, line)};
 	}
 	portal[n - 1] = (RopePortal){d, d};
 	rope_funnel(portal, n, out);

@@ -82,7 +82,7 @@ bool visibility_segment_free(const Grid *g, Vec2 a, Vec2 b)
 		double ul = u > au ? u : au, ur = u + 1 < bu ? u + 1 : bu;
 		if (dv == 0) {
 			if (on_line ? vis_blocked(g, u, av, t) && vis_blocked(g, u, av - 1, t)
-				    : vis_blocked(g, u, floor(av), t))
+			            : vis_blocked(g, u, floor(av), t))
 				return false;
 		} else {
 			double vl = ul == au ? av : av + ((ul - au) * dv) / du;
@@ -195,7 +195,7 @@ VisibilityStatus visibility_init(VisibilityGraph *vg, const Grid *grid, int32_t 
 			    vis_into(-dx, -dy, vg->qx[i], vg->qy[i]))
 				continue;
 			if (!visibility_segment_free(grid, vec2(vg->x[i], vg->y[i]),
-						     vec2(vg->x[j], vg->y[j])))
+			                             vec2(vg->x[j], vg->y[j])))
 				continue;
 			if (pair_count > INT32_MAX / 2 - 2) {
 				/* More edges than an int32_t index holds: refuse, not truncate. */
@@ -288,7 +288,10 @@ static VisOpen vis_heap_pop(VisHeap *h)
 	return top;
 }
 
-static inline double vis_dist(Vec2 a, Vec2 b) { return hypot(b.x - a.x, b.y - a.y); }
+static inline double vis_dist(Vec2 a, Vec2 b)
+{
+	return hypot(b.x - a.x, b.y - a.y);
+}
 
 enum { VIS_UNSEEN = 0, VIS_OPEN, VIS_CLOSED };
 

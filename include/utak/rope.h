@@ -32,8 +32,8 @@
 #include "utak/path.h"
 
 typedef enum RopeStatus {
-	ROPE_OK = 0,	/* out holds the tightened path */
-	ROPE_BAD_INPUT,	/* in is empty or not free (visibility_path_free): out is empty */
+	ROPE_OK = 0,    /* out holds the tightened path */
+	ROPE_BAD_INPUT, /* in is empty or not free (visibility_path_free): out is empty */
 } RopeStatus;
 
 /* rope_tighten(g, in, out): the shortest path homotopic to in (see above). out must

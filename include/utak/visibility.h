@@ -24,10 +24,10 @@
  * zero length is free when one of the cells whose closed square holds the point is
  * free. The end points must be where the caller wants them; the test does not look
  * at them otherwise. A POLYLINE is free when every segment is free and no interior
- * vertex is a pinch point (bending there could squeeze through it). Coordinates are grid units (cell (x, y) is [x, x+1) x [y, y+1)).
- * The test is exact for coordinates that are multiples of 1/2 (cell centres and
- * lattice points, all utak uses) up to 2^20; for other values it follows the double
- * arithmetic.
+ * vertex is a pinch point (bending there could squeeze through it). Coordinates are grid units
+ * (cell (x, y) is [x, x+1) x [y, y+1)). The test is exact for coordinates that are multiples of 1/2
+ * (cell centres and lattice points, all utak uses) up to 2^20; for other values it follows the
+ * double arithmetic.
  *
  * FEASIBILITY: the graph is built in full, O(V^2) pair tests each walking up to the
  * length of the segment. visibility_init refuses (VISIBILITY_TOO_LARGE) a grid with
@@ -52,10 +52,10 @@
 #define VISIBILITY_MAX_VERTICES 10000
 
 typedef enum VisibilityStatus {
-	VISIBILITY_FOUND = 0,		/* a shortest path was found (or the graph built) */
-	VISIBILITY_NO_PATH,		/* S and D are free but not connected */
-	VISIBILITY_BAD_ENDPOINT,	/* S or D is not in free space */
-	VISIBILITY_TOO_LARGE,		/* more corners than the limit: nothing was built */
+	VISIBILITY_FOUND = 0,    /* a shortest path was found (or the graph built) */
+	VISIBILITY_NO_PATH,      /* S and D are free but not connected */
+	VISIBILITY_BAD_ENDPOINT, /* S or D is not in free space */
+	VISIBILITY_TOO_LARGE,    /* more corners than the limit: nothing was built */
 } VisibilityStatus;
 
 /* A visibility graph over a grid's convex corners. Corner i is the lattice point
@@ -64,18 +64,18 @@ typedef enum VisibilityStatus {
  * each edge stored in both directions, only the edges a shortest path can use (both
  * ends tangent: the line does not continue into its corner's blocked cell). */
 typedef struct VisibilityGraph {
-	const Grid *grid;	/* borrowed: must outlive the graph, unchanged */
-	int32_t count;		/* corners */
-	int32_t *x, *y;		/* corner i, lattice coordinates (grid units) */
-	int8_t *qx, *qy;	/* direction of the corner's blocked cell */
-	int32_t *first;		/* count + 1 row starts into adj */
-	int32_t *adj;		/* neighbour corners */
-	int64_t edges;		/* undirected edges */
+	const Grid *grid; /* borrowed: must outlive the graph, unchanged */
+	int32_t count;    /* corners */
+	int32_t *x, *y;   /* corner i, lattice coordinates (grid units) */
+	int8_t *qx, *qy;  /* direction of the corner's blocked cell */
+	int32_t *first;   /* count + 1 row starts into adj */
+	int32_t *adj;     /* neighbour corners */
+	int64_t edges;    /* undirected edges */
 	/* Query scratch (count + 2 nodes: the corners, then S, then D). */
 	double *g;
 	int32_t *parent;
 	uint8_t *state;
-	double *to_goal;	/* per corner: distance to D when D is visible, else -1 */
+	double *to_goal; /* per corner: distance to D when D is visible, else -1 */
 } VisibilityGraph;
 
 /* visibility_segment_free(g, a, b): the line-of-sight test above. */

@@ -20,7 +20,10 @@ static uint32_t rng_next(void)
 }
 
 /* Half-units in [-k, k]. */
-static double rng_half(int k) { return ((int)(rng_next() % (uint32_t)(4 * k + 1)) - 2 * k) * 0.5; }
+static double rng_half(int k)
+{
+	return ((int)(rng_next() % (uint32_t)(4 * k + 1)) - 2 * k) * 0.5;
+}
 
 /* clip_area: the area of polygon p (n vertices) inside the square [x0, x0+1] x
  * [y0, y0+1], by clipping against its four sides in turn. */
@@ -34,8 +37,14 @@ static double clip_area(const Vec2 *p, int n, double x0, double y0)
 		for (int i = 0; i < na; i++) {
 			Vec2 s = a[i], e = a[(i + 1) % na];
 			/* Signed distance inside the half-plane of this side. */
-			double ds = side == 0 ? s.x - x0 : side == 1 ? x0 + 1 - s.x : side == 2 ? s.y - y0 : y0 + 1 - s.y;
-			double de = side == 0 ? e.x - x0 : side == 1 ? x0 + 1 - e.x : side == 2 ? e.y - y0 : y0 + 1 - e.y;
+			double ds = side == 0   ? s.x - x0
+			            : side == 1 ? x0 + 1 - s.x
+			            : side == 2 ? s.y - y0
+			                        : y0 + 1 - s.y;
+			double de = side == 0   ? e.x - x0
+			            : side == 1 ? x0 + 1 - e.x
+			            : side == 2 ? e.y - y0
+			                        : y0 + 1 - e.y;
 			if (ds >= 0)
 				b[nb++] = s;
 			if ((ds >= 0) != (de >= 0)) {
@@ -97,7 +106,8 @@ static void random_shape(Polygon *s)
 	default: { /* a star polygon: increasing angles, random radii (always simple) */
 		s->count = 3 + (int)(rng_next() % 8);
 		for (int i = 0; i < s->count; i++) {
-			double a = 2 * acos(-1.0) * (i + 0.2 + 0.6 * (rng_next() % 1000) / 1000.0) / s->count;
+			double a = 2 * acos(-1.0) * (i + 0.2 + 0.6 * (rng_next() % 1000) / 1000.0) /
+			           s->count;
 			double r = 0.3 + 2.5 * (rng_next() % 1000) / 1000.0;
 			s->v[i] = vec2(r * cos(a), r * sin(a));
 		}
@@ -124,7 +134,9 @@ TEST_CASE(cspace_polygon_equals_brute_force)
 			for (int x = 0; x < w; x++) {
 				bool want = brute_fits(&g, &shape, x, y);
 				if (want != (out.cells[y * w + x] == GRID_FREE))
-					fprintf(stderr, "  trial %d cell (%d, %d): brute force %d\n", trial, x, y, want);
+					fprintf(stderr,
+					        "  trial %d cell (%d, %d): brute force %d\n", trial,
+					        x, y, want);
 				TEST_CHECK(want == (out.cells[y * w + x] == GRID_FREE));
 			}
 		grid_free(&g);
@@ -150,7 +162,8 @@ TEST_CASE(cspace_footprint_by_hand)
 	cspace_footprint_disc(&fp, 0.5);
 	TEST_CHECK(fp.count == 1 && fp.run[0].dx0 == 0 && fp.run[0].dx1 == 0);
 	cspace_footprint_disc(&fp, 0.6);
-	TEST_CHECK(fp.count == 3 && fp.run[1].dx0 == -1 && fp.run[1].dx1 == 1 && fp.run[0].dx0 == 0);
+	TEST_CHECK(fp.count == 3 && fp.run[1].dx0 == -1 && fp.run[1].dx1 == 1 &&
+	           fp.run[0].dx0 == 0);
 	cspace_footprint_disc(&fp, 0.75);
 	TEST_CHECK(fp.count == 3 && fp.run[0].dx0 == -1 && fp.run[2].dx1 == 1);
 	cspace_footprint_free(&fp);
@@ -181,7 +194,8 @@ TEST_CASE(cspace_disc_equals_brute_force)
 							continue;
 						double nx = fmin(fmax(cx, xx), xx + 1) - cx;
 						double ny = fmin(fmax(cy, yy), yy + 1) - cy;
-						bool inside = xx < cx && cx < xx + 1 && yy < cy && cy < yy + 1;
+						bool inside = xx < cx && cx < xx + 1 && yy < cy &&
+						              cy < yy + 1;
 						if (inside || nx * nx + ny * ny < r * r)
 							fits = false;
 					}

@@ -52,10 +52,11 @@ static void check_tight(const Grid *g, const Path *in, const Path *out)
 	TEST_CHECK(path_length(out) <= path_length(in) + 1e-9);
 	TEST_CHECK(out->pts[0].x == in->pts[0].x && out->pts[0].y == in->pts[0].y);
 	TEST_CHECK(out->pts[out->count - 1].x == in->pts[in->count - 1].x &&
-		   out->pts[out->count - 1].y == in->pts[in->count - 1].y);
+	           out->pts[out->count - 1].y == in->pts[in->count - 1].y);
 	/* Interior vertices are lattice points. */
 	for (int i = 1; i + 1 < out->count; i++)
-		TEST_CHECK(out->pts[i].x == floor(out->pts[i].x) && out->pts[i].y == floor(out->pts[i].y));
+		TEST_CHECK(out->pts[i].x == floor(out->pts[i].x) &&
+		           out->pts[i].y == floor(out->pts[i].y));
 	/* A fixed point: tightening again changes nothing. */
 	Path again;
 	path_init(&again);
@@ -96,8 +97,8 @@ TEST_CASE(rope_around_one_block_keeps_its_side)
 	 * extra turn. */
 	Path loop;
 	path_init(&loop);
-	Vec2 pts_loop[] = {{6.5, 1.5},	{10.5, 2.5}, {10.5, 10.5}, {1.5, 10.5},
-			   {1.5, 1.5},	{10.5, 1.5}, {10.5, 9.5},  {6.5, 10.5}};
+	Vec2 pts_loop[] = {{6.5, 1.5}, {10.5, 2.5}, {10.5, 10.5}, {1.5, 10.5},
+	                   {1.5, 1.5}, {10.5, 1.5}, {10.5, 9.5},  {6.5, 10.5}};
 	for (int i = 0; i < 8; i++)
 		path_push(&loop, pts_loop[i]);
 	TEST_CHECK(rope_tighten(&g, &loop, &out) == ROPE_OK);
@@ -173,8 +174,8 @@ TEST_CASE(rope_single_obstacle_reaches_the_optimum_of_its_class)
 			Path rest;
 			path_init(&rest);
 			double len;
-			TEST_CHECK(gridpath_find(&as, (int)end.x, (int)end.y, gx, gy, &rest, &len) ==
-				   GRIDPATH_FOUND);
+			TEST_CHECK(gridpath_find(&as, (int)end.x, (int)end.y, gx, gy, &rest,
+			                         &len) == GRIDPATH_FOUND);
 			for (int i = 1; i < rest.count; i++)
 				path_push(&in, rest.pts[i]);
 			path_free(&rest);
@@ -187,7 +188,7 @@ TEST_CASE(rope_single_obstacle_reaches_the_optimum_of_its_class)
 		TEST_CHECK(visibility_init(&vg, &g, VISIBILITY_MAX_VERTICES) == VISIBILITY_FOUND);
 		double best;
 		TEST_CHECK(visibility_find(&vg, in.pts[0], in.pts[in.count - 1], &vis, &best) ==
-			   VISIBILITY_FOUND);
+		           VISIBILITY_FOUND);
 		TEST_CHECK(path_length(&out) >= best - 1e-9);
 		visibility_free(&vg);
 		/* The oracle: wall off one side of the block (its middle row, block to
@@ -204,9 +205,9 @@ TEST_CASE(rope_single_obstacle_reaches_the_optimum_of_its_class)
 				block(&cut, bx1, wy, w, wy + 1);
 			if (visibility_path_free(&cut, &in)) {
 				TEST_CHECK(visibility_init(&vg, &cut, VISIBILITY_MAX_VERTICES) ==
-					   VISIBILITY_FOUND);
-				TEST_CHECK(visibility_find(&vg, in.pts[0], in.pts[in.count - 1], &vis,
-							   &best) == VISIBILITY_FOUND);
+				           VISIBILITY_FOUND);
+				TEST_CHECK(visibility_find(&vg, in.pts[0], in.pts[in.count - 1],
+				                           &vis, &best) == VISIBILITY_FOUND);
 				TEST_NEAR(path_length(&out), best, 1e-9);
 				visibility_free(&vg);
 				compared++;
@@ -248,7 +249,7 @@ TEST_CASE(rope_on_random_grids_is_free_and_never_longer)
 		TEST_CHECK(visibility_init(&vg, &g, VISIBILITY_MAX_VERTICES) == VISIBILITY_FOUND);
 		double best;
 		TEST_CHECK(visibility_find(&vg, in.pts[0], in.pts[in.count - 1], &vis, &best) ==
-			   VISIBILITY_FOUND);
+		           VISIBILITY_FOUND);
 		TEST_CHECK(path_length(&out) >= best - 1e-9);
 		/* Tightening the optimum leaves it as it is. */
 		Path again;

@@ -18,10 +18,16 @@ static uint32_t rng_next(void)
 	return rng_state;
 }
 
-static bool blocked(const Grid *g, int64_t x, int64_t y) { return !grid_free_at(g, (int32_t)x, (int32_t)y); }
+static bool blocked(const Grid *g, int64_t x, int64_t y)
+{
+	return !grid_free_at(g, (int32_t)x, (int32_t)y);
+}
 
 /* floor_div: floor(a / b) for b > 0, correct for negative a. */
-static int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+static int64_t floor_div(int64_t a, int64_t b)
+{
+	return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
 
 /* sampled_free: the oracle. Endpoints are given doubled (half-integers become
  * integers). The segment is sampled at N = 8 |Dx| |Dy| (or 8 |D|) equal steps: every
@@ -50,7 +56,7 @@ static bool sampled_free(const Grid *g, int64_t ax2, int64_t ay2, int64_t bx2, i
 			if (blocked(g, fx, fy - 1) && blocked(g, fx, fy))
 				return false;
 		} else if ((blocked(g, fx - 1, fy - 1) && blocked(g, fx, fy)) ||
-			   (blocked(g, fx, fy - 1) && blocked(g, fx - 1, fy)))
+		           (blocked(g, fx, fy - 1) && blocked(g, fx - 1, fy)))
 			return false;
 	}
 	return true;
@@ -75,21 +81,32 @@ TEST_CASE(segment_test_agrees_with_sampling)
 			/* Half-integers from -1 to w + 1, and often axis-parallel or diagonal. */
 			int64_t c[4];
 			for (int i = 0; i < 4; i++)
-				c[i] = (int64_t)(rng_next() % (uint32_t)(2 * ((i % 2 ? h : w) + 2) + 1)) - 2;
+				c[i] = (int64_t)(rng_next() %
+				                 (uint32_t)(2 * ((i % 2 ? h : w) + 2) + 1)) -
+				       2;
 			switch (rng_next() % 4) {
-			case 0: c[2] = c[0]; break;
-			case 1: c[3] = c[1]; break;
-			case 2: c[3] = c[1] + (c[2] - c[0]); break;
-			default: break;
+			case 0:
+				c[2] = c[0];
+				break;
+			case 1:
+				c[3] = c[1];
+				break;
+			case 2:
+				c[3] = c[1] + (c[2] - c[0]);
+				break;
+			default:
+				break;
 			}
 			if (c[0] == c[2] && c[1] == c[3])
 				continue;
 			bool want = sampled_free(&g, c[0], c[1], c[2], c[3]);
 			bool got = visibility_segment_free(&g, vec2(c[0] / 2.0, c[1] / 2.0),
-							   vec2(c[2] / 2.0, c[3] / 2.0));
+			                                   vec2(c[2] / 2.0, c[3] / 2.0));
 			if (want != got)
-				fprintf(stderr, "  %dx%d grid, (%g,%g)-(%g,%g): sampled %d, test %d\n", w,
-					h, c[0] / 2.0, c[1] / 2.0, c[2] / 2.0, c[3] / 2.0, want, got);
+				fprintf(stderr,
+				        "  %dx%d grid, (%g,%g)-(%g,%g): sampled %d, test %d\n", w,
+				        h, c[0] / 2.0, c[1] / 2.0, c[2] / 2.0, c[3] / 2.0, want,
+				        got);
 			TEST_CHECK(want == got);
 			checked++;
 			free_count += got;
@@ -107,10 +124,10 @@ TEST_CASE(segment_test_by_hand)
 	grid_init(&g, 4, 4, GRID_FREE);
 	g.cells[1 * 4 + 1] = GRID_BLOCKED;
 	g.cells[2 * 4 + 2] = GRID_BLOCKED;
-	TEST_CHECK(!visibility_segment_free(&g, vec2(1, 3), vec2(3, 1)));	/* through the pinch */
-	TEST_CHECK(visibility_segment_free(&g, vec2(0.5, 2.5), vec2(2, 2)));	/* ends at it */
-	TEST_CHECK(!visibility_segment_free(&g, vec2(0, 2), vec2(4, 2)));	/* along, through it */
-	TEST_CHECK(visibility_segment_free(&g, vec2(0, 1), vec2(4, 1)));	/* grazes one cell */
+	TEST_CHECK(!visibility_segment_free(&g, vec2(1, 3), vec2(3, 1)));    /* through the pinch */
+	TEST_CHECK(visibility_segment_free(&g, vec2(0.5, 2.5), vec2(2, 2))); /* ends at it */
+	TEST_CHECK(!visibility_segment_free(&g, vec2(0, 2), vec2(4, 2)));    /* along, through it */
+	TEST_CHECK(visibility_segment_free(&g, vec2(0, 1), vec2(4, 1)));     /* grazes one cell */
 	TEST_CHECK(visibility_segment_free(&g, vec2(0.5, 0.5), vec2(3.5, 0.5)));
 	TEST_CHECK(!visibility_segment_free(&g, vec2(0.5, 1.5), vec2(3.5, 1.5)));
 	/* A single blocked cell's corner may be touched in passing. */
@@ -150,17 +167,19 @@ TEST_CASE(visibility_around_one_block_by_hand)
 	Path p;
 	path_init(&p);
 	double len;
-	TEST_CHECK(visibility_find(&vg, vec2(1.5, 5.5), vec2(8.5, 5.5), &p, &len) == VISIBILITY_FOUND);
+	TEST_CHECK(visibility_find(&vg, vec2(1.5, 5.5), vec2(8.5, 5.5), &p, &len) ==
+	           VISIBILITY_FOUND);
 	TEST_NEAR(len, 2 + 5 * sqrt(2.0), 1e-12);
 	TEST_CHECK(p.count == 4);
 	TEST_CHECK(p.pts[1].x == 4 && p.pts[1].y == 8 && p.pts[2].x == 6 && p.pts[2].y == 8);
 	/* In sight: the straight line. */
-	TEST_CHECK(visibility_find(&vg, vec2(1.5, 0.5), vec2(8.5, 1.5), &p, &len) == VISIBILITY_FOUND);
+	TEST_CHECK(visibility_find(&vg, vec2(1.5, 0.5), vec2(8.5, 1.5), &p, &len) ==
+	           VISIBILITY_FOUND);
 	TEST_NEAR(len, hypot(7, 1), 1e-12);
 	TEST_CHECK(p.count == 2);
 	/* Endpoints in a blocked cell. */
 	TEST_CHECK(visibility_find(&vg, vec2(4.5, 5.5), vec2(8.5, 5.5), &p, &len) ==
-		   VISIBILITY_BAD_ENDPOINT);
+	           VISIBILITY_BAD_ENDPOINT);
 	TEST_CHECK(p.count == 0 && len == -1);
 	/* The limit refuses cleanly. */
 	VisibilityGraph small;
@@ -207,7 +226,8 @@ static double brute_length(const Grid *g, Vec2 s, Vec2 d)
 			if (done[v])
 				continue;
 			double c = hypot(pt[v].x - pt[u].x, pt[v].y - pt[u].y);
-			if (dist[u] + c < dist[v] - 1e-12 && visibility_segment_free(g, pt[u], pt[v]))
+			if (dist[u] + c < dist[v] - 1e-12 &&
+			    visibility_segment_free(g, pt[u], pt[v]))
 				dist[v] = dist[u] + c;
 		}
 	}
@@ -233,8 +253,10 @@ TEST_CASE(visibility_between_bounds_and_equal_to_brute_force)
 		GridPathSearch as;
 		gridpath_init(&as, &g);
 		for (int q = 0; q < 6; q++) {
-			int sx = (int)(rng_next() % (uint32_t)w), sy = (int)(rng_next() % (uint32_t)h);
-			int gx = (int)(rng_next() % (uint32_t)w), gy = (int)(rng_next() % (uint32_t)h);
+			int sx = (int)(rng_next() % (uint32_t)w),
+			    sy = (int)(rng_next() % (uint32_t)h);
+			int gx = (int)(rng_next() % (uint32_t)w),
+			    gy = (int)(rng_next() % (uint32_t)h);
 			Vec2 s = vec2(sx + 0.5, sy + 0.5), d = vec2(gx + 0.5, gy + 0.5);
 			double len, alen;
 			VisibilityStatus st = visibility_find(&vg, s, d, &p, &len);
