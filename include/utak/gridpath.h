@@ -18,7 +18,7 @@
  * shared between threads. The Path holds the cell centres (x + 0.5, y + 0.5) from
  * start to goal, one per step, and path.expanded the number of cells expanded.
  *
- * MEMORY: 14 bytes per cell of the grid with a one-cell border, plus the open list
+ * MEMORY: 16 bytes per cell of the grid with a one-cell border, plus the open list
  * (16 bytes per pushed entry; at most 8 pushes per cell, far fewer in practice),
  * kept between queries.
  *
@@ -53,17 +53,22 @@ typedef struct GridPathBucket {
 	int count, cap;
 } GridPathBucket;
 
+/* The state of one cell, kept together so that a visit touches one cache line. */
+typedef struct GridPathNode {
+	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
+	int32_t straight; /* straight steps of the best known path to the cell */
+	int32_t diagonal; /* diagonal steps of the best known path to the cell */
+	uint8_t free;     /* 1 when free; the border cells are 0 */
+	uint8_t from;     /* direction (0..7) of the step that reached it */
+} GridPathNode;
+
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
  * blocked border one cell wide (width w + 2), so neighbours need no bounds tests. */
 typedef struct GridPathSearch {
-	int32_t w, h;        /* size of the grid searched, in cells */
-	int32_t pw;          /* padded width: w + 2 */
-	uint8_t *free_cell;  /* (w + 2) (h + 2): 1 when free; the border is 0 */
-	uint32_t *mark;      /* per cell: 2 round when opened this round, 2 round + 1 closed */
-	int32_t *g_straight; /* per cell: straight steps of the best known path */
-	int32_t *g_diagonal; /* per cell: diagonal steps of the best known path */
-	uint8_t *from;       /* per cell: direction (0..7) of the step that reached it */
-	uint32_t round;      /* query counter; marks of other rounds mean "unseen" */
+	int32_t w, h;       /* size of the grid searched, in cells */
+	int32_t pw;         /* padded width: w + 2 */
+	GridPathNode *node; /* (w + 2) (h + 2) cells */
+	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
 	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
 	 * the start's f; the current bucket is a binary heap, later ones are unsorted. */
 	GridPathBucket *bucket;
@@ -71,6 +76,10 @@ typedef struct GridPathSearch {
 	int bucket_used; /* buckets touched this query: 0..bucket_used-1 */
 	int bucket_now;  /* the current bucket; no entry lies in an earlier one */
 	double f_start;  /* f of the start cell: the origin of bucket numbers */
+	/* Entries whose f equals that of the cell being expanded, the least in the open
+	 * list: they may be expanded next in any order, so they skip the heap. */
+	GridPathOpen *stack;
+	int stack_count, stack_cap;
 } GridPathSearch;
 
 /* gridpath_init(s, grid): prepares a search on a copy of grid (w, h >= 1). */
