@@ -75,29 +75,37 @@ bool visibility_segment_free(const Grid *g, Vec2 a, Vec2 b)
 		av = bv;
 		bv = s;
 	}
+	/* A segment reaching strictly outside the grid meets an outside cell's interior,
+	 * or runs between two outside cells. After this test every column and row the
+	 * walk below reads is inside the grid, except the neighbours of a segment lying
+	 * on the grid's border line, which go through vis_blocked's bounds test. */
+	const double umax = t ? g->h : g->w, vmax = t ? g->w : g->h;
+	if (au < 0 || bu > umax || fmin(av, bv) < 0 || fmax(av, bv) > vmax)
+		return false;
+	const uint8_t *cells = g->cells;
+	const size_t su = t ? (size_t)g->w : 1, sv = t ? 1 : (size_t)g->w;
 	const double du = bu - au, dv = bv - av;
 	const bool on_line = dv == 0 && av == floor(av);
+	double vl = av; /* v where the segment enters the current column */
 	for (double u = floor(au); u < bu; u++) {
-		/* Column u: the open interval (ul, ur) of the segment inside it. */
-		double ul = u > au ? u : au, ur = u + 1 < bu ? u + 1 : bu;
+		/* Column u holds the open piece (max(u, au), min(u + 1, bu)) of the segment. */
+		bool last = !(u + 1 < bu);
+		double vr = last ? bv : av + ((u + 1 - au) * dv) / du;
 		if (dv == 0) {
 			if (on_line ? vis_blocked(g, u, av, t) && vis_blocked(g, u, av - 1, t)
-			            : vis_blocked(g, u, floor(av), t))
+			            : cells[(size_t)u * su + (size_t)floor(av) * sv] != GRID_FREE)
 				return false;
 		} else {
-			double vl = ul == au ? av : av + ((ul - au) * dv) / du;
-			double vr = ur == bu ? bv : av + ((ur - au) * dv) / du;
 			double lo = vl < vr ? vl : vr, hi = vl < vr ? vr : vl;
+			const uint8_t *col = cells + (size_t)u * su;
 			for (double v = floor(lo); v < hi; v++)
-				if (vis_blocked(g, u, v, t))
+				if (col[(size_t)v * sv] != GRID_FREE)
 					return false;
 		}
-		/* The lattice line u + 1, if strictly inside the segment. */
-		if (u + 1 < bu) {
-			double v = dv == 0 ? av : av + ((u + 1 - au) * dv) / du;
-			if (v == floor(v) && vis_pinch(g, u + 1, v, t))
-				return false;
-		}
+		/* The lattice line u + 1, strictly inside the segment, at height vr. */
+		if (!last && vr == floor(vr) && vis_pinch(g, u + 1, vr, t))
+			return false;
+		vl = vr;
 	}
 	return true;
 }
