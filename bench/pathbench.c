@@ -12,6 +12,10 @@
  *	nearest the bottom-right), each map optionally enlarged K times (every cell
  *	becomes K x K cells), the figure the issue compares with libtcod.
  *
+ *   pathbench --cspace MAP ...
+ *	Configuration-space erosion (cspace.h) by three discs and an L-shaped object:
+ *	milliseconds and the free cells left.
+ *
  * --sample N runs at most N scenarios of each file, evenly spaced (always the first),
  * so that `make bench` takes minutes. Times are wall-clock milliseconds on one
  * thread (CLOCK_MONOTONIC); every other printed number is deterministic.
@@ -25,6 +29,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "utak/cspace.h"
 #include "utak/grid.h"
 #include "utak/gridpath.h"
 #include "utak/movingai.h"
@@ -72,13 +77,24 @@ static double bench_now_ms(void)
 	return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
 }
 
+/* bench_cpu_ms: this thread's CPU time: unlike the wall clock, it does not count
+ * the time the thread waits while another process has the core (the benchmark
+ * machine is shared). */
+static double bench_cpu_ms(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
 static void bench_die_usage(void)
 {
 	fprintf(stderr,
 	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] FILE.map FILE.scen\n"
 	        "       " PATHBENCH_NAME
 	        " --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]\n"
-	        "       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n");
+	        "       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n"
+	        "       " PATHBENCH_NAME " --cspace MAP [MAP ...]\n");
 	exit(2);
 }
 
@@ -459,12 +475,14 @@ static int bench_nearest_free(const Grid *g, int32_t cx, int32_t cy, int32_t *x,
 }
 
 /* The repetitions of a corner-to-corner query; the minimum is reported. */
-#define PATHBENCH_CORNER_REPEAT 3
+#define PATHBENCH_CORNER_REPEAT 5
 
 static int bench_corner(int argc, char **argv, int scale)
 {
-	printf("# grid A* corner to corner, best of %d runs\n", PATHBENCH_CORNER_REPEAT);
-	printf("map                         size       cells    length   expanded      ms\n");
+	printf("# grid A* corner to corner, best of %d runs: wall clock and thread CPU time\n",
+	       PATHBENCH_CORNER_REPEAT);
+	printf(
+	    "map                         size       cells    length   expanded      ms  cpu.ms\n");
 	Path path;
 	path_init(&path);
 	for (int m = 0; m < argc; m++) {
@@ -487,20 +505,22 @@ static int bench_corner(int argc, char **argv, int scale)
 			snprintf(name + n, sizeof name - n, " x%d", scale);
 		}
 		snprintf(size, sizeof size, "%dx%d", (int)bm.grid.w, (int)bm.grid.h);
-		double best = INFINITY, len = -1;
+		double best = INFINITY, best_cpu = INFINITY, len = -1;
 		if (bench_nearest_free(&bm.grid, 0, 0, &sx, &sy) &&
 		    bench_nearest_free(&bm.grid, bm.grid.w - 1, bm.grid.h - 1, &gx, &gy))
 			for (int rep = 0; rep < PATHBENCH_CORNER_REPEAT; rep++) {
-				double t0 = bench_now_ms();
+				double t0 = bench_now_ms(), c0 = bench_cpu_ms();
 				gridpath_find(&bm.astar, sx, sy, gx, gy, &path, &len);
-				double t = bench_now_ms() - t0;
+				double t = bench_now_ms() - t0, c = bench_cpu_ms() - c0;
 				best = t < best ? t : best;
+				best_cpu = c < best_cpu ? c : best_cpu;
 			}
 		printf("%-26s %11s %10lld", name, size, (long long)bm.free_cells);
 		if (len < 0)
-			printf(" %9s %10s %7s\n", "none", "-", "-");
+			printf(" %9s %10s %7s %7s\n", "none", "-", "-", "-");
 		else
-			printf(" %9.2f %10lld %7.1f\n", len, (long long)path.expanded, best);
+			printf(" %9.2f %10lld %7.1f %7.1f\n", len, (long long)path.expanded, best,
+			       best_cpu);
 		fflush(stdout);
 		bench_unload(&bm);
 	}
@@ -508,14 +528,82 @@ static int bench_corner(int argc, char **argv, int scale)
 	return 0;
 }
 
+/* The shapes --cspace erodes by: clearance discs, and an L-shaped object 6 x 4
+ * squares with a 3 x 2 notch (the paper's L-shaped object, section 5), its
+ * reference point at its inner corner. */
+static const double bench_disc_radius[] = {1.0, 2.5, 6.0};
+static const Polygon bench_l_shape = {6, {{-2, -2}, {4, -2}, {4, 0}, {1, 0}, {1, 2}, {-2, 2}}};
+#define PATHBENCH_CSPACE_REPEAT 3
+
+static double bench_cspace_time(const Grid *g, const Polygon *shape, double radius, Grid *out)
+{
+	double best = INFINITY;
+	for (int rep = 0; rep < PATHBENCH_CSPACE_REPEAT; rep++) {
+		double t0 = bench_now_ms();
+		if (shape)
+			cspace_erode(g, shape, out);
+		else
+			cspace_erode_disc(g, radius, out);
+		double t = bench_now_ms() - t0;
+		best = t < best ? t : best;
+	}
+	return best;
+}
+
+static int64_t bench_count_free(const Grid *g)
+{
+	int64_t n = 0;
+	for (int64_t i = 0; i < (int64_t)g->w * g->h; i++)
+		n += g->cells[i] == GRID_FREE;
+	return n;
+}
+
+/* bench_cspace: configuration-space erosion times (best of PATHBENCH_CSPACE_REPEAT)
+ * and the free cells left, per map and shape. */
+static int bench_cspace(int argc, char **argv)
+{
+	printf("# configuration-space erosion (cspace.h), best of %d runs; free cells left\n",
+	       PATHBENCH_CSPACE_REPEAT);
+	printf("%-26s %11s %10s", "map", "size", "cells");
+	for (size_t k = 0; k < sizeof bench_disc_radius / sizeof bench_disc_radius[0]; k++)
+		printf("   disc r=%-4.1f ms", bench_disc_radius[k]);
+	printf("   L 6x4 (free)   ms\n");
+	for (int m = 0; m < argc; m++) {
+		BenchMap bm;
+		bench_load(&bm, argv[m], NULL, false);
+		Grid out;
+		grid_init(&out, bm.grid.w, bm.grid.h, GRID_BLOCKED);
+		char name[64], size[32];
+		snprintf(name, sizeof name, "%s", bench_basename(argv[m]));
+		char *dot = strrchr(name, '.');
+		if (dot)
+			*dot = '\0';
+		snprintf(size, sizeof size, "%dx%d", (int)bm.grid.w, (int)bm.grid.h);
+		printf("%-26s %11s %10lld", name, size, (long long)bm.free_cells);
+		for (size_t k = 0; k < sizeof bench_disc_radius / sizeof bench_disc_radius[0];
+		     k++) {
+			double ms = bench_cspace_time(&bm.grid, NULL, bench_disc_radius[k], &out);
+			printf(" %10lld %5.1f", (long long)bench_count_free(&out), ms);
+		}
+		double ms = bench_cspace_time(&bm.grid, &bench_l_shape, 0, &out);
+		printf(" %13lld %5.1f\n", (long long)bench_count_free(&out), ms);
+		fflush(stdout);
+		grid_free(&out);
+		bench_unload(&bm);
+	}
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
-	int table = 0, corner = 0, sample = 0, scale = 1, a = 1;
+	int table = 0, corner = 0, cspace = 0, sample = 0, scale = 1, a = 1;
 	for (; a < argc && strncmp(argv[a], "--", 2) == 0; a++) {
 		if (strcmp(argv[a], "--table") == 0)
 			table = 1;
 		else if (strcmp(argv[a], "--corner") == 0)
 			corner = 1;
+		else if (strcmp(argv[a], "--cspace") == 0)
+			cspace = 1;
 		else if ((strcmp(argv[a], "--sample") == 0 || strcmp(argv[a], "--scale") == 0 ||
 		          strcmp(argv[a], "--vis-limit") == 0) &&
 		         a + 1 < argc) {
@@ -536,8 +624,10 @@ int main(int argc, char **argv)
 		} else
 			bench_die_usage();
 	}
-	if (table && corner)
+	if (table + corner + cspace > 1)
 		bench_die_usage();
+	if (cspace)
+		return argc - a >= 1 ? bench_cspace(argc - a, argv + a) : (bench_die_usage(), 2);
 	if (scale > 16)
 		bench_die_usage();
 	if (corner)
