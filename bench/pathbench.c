@@ -1,27 +1,40 @@
 /* pathbench.c - the path-finding benchmark on Moving AI maps (paper 4.1 and 5: the
  * paper's planners compared on real maps).
  *
- *   pathbench [--sample N] FILE.map FILE.scen
- *	One line per scenario (see PATHBENCH_LINE_HEADER); exit 1 when grid A* misses a
- *	published optimum (tolerance 1e-3 + 1e-5 x length), 2 on a bad file or usage.
- *   pathbench --table [--sample N] MAP SCEN [MAP SCEN ...]
- *	One row per map (times, expansions, length ratios) and a row of medians over
- *	every scenario run; the same exit status.
+ *   pathbench [--sample N] [--vis-limit N] FILE.map FILE.scen
+ *	One line per scenario: index in the file, bucket, published optimum, grid A*
+ *	length, any-angle (visibility-graph) length, the A* path rope-tightened, then
+ *	the skeleton path and its tightened length; "-" where not computed, and
+ *	" MISSED" / " ROPE-FAILED" at the end of a line that fails a check. Exit 1 when
+ *	grid A* misses a published optimum (tolerance 1e-3 + 1e-5 x length) or the rope
+ *	fails its checks (free, not longer than the A* path, not shorter than the
+ *	any-angle optimum), 2 on a bad file or usage (one line on stderr).
+ *   pathbench --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]
+ *	One row per scenario file, then a row over all scenarios run; same exit status.
+ *	Columns (medians over the scenarios unless .mx = maximum):
+ *	  size, cells (free), run (scenarios run), A*ok ("all" when every A* length
+ *	  matched its optimum), A*.ms, A*.exp (cells expanded);
+ *	  vis.V (convex corners), vis.build (ms, once per map; "-" when refused:
+ *	  more corners than --vis-limit), vis.ms and vis.ex (query time, nodes
+ *	  expanded), any/opt (any-angle length / published optimum);
+ *	  rope.ms (tightening the A* path), rope/opt, rope/any, r/any.mx, r-opt.mx
+ *	  (tightened length minus published optimum);
+ *	  skel: dt.ms, sk.ms, pg.ms (distance transform, skeleton, pathgraph build),
+ *	  q.ms, q.exp (pathgraph query), sk/any, skr/any (skeleton path and its
+ *	  tightened form over the any-angle optimum), skr-opt (tightened minus the grid
+ *	  optimum, max): "-" until the skeleton modules are wired in (SKELETON below).
  *   pathbench --corner [--scale K] MAP ...
  *	Grid A* corner to corner (the free cell nearest the top-left corner to the one
  *	nearest the bottom-right), each map optionally enlarged K times (every cell
- *	becomes K x K cells), the figure the issue compares with libtcod.
- *
+ *	becomes K x K cells), the figure the issue compares with libtcod: length,
+ *	cells expanded, best wall-clock ms and best thread-CPU ms of 5 runs.
  *   pathbench --cspace MAP ...
  *	Configuration-space erosion (cspace.h) by three discs and an L-shaped object:
- *	milliseconds and the free cells left.
+ *	free cells left and best ms of 3 runs.
  *
  * --sample N runs at most N scenarios of each file, evenly spaced (always the first),
- * so that `make bench` takes minutes. Times are wall-clock milliseconds on one
- * thread (CLOCK_MONOTONIC); every other printed number is deterministic.
- *
- * The skeleton planner's columns (skel ...) print "-" until the skeleton and pathgraph
- * modules are merged; they are marked SKELETON below, where they get wired in. */
+ * so that `make bench` takes minutes. Times are milliseconds on one thread; every
+ * other printed number is deterministic. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
