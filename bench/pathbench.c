@@ -78,6 +78,9 @@ typedef struct BenchMap {
 	bool has_visibility; /* built (corners <= the limit) */
 	VisibilityGraph visibility;
 	double visibility_build_ms;
+	/* SKELETON: the distance transform, skeleton and pathgraph of the map, and the
+	 * milliseconds each took to build, go here (built in bench_load, freed in
+	 * bench_unload, printed by bench_print_row). */
 } BenchMap;
 
 /* The corner limit for the visibility graph (--vis-limit). */
@@ -152,6 +155,8 @@ static void bench_load(BenchMap *bm, const char *map_path, const char *scen_path
 		                     VISIBILITY_FOUND;
 		bm->visibility_build_ms = bench_now_ms() - t0;
 	}
+	/* SKELETON: build the distance transform, skeleton and pathgraph here, timing
+	 * each. */
 }
 
 static void bench_unload(BenchMap *bm)
@@ -219,7 +224,11 @@ static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
 		    r.anyangle > r.rope + PATHBENCH_LENGTH_EPS)
 			r.rope_ok = 0;
 	}
-	/* SKELETON: skeleton planner query and its rope-tightening go here. */
+	/* SKELETON: the skeleton planner's query (S' and D', the pathgraph search, the
+	 * skeleton path) into r.skeleton with its time and vertices expanded, then
+	 * rope_tighten of that path into r.skeleton_rope (the issue's targets: median
+	 * r.skeleton_rope / r.anyangle <= 1.01, r.skeleton_rope <= r.optimum + 1); add
+	 * their columns to the enum COL_... and to bench_table. */
 	return r;
 }
 

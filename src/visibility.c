@@ -14,8 +14,9 @@
  *  - Graph: the convex corners, and an edge between two corners that see each other
  *    and at which the line is tangent (it does not run on into the corner's blocked
  *    cell): a shortest path bends only around an obstacle, with the obstacle on the
- *    inside of the bend, so other edges are never used (Lozano-Perez and Wesley 1979,
- *    the "reduced" or tangent visibility graph).
+ *    inside of the bend, so other edges are never used (the reduced visibility
+ *    graph of supporting and separating lines; see J.-C. Latombe, "Robot Motion
+ *    Planning", 1991, ch. 4).
  *  - Query: S and D are joined to the corners they see (S to D directly when free),
  *    then A* (Hart, Nilsson and Raphael 1968) with the straight-line distance to D,
  *    which is consistent, so nodes close once.

@@ -52,7 +52,8 @@
 
 /* The most corners visibility_init accepts in the benchmark (see FEASIBILITY):
  * 25 000 corners is 3.1e8 candidate pairs, at most about a minute to build here;
- * it admits every map of ../shared/data/movingai up to Boston and 8room_000. */
+ * it admits every map of ../shared/data/movingai but maze512-1-0 and
+ * random512-10-0. */
 #define VISIBILITY_MAX_VERTICES 25000
 
 typedef enum VisibilityStatus {
