@@ -2,16 +2,19 @@
 # run.sh - `make bench`: the path-finding benchmark (paper 4.1 and 5) over every
 # Moving AI map in ../shared/data/movingai (the data sits beside the repository).
 #
-# Prints two tables: (1) per scenario file, grid A* against the published optima
+# Prints three tables: (1) per scenario file, grid A* against the published optima
 # (a check: any miss makes this script fail), the visibility-graph any-angle optimum
-# and rope-tightening, with times and expansions; (2) grid A* corner to corner on
-# the 1024 x 1024 maps (Boston, and the three 512 x 512 maps enlarged twice), the
-# figure the issue compares with libtcod. PATHBENCH_SAMPLE scenarios of each file,
-# evenly spaced, are run so the whole takes a few minutes on 2 cores.
+# (on the maps with at most VISIBILITY_MAX_VERTICES corners; the build is quadratic)
+# and the rope-tightened A* path, with times and expansions; (2) grid A* corner to
+# corner on the 1024 x 1024 maps (Boston, and the three 512 x 512 maps enlarged
+# twice), the figure the issue compares with libtcod; (3) configuration-space
+# erosion times. PATHBENCH_SAMPLE scenarios of each file, evenly spaced, are run,
+# so the whole takes about two minutes of CPU (most of it building the visibility
+# graphs of Boston and 8room_000).
 set -u
 data=${MOVINGAI:-../shared/data/movingai}
 bin=${PATHBENCH:-build/rel/bench/pathbench}
-sample=${PATHBENCH_SAMPLE:-200}
+sample=${PATHBENCH_SAMPLE:-400}
 if [ ! -d "$data/maps" ] || [ ! -d "$data/scenarios" ]; then
 	echo "bench/run.sh: $data: no Moving AI data (maps/ and scenarios/)" >&2
 	exit 2
@@ -38,4 +41,8 @@ echo "== grid A* corner to corner on 1024 x 1024 maps"
 "$bin" --corner "$data/maps/cities/Boston_0_1024.map" || st=1
 "$bin" --corner --scale 2 "$data/maps/rooms/8room_000.map" "$data/maps/mazes/maze512-1-0.map" \
 	"$data/maps/random/random512-10-0.map" | tail -n +3 || st=1
+echo
+echo "== configuration-space erosion"
+"$bin" --cspace "$data/maps/cities/Boston_0_1024.map" "$data/maps/rooms/8room_000.map" \
+	"$data/maps/mazes/maze512-1-0.map" "$data/maps/random/random512-10-0.map" || st=1
 exit $st

@@ -16,7 +16,10 @@
 /* The largest side accepted: keeps w * h well inside int32_t cell indices. */
 #define MOVINGAI_MAX_SIDE 16384
 
-double movingai_tolerance(double optimum) { return 1e-3 + 1e-5 * optimum; }
+double movingai_tolerance(double optimum)
+{
+	return 1e-3 + 1e-5 * optimum;
+}
 
 static void movingai_error(char *err, const char *path, long line, const char *fmt, ...)
 {
@@ -83,13 +86,13 @@ bool movingai_read_map(const char *path, Grid *grid, char err[MOVINGAI_ERROR_SIZ
 			goto out;
 		}
 		bool good = i == 1   ? movingai_header_int(buf, "height", &h)
-			    : i == 2 ? movingai_header_int(buf, "width", &w)
-				     : strcmp(buf, want[i]) == 0;
+		            : i == 2 ? movingai_header_int(buf, "width", &w)
+		                     : strcmp(buf, want[i]) == 0;
 		if (!good) {
 			movingai_error(err, path, line,
-				       i == 1 || i == 2 ? "expected \"%s N\" with 1 <= N <= 16384"
-							: "expected \"%s\"",
-				       want[i]);
+			               i == 1 || i == 2 ? "expected \"%s N\" with 1 <= N <= 16384"
+			                                : "expected \"%s\"",
+			               want[i]);
 			goto out;
 		}
 	}
@@ -98,13 +101,13 @@ bool movingai_read_map(const char *path, Grid *grid, char err[MOVINGAI_ERROR_SIZ
 		line++;
 		if (!movingai_getline(f, buf, MOVINGAI_MAX_LINE, &too_long)) {
 			movingai_error(err, path, line, "the map has %d rows, the header says %d",
-				       (int)y, (int)h);
+			               (int)y, (int)h);
 			goto out;
 		}
 		size_t n = too_long ? MOVINGAI_MAX_LINE : strlen(buf);
 		if (n != (size_t)w) {
 			movingai_error(err, path, line, "row of %zu cells, the header says %d", n,
-				       (int)w);
+			               (int)w);
 			goto out;
 		}
 		for (int32_t x = 0; x < w; x++) {
@@ -115,7 +118,7 @@ bool movingai_read_map(const char *path, Grid *grid, char err[MOVINGAI_ERROR_SIZ
 				grid->cells[(size_t)y * w + x] = GRID_BLOCKED;
 			else {
 				movingai_error(err, path, line, "column %d: unknown terrain '%c'",
-					       (int)x + 1, c);
+				               (int)x + 1, c);
 				goto out;
 			}
 		}
@@ -124,7 +127,8 @@ bool movingai_read_map(const char *path, Grid *grid, char err[MOVINGAI_ERROR_SIZ
 	while (movingai_getline(f, buf, MOVINGAI_MAX_LINE, &too_long)) {
 		line++;
 		if (too_long || buf[strspn(buf, " \t")] != '\0') {
-			movingai_error(err, path, line, "text after the %d rows of the map", (int)h);
+			movingai_error(err, path, line, "text after the %d rows of the map",
+			               (int)h);
 			goto out;
 		}
 	}
@@ -167,7 +171,7 @@ static bool movingai_field_double(const char *s, double *out)
 }
 
 bool movingai_read_scen(const char *path, const Grid *grid, MovingAiScen *scen,
-			char err[MOVINGAI_ERROR_SIZE])
+                        char err[MOVINGAI_ERROR_SIZE])
 {
 	*scen = (MovingAiScen){0};
 	scen->map_w = grid->w;
@@ -217,10 +221,11 @@ bool movingai_read_scen(const char *path, const Grid *grid, MovingAiScen *scen,
 		if (!movingai_field_int(field[2], 1, MOVINGAI_MAX_SIDE, &mw) ||
 		    !movingai_field_int(field[3], 1, MOVINGAI_MAX_SIDE, &mh) || mw != grid->w ||
 		    mh != grid->h) {
-			movingai_error(err, path, line,
-				       "map size \"%s x %s\" (width, height) differs from the map's "
-				       "%d x %d",
-				       field[2], field[3], (int)grid->w, (int)grid->h);
+			movingai_error(
+			    err, path, line,
+			    "map size \"%s x %s\" (width, height) differs from the map's "
+			    "%d x %d",
+			    field[2], field[3], (int)grid->w, (int)grid->h);
 			goto out;
 		}
 		int32_t *coord[4] = {&pr.sx, &pr.sy, &pr.gx, &pr.gy};
@@ -228,22 +233,22 @@ bool movingai_read_scen(const char *path, const Grid *grid, MovingAiScen *scen,
 			int32_t hi = (i % 2 == 0 ? grid->w : grid->h) - 1;
 			if (!movingai_field_int(field[4 + i], 0, hi, coord[i])) {
 				movingai_error(err, path, line,
-					       "field %d: \"%s\" is not a %s inside the map", 5 + i,
-					       field[4 + i], i % 2 == 0 ? "column" : "row");
+				               "field %d: \"%s\" is not a %s inside the map", 5 + i,
+				               field[4 + i], i % 2 == 0 ? "column" : "row");
 				goto out;
 			}
 		}
 		if (!grid_free_at(grid, pr.sx, pr.sy) || !grid_free_at(grid, pr.gx, pr.gy)) {
 			movingai_error(err, path, line, "the %s cell is blocked on the map",
-				       grid_free_at(grid, pr.sx, pr.sy) ? "goal" : "start");
+			               grid_free_at(grid, pr.sx, pr.sy) ? "goal" : "start");
 			goto out;
 		}
 		if (!movingai_field_double(field[8], &pr.optimum)) {
 			movingai_error(err, path, line, "field 9: bad length \"%s\"", field[8]);
 			goto out;
 		}
-		scen->problems = util_grow(scen->problems, &scen->cap, scen->count + 1,
-					   sizeof *scen->problems);
+		scen->problems =
+		    util_grow(scen->problems, &scen->cap, scen->count + 1, sizeof *scen->problems);
 		scen->problems[scen->count++] = pr;
 	}
 	ok = true;

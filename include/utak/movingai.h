@@ -24,14 +24,14 @@
 #define MOVINGAI_ERROR_SIZE 512
 
 typedef struct MovingAiProblem {
-	int32_t bucket;		/* the file's difficulty bucket */
-	int32_t sx, sy, gx, gy;	/* start and goal cells, map coordinates */
-	double optimum;		/* the published optimal 8-connected length */
-	int32_t line;		/* line of the .scen file, for messages */
+	int32_t bucket;         /* the file's difficulty bucket */
+	int32_t sx, sy, gx, gy; /* start and goal cells, map coordinates */
+	double optimum;         /* the published optimal 8-connected length */
+	int32_t line;           /* line of the .scen file, for messages */
 } MovingAiProblem;
 
 typedef struct MovingAiScen {
-	int32_t map_w, map_h;	/* the map size every problem names */
+	int32_t map_w, map_h; /* the map size every problem names */
 	int count, cap;
 	MovingAiProblem *problems;
 } MovingAiScen;
@@ -44,7 +44,7 @@ bool movingai_read_map(const char *path, Grid *grid, char err[MOVINGAI_ERROR_SIZ
  * grid: the width and height fields equal the grid's, the cells are inside it and
  * free. The caller frees scen with movingai_scen_free. */
 bool movingai_read_scen(const char *path, const Grid *grid, MovingAiScen *scen,
-			char err[MOVINGAI_ERROR_SIZE]);
+                        char err[MOVINGAI_ERROR_SIZE]);
 void movingai_scen_free(MovingAiScen *scen);
 
 /* movingai_tolerance(optimum): how far a computed length may be from the published

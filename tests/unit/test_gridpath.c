@@ -79,7 +79,8 @@ static int check_path(const Grid *g, const Path *p, int sx, int sy, int gx, int 
 		int dx = x - (int)floor(p->pts[i - 1].x), dy = y - (int)floor(p->pts[i - 1].y);
 		if (abs(dx) > 1 || abs(dy) > 1 || (dx == 0 && dy == 0))
 			return 0;
-		if (dx != 0 && dy != 0 && (!grid_free_at(g, x - dx, y) || !grid_free_at(g, x, y - dy)))
+		if (dx != 0 && dy != 0 &&
+		    (!grid_free_at(g, x - dx, y) || !grid_free_at(g, x, y - dy)))
 			return 0;
 	}
 	return fabs(path_length(p) - len) < 1e-9;
@@ -107,8 +108,10 @@ TEST_CASE(gridpath_equals_dijkstra_on_random_grids)
 		GridPathSearch s;
 		gridpath_init(&s, &g);
 		for (int q = 0; q < 8; q++) {
-			int sx = (int)(rng_next() % (uint32_t)w), sy = (int)(rng_next() % (uint32_t)h);
-			int gx = (int)(rng_next() % (uint32_t)w), gy = (int)(rng_next() % (uint32_t)h);
+			int sx = (int)(rng_next() % (uint32_t)w),
+			    sy = (int)(rng_next() % (uint32_t)h);
+			int gx = (int)(rng_next() % (uint32_t)w),
+			    gy = (int)(rng_next() % (uint32_t)h);
 			double len;
 			GridPathStatus st = gridpath_find(&s, sx, sy, gx, gy, &p, &len);
 			if (!grid_free_at(&g, sx, sy) || !grid_free_at(&g, gx, gy)) {
@@ -161,14 +164,15 @@ TEST_CASE(gridpath_refuses_bad_endpoints)
 TEST_CASE(gridpath_matches_published_optima)
 {
 	static const char *const maps[] = {"room-32-32-4", "maze-32-32-2", "random-32-32-10",
-					   "warehouse-10-20-10-2-1"};
+	                                   "warehouse-10-20-10-2-1"};
 	char err[MOVINGAI_ERROR_SIZE], mpath[256], spath[256];
 	Path p;
 	path_init(&p);
 	for (size_t m = 0; m < sizeof maps / sizeof maps[0]; m++) {
 		snprintf(mpath, sizeof mpath, "../shared/data/movingai/maps/mapf/%s.map", maps[m]);
 		snprintf(spath, sizeof spath,
-			 "../shared/data/movingai/scenarios/mapf/scen-even/%s-even-1.scen", maps[m]);
+		         "../shared/data/movingai/scenarios/mapf/scen-even/%s-even-1.scen",
+		         maps[m]);
 		Grid g;
 		MovingAiScen scen;
 		bool ok = movingai_read_map(mpath, &g, err);
@@ -186,7 +190,7 @@ TEST_CASE(gridpath_matches_published_optima)
 			const MovingAiProblem *pr = &scen.problems[i];
 			double len;
 			TEST_CHECK(gridpath_find(&s, pr->sx, pr->sy, pr->gx, pr->gy, &p, &len) ==
-				   GRIDPATH_FOUND);
+			           GRIDPATH_FOUND);
 			TEST_NEAR(len, pr->optimum, movingai_tolerance(pr->optimum));
 			TEST_CHECK(check_path(&g, &p, pr->sx, pr->sy, pr->gx, pr->gy, len));
 		}
