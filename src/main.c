@@ -10,7 +10,10 @@
 #include <string.h>
 
 #include "utak/act.h"
+#include "utak/eye.h"
 #include "utak/motion.h"
+#include "utak/regions.h"
+#include "utak/retina.h"
 #include "utak/table.h"
 #include "utak/util.h"
 #include "utak/world.h"
@@ -22,7 +25,8 @@ static const char usage_text[] =
 	"Runs Utak, the robot of Rosenberg and Jenkin's TABLETOP, in the world file WORLD.\n"
 	"\n"
 	"  --act SCRIPT   carry out motor commands, e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
-	"  --dump LIST    print dumps after the commands, comma-separated: table\n"
+	"  --dump LIST    print dumps after the commands, comma-separated:\n"
+	"                 table, retina, touch, regions\n"
 	"  -o FILE        write the final state as a world file\n"
 	"  -h, --help     this text\n"
 	"  -V, --version  the version\n"
@@ -32,14 +36,58 @@ static const char usage_text[] =
 typedef struct Body {
 	World world;
 	Table table;
+	Impression sensed;	/* what the senses gave after the last halt */
 } Body;
 
-typedef void DumpFn(const Body *b, FILE *f);
+/* The mind: the controller side. It is handed impressions and the commands it
+ * gave, nothing else (impression.h). */
+typedef struct Mind {
+	Impression impression;	/* the last impression received */
+	Regions regions;	/* its regions and their reading (paper 3.4.1-3.4.2) */
+} Mind;
 
-static void dump_table(const Body *b, FILE *f)
+static void mind_start(Mind *m, const Impression *first)
 {
+	m->impression = *first;
+	regions_find(&m->regions, first);
+}
+
+static void mind_perceive(Mind *m, const MotorCommand *cmd, const Impression *imp)
+{
+	(void)cmd;
+	m->impression = *imp;
+	regions_find(&m->regions, imp);
+}
+
+typedef struct Session {
+	Body body;
+	Mind mind;
+} Session;
+
+typedef void DumpFn(const Session *s, FILE *f);
+
+static void dump_table(const Session *s, FILE *f)
+{
+	const Body *b = &s->body;
 	fprintf(f, "TABLE %d x %d, north at the top:\n", (int)b->table.w, (int)b->table.h);
 	table_dump(&b->table, &b->world, f);
+}
+
+static void dump_retina(const Session *s, FILE *f)
+{
+	fputs("retina, ahead at the top:\n", f);
+	eye_print_picture(s->body.sensed.level, f);
+}
+
+static void dump_touch(const Session *s, FILE *f)
+{
+	fputs("touch, ahead at the top:\n", f);
+	retina_print_touch(&s->body.sensed, f);
+}
+
+static void dump_regions(const Session *s, FILE *f)
+{
+	regions_dump(&s->mind.regions, f);
 }
 
 static const struct {
@@ -47,6 +95,9 @@ static const struct {
 	DumpFn *fn;
 } dumps[] = {
 	{"table", dump_table},
+	{"retina", dump_retina},
+	{"touch", dump_touch},
+	{"regions", dump_regions},
 };
 enum { DUMP_COUNT = sizeof dumps / sizeof dumps[0] };
 
@@ -139,9 +190,10 @@ int main(int argc, char **argv)
 		fprintf(stderr, "utak: %s\n", d.msg);
 		return 2;
 	}
-	Body body;
-	if (world_read(&body.world, path, &d) || table_build(&body.table, &body.world, &d)) {
-		world_free(&body.world); /* safe on a world that failed to read */
+	static Session session; /* the world model is large: off the stack */
+	Body *body = &session.body;
+	if (world_read(&body->world, path, &d) || table_build(&body->table, &body->world, &d)) {
+		world_free(&body->world); /* safe on a world that failed to read */
 		fprintf(stderr, "utak: %s\n", d.msg);
 		free(cmds);
 		return 2;
@@ -149,16 +201,21 @@ int main(int argc, char **argv)
 	if (!any_dump)
 		want[0] = true; /* the TABLE */
 
+	retina_sense(&body->world, &body->table, &body->sensed);
+	mind_start(&session.mind, &body->sensed);
 	for (int i = 0; i < ncmds; i++) {
 		MotorOutcome out;
-		motion_execute(&body.world, &body.table, &cmds[i], &out);
+		motion_execute(&body->world, &body->table, &cmds[i], &out);
 		printf("act %d: ", i + 1);
 		motion_print(&cmds[i], &out, stdout);
 		putchar('\n');
+		/* Utak halts: a fresh impression, and the mind perceives it (paper 3.1 steps 10-11). */
+		retina_sense(&body->world, &body->table, &body->sensed);
+		mind_perceive(&session.mind, &cmds[i], &body->sensed);
 	}
 	for (int i = 0; i < DUMP_COUNT; i++)
 		if (want[i])
-			dumps[i].fn(&body, stdout);
+			dumps[i].fn(&session, stdout);
 
 	int status = 0;
 	if (outfile) {
@@ -167,7 +224,7 @@ int main(int argc, char **argv)
 			fprintf(stderr, "utak: %s: cannot write\n", outfile);
 			status = 2;
 		} else {
-			world_write(&body.world, f);
+			world_write(&body->world, f);
 			if (fclose(f) != 0) {
 				fprintf(stderr, "utak: %s: cannot write\n", outfile);
 				status = 2;
@@ -175,7 +232,7 @@ int main(int argc, char **argv)
 		}
 	}
 	free(cmds);
-	table_free(&body.table);
-	world_free(&body.world);
+	table_free(&body->table);
+	world_free(&body->world);
 	return status;
 }
