@@ -17,6 +17,7 @@
 #include "utak/table.h"
 #include "utak/util.h"
 #include "utak/world.h"
+#include "utak/worldmodel.h"
 
 #define UTAK_VERSION "0.1.0"
 
@@ -26,7 +27,7 @@ static const char usage_text[] =
 	"\n"
 	"  --act SCRIPT   carry out motor commands, e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
 	"  --dump LIST    print dumps after the commands, comma-separated:\n"
-	"                 table, retina, touch, regions\n"
+	"                 table, retina, touch, regions, model\n"
 	"  -o FILE        write the final state as a world file\n"
 	"  -h, --help     this text\n"
 	"  -V, --version  the version\n"
@@ -44,19 +45,24 @@ typedef struct Body {
 typedef struct Mind {
 	Impression impression;	/* the last impression received */
 	Regions regions;	/* its regions and their reading (paper 3.4.1-3.4.2) */
+	WorldModel model;	/* what Utak believes (paper 3.3-3.5) */
 } Mind;
 
+/* mind_start: initialization steps 1-5 of paper 3.1. */
 static void mind_start(Mind *m, const Impression *first)
 {
+	worldmodel_init(&m->model);
 	m->impression = *first;
 	regions_find(&m->regions, first);
+	worldmodel_accommodate_first(&m->model, first);
 }
 
+/* mind_perceive: step 11 of paper 3.1, after the command it gave. */
 static void mind_perceive(Mind *m, const MotorCommand *cmd, const Impression *imp)
 {
-	(void)cmd;
 	m->impression = *imp;
 	regions_find(&m->regions, imp);
+	worldmodel_accommodate(&m->model, cmd, imp);
 }
 
 typedef struct Session {
@@ -90,6 +96,11 @@ static void dump_regions(const Session *s, FILE *f)
 	regions_dump(&s->mind.regions, f);
 }
 
+static void dump_model(const Session *s, FILE *f)
+{
+	worldmodel_dump(&s->mind.model, f);
+}
+
 static const struct {
 	const char *name;
 	DumpFn *fn;
@@ -98,6 +109,7 @@ static const struct {
 	{"retina", dump_retina},
 	{"touch", dump_touch},
 	{"regions", dump_regions},
+	{"model", dump_model},
 };
 enum { DUMP_COUNT = sizeof dumps / sizeof dumps[0] };
 
@@ -232,6 +244,7 @@ int main(int argc, char **argv)
 		}
 	}
 	free(cmds);
+	worldmodel_free(&session.mind.model);
 	table_free(&body->table);
 	world_free(&body->world);
 	return status;
