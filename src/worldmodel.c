@@ -554,9 +554,64 @@ static void wm_finish_node(WorldModel *m, int32_t node, const WmMap *map, const 
 	n->relation = n->rect.lo;
 }
 
+/* What an object node was at the last derivation, to keep its number. */
+typedef struct WmPrevious {
+	int32_t ident;
+	Box rect;	/* $floor frame; for a held object, relative to Utak's point */
+	bool held, used;
+} WmPrevious;
+
+static double wm_overlap(Box a, Box b)
+{
+	double w = fmin(a.hi.x, b.hi.x) - fmax(a.lo.x, b.lo.x), h = fmin(a.hi.y, b.hi.y) - fmax(a.lo.y, b.lo.y);
+	return w > 0 && h > 0 ? w * h : 0;
+}
+
+static Box wm_box_shift(Box b, Vec2 d)
+{
+	return (Box){vec2_add(b.lo, d), vec2_add(b.hi, d)};
+}
+
+/* wm_name_object(m, node, prev, nprev): gives the node the number of the previous
+ * object whose rectangle overlaps its own most (a held object compared relative
+ * to Utak, since it moved with him), or a new number. */
+static void wm_name_object(WorldModel *m, int32_t node, WmPrevious *prev, int32_t nprev, Vec2 prev_utak)
+{
+	ModelNode *n = &m->node[node];
+	int32_t best = -1;
+	double best_area = 0;
+	for (int32_t k = 0; k < nprev; k++) {
+		if (prev[k].used)
+			continue;
+		Box mine = n->rect, theirs = prev[k].rect;
+		if (prev[k].held && n->held) {
+			mine = wm_box_shift(mine, vec2_scale(m->utak, -1));
+			theirs = wm_box_shift(theirs, vec2_scale(prev_utak, -1));
+		}
+		double area = wm_overlap(mine, theirs);
+		if (area > best_area) {
+			best_area = area;
+			best = k;
+		}
+	}
+	if (best >= 0) {
+		prev[best].used = true;
+		n->ident = prev[best].ident;
+	} else {
+		n->ident = ++m->next_ident;
+	}
+	snprintf(n->name, sizeof n->name, "object%d", (int)n->ident);
+}
+
 /* wm_derive(m): the tree of paper 3.3 from the evidence grid. */
 static void wm_derive(WorldModel *m)
 {
+	int32_t nprev = 0;
+	WmPrevious *prev = util_alloc((size_t)m->node_count + 1, sizeof *prev);
+	Vec2 prev_utak = m->node_count > 0 ? m->node[0].relation : m->utak;
+	for (int32_t id = 0; id < m->node_count; id++)
+		if (m->node[id].kind == NODE_OBJECT)
+			prev[nprev++] = (WmPrevious){m->node[id].ident, m->node[id].rect, m->node[id].held, false};
 	m->node_count = m->ring_count = m->vertex_count = 0;
 	int32_t org = wm_new_node(m, NODE_ORG, "$org", -1);
 	m->node[org].relation = m->utak;
@@ -591,6 +646,7 @@ static void wm_derive(WorldModel *m)
 			wm_push_vertex(m, (ModelVertex){corner[k], 0, 0, BELIEF_UNKNOWN});
 		m->ring_count = 1;
 		f->ring_count = 1;
+		free(prev);
 		return;
 	}
 	WmMap map = {x0 - 1, y0 - 1, x1 - x0 + 3, y1 - y0 + 3, NULL};
@@ -609,7 +665,7 @@ static void wm_derive(WorldModel *m)
 	/* Objects: 4-connected occupied sets, every neighbour floor. */
 	int32_t *label = util_alloc(area, sizeof *label);
 	int32_t *stack = util_alloc(area, sizeof *stack);
-	int32_t objects = 0, labels = 0;
+	int32_t labels = 0;
 	for (int32_t row = map.h - 1; row >= 0; row--) /* north first: the order of the map */
 		for (int32_t col = 0; col < map.w; col++) {
 			int64_t k0 = (int64_t)row * map.w + col;
@@ -642,12 +698,11 @@ static void wm_derive(WorldModel *m)
 			}
 			if (!isolated)
 				continue; /* verge, or an object partly out of sight: $floor's boundary */
-			char name[24];
-			snprintf(name, sizeof name, "object%d", (int)++objects);
-			int32_t node = wm_new_node(m, NODE_OBJECT, name, held ? org : floor_node);
+			int32_t node = wm_new_node(m, NODE_OBJECT, "object", held ? org : floor_node);
 			wm_trace(m, &map, in, node);
 			wm_finish_node(m, node, &map, in);
 			m->node[node].held = held;
+			wm_name_object(m, node, prev, nprev, prev_utak);
 			if (held) /* relation to $org: offset from Utak's point */
 				m->node[node].relation = vec2_sub(m->node[node].rect.lo, m->utak);
 		}
@@ -655,6 +710,7 @@ static void wm_derive(WorldModel *m)
 	free(label);
 	free(in);
 	free(map.belief);
+	free(prev);
 }
 
 /* ---- accommodation ---------------------------------------------------------------- */
@@ -702,9 +758,11 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		to = vec2_add(from, vec2(cmd->dx, cmd->dy));
 		break;
 	case MOTOR_PUSH:
-		to = vec2_add(from, vec2(cmd->dx, cmd->dy));
-		if (m->holding)
+		/* Without a held object the simulator refuses a push (paper 2.2). */
+		if (m->holding) {
+			to = vec2_add(from, vec2(cmd->dx, cmd->dy));
 			wm_carry(m, from, to, 0);
+		}
 		break;
 	case MOTOR_TURN:
 		if (m->holding)

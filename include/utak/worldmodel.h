@@ -112,7 +112,9 @@ typedef struct ModelRing {
 
 typedef struct ModelNode {
 	NodeKind kind;
-	char name[24];		/* "$org", "$floor", "object1", ... */
+	char name[24];		/* "$org", "$floor", "object<ident>" */
+	int32_t ident;		/* an object's number, kept from impression to impression
+				   while its squares overlap; 0 for $org and $floor */
 	int32_t parent, first_son, next_sibling;	/* -1 none */
 	Vec2 relation;		/* origin of this node's frame in its parent's frame */
 	Box rect;		/* containing rectangle, $floor frame */
@@ -141,6 +143,7 @@ typedef struct WorldModel {
 	int32_t impressions;	/* impressions accommodated */
 	Impression last;	/* the last impression (its touch names a held object) */
 	Accommodation report;
+	int32_t next_ident;	/* the last object number given */
 	/* The held object: its squares as offsets from Utak's square. */
 	bool holding;
 	int32_t held_count;

@@ -319,6 +319,45 @@ TEST_CASE(worldmodel_halted_move_found)
 	sim_free(&s);
 }
 
+/* Grasp, push and turn: the held object hangs under $org and moves with Utak; its
+ * believed outline follows the true one. */
+TEST_CASE(worldmodel_held_object_follows)
+{
+	Sim s;
+	const char *text = read_file("worlds/room.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	const char *steps[] = {"move -10 9", "grasp", "push 0 -3", "push 4 0", "turn 90", "release"};
+	int32_t ident = -1;
+	for (int k = 0; k < 6; k++) {
+		sim_step(&s, &m, steps[k]);
+		if (k == 0)
+			continue;
+		/* The node of the square: the object nearest Utak. */
+		int32_t held = -1;
+		for (int32_t id = 0; id < m.node_count; id++)
+			if (m.node[id].kind == NODE_OBJECT && m.node[id].squares == 16)
+				held = id;
+		TEST_CHECK(held >= 0);
+		TEST_CHECK(m.node[held].held == (k < 5) && m.node[held].parent == (k < 5 ? 0 : 1));
+		if (ident < 0)
+			ident = m.node[held].ident;
+		TEST_CHECK(m.node[held].ident == ident);
+		Polygon believed;
+		TEST_CHECK(ring_polygon(&s, &m, &m.ring[m.node[held].first_ring], &believed));
+		TEST_CHECK(one_sided(&believed, &s.w.objects[0].shape) <= OUTLINE_TOLERANCE);
+		TEST_CHECK(one_sided(&s.w.objects[0].shape, &believed) <= OUTLINE_TOLERANCE);
+		TEST_CHECK(!m.report.corrected);
+	}
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
 int main(void)
 {
 	TEST_RUN(worldmodel_default_model);
@@ -326,5 +365,6 @@ int main(void)
 	TEST_RUN(worldmodel_room_walk_outlines);
 	TEST_RUN(worldmodel_disparity_corrects_wrong_belief);
 	TEST_RUN(worldmodel_halted_move_found);
+	TEST_RUN(worldmodel_held_object_follows);
 	return TEST_EXIT();
 }
