@@ -90,7 +90,7 @@ void regions_find(Regions *r, const Impression *imp)
 		}
 	}
 	/* Who surrounds whom: one flood per region. */
-	static bool surrounds[RETINA_CELLS][RETINA_CELLS]; /* [a][b]; static: 25 KB off the stack */
+	bool surrounds[RETINA_CELLS][RETINA_CELLS]; /* [a][b]: region a surrounds region b */
 	memset(surrounds, 0, sizeof surrounds);
 	for (int32_t a = 0; a < r->count; a++) {
 		bool reached[RETINA_CELLS], seen_b[RETINA_CELLS];

@@ -350,7 +350,7 @@ static void wm_find_held(WorldModel *m, const Impression *imp)
  * object turning by deg about it. */
 static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 {
-	static Evidence saved[WORLDMODEL_HELD_MAX];
+	Evidence saved[WORLDMODEL_HELD_MAX]; /* 12 KB */
 	int32_t fx = (int32_t)floor(from.x), fy = (int32_t)floor(from.y);
 	double c, s;
 	geom_cos_sin(deg, &c, &s);
