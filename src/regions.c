@@ -149,6 +149,8 @@ void regions_dump(const Regions *r, FILE *f)
 		fprintf(f, "region %c %s %s cells %d squares %d%s", regions_letter(id),
 			g->nonzero ? "nonzero" : "zero", regions_reading_name(g->reading), (int)g->cells,
 			(int)g->squares, g->on_border ? " border" : "");
+		if (g->has_utak && g->reading != REGION_UTAK)
+			fputs(" with-utak", f);
 		if (g->surrounded_by >= 0)
 			fprintf(f, " in %c", regions_letter(g->surrounded_by));
 		fputs(":", f);

@@ -175,8 +175,10 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 		for (int dy = 0; dy < c.size; dy++)
 			for (int dx = 0; dx < c.size; dx++) {
 				int64_t k = wm_index(sx + c.ox + dx, sy + c.oy + dy);
-				if (k < 0)
-					continue; /* outside the window: not recorded */
+				if (k < 0) {
+					m->clipped = true; /* outside the window: not recorded, but said */
+					continue;
+				}
 				Evidence *e = &m->grid[k];
 				sq[count++] = e;
 				all_known &= e->res != WORLDMODEL_UNSEEN;
@@ -665,7 +667,7 @@ static void wm_derive(WorldModel *m)
 	/* Objects: 4-connected occupied sets, every neighbour floor. */
 	int32_t *label = util_alloc(area, sizeof *label);
 	int32_t *stack = util_alloc(area, sizeof *stack);
-	int32_t labels = 0;
+	int32_t labels = 0, uncertain = 0;
 	for (int32_t row = map.h - 1; row >= 0; row--) /* north first: the order of the map */
 		for (int32_t col = 0; col < map.w; col++) {
 			int64_t k0 = (int64_t)row * map.w + col;
@@ -696,8 +698,14 @@ static void wm_derive(WorldModel *m)
 					}
 				}
 			}
-			if (!isolated)
-				continue; /* verge, or an object partly out of sight: $floor's boundary */
+			if (!isolated) {
+				/* Verge, or an object partly out of sight: recorded as uncertain. */
+				char name[24];
+				snprintf(name, sizeof name, "uncertain%d", (int)++uncertain);
+				int32_t node = wm_new_node(m, NODE_UNCERTAIN, name, floor_node);
+				wm_finish_node(m, node, &map, in);
+				continue;
+			}
 			int32_t node = wm_new_node(m, NODE_OBJECT, "object", held ? org : floor_node);
 			wm_trace(m, &map, in, node);
 			wm_finish_node(m, node, &map, in);
@@ -862,7 +870,8 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 	      f);
 	fprintf(f, "impressions %d; Utak believed at (%.2f, %.2f)", (int)m->impressions, m->utak.x,
 		m->utak.y);
-	fprintf(f, "%s\n", m->holding ? ", holding an object" : "");
+	fprintf(f, "%s%s\n", m->holding ? ", holding an object" : "",
+		m->clipped ? "; WARNING: impressions reached past the evidence window and were cut" : "");
 	if (m->impressions > 1)
 		fprintf(f,
 			"last accommodation: predicted (%.2f, %.2f), mismatch %.3f over %d cells; %s (%.2f, "

@@ -63,9 +63,13 @@ bool regions_surrounds(const Regions *r, int32_t a, int32_t b);
 
 const char *regions_reading_name(RegionReading reading);
 
-/* regions_dump(r, f): one line per region (id, zero/non-zero, reading, cells,
- * squares, border, surrounding region, the cell list), then a 32 x 32 picture of
- * region ids as letters a-z, A-Z, then '#' for ids past 51. */
+/* regions_dump(r, f): a header line "regions N, floor regions F", then one line per
+ * region:
+ *   region ID zero|nonzero READING cells C squares S [border] [with-utak] [in ID]: CELL...
+ * (border: it has a cell on the field's border; with-utak: it holds Utak's cell
+ * but is more than it; in ID: the zero region surrounding it), then the 32 x 32
+ * picture of region ids, in the layout of the retina picture, ids written as
+ * letters a-z, A-Z, and '#' past 51. */
 void regions_dump(const Regions *r, FILE *f);
 
 #endif

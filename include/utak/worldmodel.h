@@ -16,7 +16,8 @@
  *    intermediate > periphery; 0 = never seen, i.e. unknown), and a confidence.
  *    This is what every impression updates.
  * 2. The tree of paper 3.3, derived from the grid after every impression: $org
- *    (Utak) -> $floor (the floorspace) -> one node per isolated object. A node has
+ *    (Utak) -> $floor (the floorspace) -> one node per isolated object, and one
+ *    NODE_UNCERTAIN per occupied set the rules cannot yet read. A node has
  *    its containing rectangle, its boundary as circular lists of straight segments
  *    (rings: outer boundaries counter-clockwise, holes clockwise), its relation
  *    to its parent (the offset of its frame's origin in the parent's frame: the
@@ -94,7 +95,11 @@ typedef struct Evidence {
 	uint8_t seen;	/* observations at that resolution (saturates at 255) */
 } Evidence;
 
-typedef enum NodeKind { NODE_ORG, NODE_FLOOR, NODE_OBJECT } NodeKind;
+/* NODE_UNCERTAIN: an occupied set that touches the unseen, so that neither rule of
+ * paper 3.4.2 decides it: the verge, or an object not yet seen whole. It has a
+ * rectangle, squares and confidence but no rings: its sides facing the floor are
+ * already $floor's boundary (segments "beyond occupied"). */
+typedef enum NodeKind { NODE_ORG, NODE_FLOOR, NODE_OBJECT, NODE_UNCERTAIN } NodeKind;
 
 /* One corner of a boundary, and the straight segment from it to the next. */
 typedef struct ModelVertex {
@@ -144,6 +149,7 @@ typedef struct WorldModel {
 	Impression last;	/* the last impression (its touch names a held object) */
 	Accommodation report;
 	int32_t next_ident;	/* the last object number given */
+	bool clipped;		/* some impression reached past the evidence window */
 	/* The held object: its squares as offsets from Utak's square. */
 	bool holding;
 	int32_t held_count;
