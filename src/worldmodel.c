@@ -56,6 +56,8 @@ enum { WM_HALF = WORLDMODEL_SIDE / 2 };
 /* A coarse cell agreeing with the finer knowledge inside it raises that knowledge's
  * confidence by this share of what is missing. */
 #define WM_AGREE_GROWTH 0.05
+/* The weight of the block measure (wm_block_error) beside the cell measure. */
+#define WM_BLOCK_WEIGHT 0.5
 /* Steps along the commanded line when listing candidate positions, squares. */
 #define WM_PATH_STEP 0.5
 
@@ -268,13 +270,66 @@ double worldmodel_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impr
 	return n ? sum / n : 1.0;
 }
 
+/* wm_floor_div(a, b): a / b rounded down, for negative a too. */
+static int32_t wm_floor_div(int32_t a, int32_t b)
+{
+	return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+/* wm_block_error(m, x, y, imp): the other half of the disparity measure. Cells
+ * the model knows only coarsely are not predicted (worldmodel_predict), yet they
+ * still say something: how many occupied squares a block holds. Here the
+ * impression, taken as Utak on (x, y), is summed over the model's 4 x 4 blocks
+ * (aligned to multiples of 4, as the first impression's peripheral cells are)
+ * and compared with the model's sums: the mean |difference| / 16 over the blocks
+ * inside the field and wholly seen, not counting the block under Utak. */
+static double wm_block_error(const WorldModel *m, int32_t x, int32_t y, const Impression *imp)
+{
+	enum { BLOCK = 4 };
+	double sum = 0;
+	int32_t n = 0;
+	int32_t bx0 = wm_floor_div(x - EYE_HALF + BLOCK - 1, BLOCK) * BLOCK;
+	int32_t by0 = wm_floor_div(y - EYE_HALF + BLOCK - 1, BLOCK) * BLOCK;
+	for (int32_t by = by0; by + BLOCK <= y + EYE_HALF; by += BLOCK)
+		for (int32_t bx = bx0; bx + BLOCK <= x + EYE_HALF; bx += BLOCK) {
+			if (x >= bx && x < bx + BLOCK && y >= by && y < by + BLOCK)
+				continue;
+			double seen = 0, model = 0;
+			bool known = true;
+			for (int32_t dy = 0; dy < BLOCK && known; dy++)
+				for (int32_t dx = 0; dx < BLOCK; dx++) {
+					int64_t k = wm_index(bx + dx, by + dy);
+					if (k < 0 || m->grid[k].res == WORLDMODEL_UNSEEN) {
+						known = false;
+						break;
+					}
+					model += m->grid[k].p;
+					int32_t i = eye_cell_at(bx + dx - x, by + dy - y);
+					EyeCell c = eye_cell(i);
+					seen += wm_level_count(imp->level[i], c.size * c.size) / (c.size * c.size);
+				}
+			if (known) {
+				sum += fabs(seen - model) / (BLOCK * BLOCK);
+				n++;
+			}
+		}
+	return n ? sum / n : 0;
+}
+
+/* wm_score(m, x, y, imp, &compared): the disparity measure of a position. */
+static double wm_score(const WorldModel *m, int32_t x, int32_t y, const Impression *imp, int32_t *compared)
+{
+	double mm = worldmodel_mismatch(m, x, y, imp, compared);
+	return mm + WM_BLOCK_WEIGHT * wm_block_error(m, x, y, imp);
+}
+
 /* wm_try(m, x, y, ...): scores candidate square (x, y) and keeps it when better. */
 typedef struct WmSearch {
 	const WorldModel *m;
 	const Impression *imp;
 	int32_t px, py;		/* the predicted square */
 	int32_t bx, by;		/* the best so far */
-	double best_key, best_mismatch;
+	double best_key, best_score;
 } WmSearch;
 
 static void wm_try(WmSearch *s, int32_t x, int32_t y)
@@ -285,13 +340,13 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	if (!(x == ux && y == uy) && e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF)
 		return; /* Utak cannot stand inside what is surely an object */
 	int32_t compared;
-	double mm = worldmodel_mismatch(s->m, x, y, s->imp, &compared);
+	double score = wm_score(s->m, x, y, s->imp, &compared);
 	if (compared < WORLDMODEL_MIN_COMPARED)
 		return;
-	double key = mm + WM_DISTANCE_COST * hypot(x - s->px, y - s->py);
+	double key = score + WM_DISTANCE_COST * hypot(x - s->px, y - s->py);
 	if (key < s->best_key) {
 		s->best_key = key;
-		s->best_mismatch = mm;
+		s->best_score = score;
 		s->bx = x;
 		s->by = y;
 	}
@@ -790,7 +845,7 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	rep->predicted = to;
 	int32_t px, py;
 	worldmodel_utak_square(m, &px, &py);
-	rep->mismatch = worldmodel_mismatch(m, px, py, imp, &rep->compared);
+	rep->mismatch = wm_score(m, px, py, imp, &rep->compared);
 
 	/* Disparity: the positions near the prediction and along the commanded line. */
 	WmSearch s = {m, imp, px, py, px, py, INFINITY, rep->mismatch};
@@ -808,10 +863,10 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 			for (int32_t dx = -1; dx <= 1; dx++)
 				wm_try(&s, qx + dx, qy + dy);
 	}
-	rep->best_mismatch = s.best_mismatch;
+	rep->best_mismatch = s.best_score;
 	if ((s.bx != px || s.by != py) &&
 	    (rep->compared < WORLDMODEL_MIN_COMPARED ||
-	     s.best_mismatch + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch)) {
+	     s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch)) {
 		rep->corrected = true;
 		m->utak = vec2_add(m->utak, vec2(s.bx - px, s.by - py));
 	} else {

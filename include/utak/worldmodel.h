@@ -81,8 +81,11 @@ enum { WORLDMODEL_UNSEEN = 0, WORLDMODEL_RES_PERIPHERAL = 1, WORLDMODEL_RES_INTE
 #define WORLDMODEL_CONF_DECAY 0.7
 #define WORLDMODEL_CONF_FORGET 0.2
 /* Disparity (paper 3.5): a position's mismatch is the mean over the compared
- * cells of |predicted level - actual level| / 7. The predicted position stands
- * unless another explains the impression better by WORLDMODEL_DISPARITY_MARGIN. */
+ * cells of |predicted level - actual level| / 7 (worldmodel_mismatch), plus half
+ * the mean difference of occupied shares over the model's 4 x 4 blocks (so that
+ * what the model knows only coarsely still counts). The predicted position
+ * stands unless another explains the impression better by
+ * WORLDMODEL_DISPARITY_MARGIN. */
 #define WORLDMODEL_DISPARITY_MARGIN 0.01
 
 typedef enum Belief { BELIEF_UNKNOWN, BELIEF_FLOOR, BELIEF_OCCUPIED } Belief;
@@ -133,8 +136,8 @@ typedef struct ModelNode {
 typedef struct Accommodation {
 	Vec2 predicted;		/* where the command should have put Utak */
 	Vec2 believed;		/* where he is now believed to be */
-	double mismatch;	/* at the predicted position; -1 when nothing compared */
-	double best_mismatch;	/* at the believed position */
+	double mismatch;	/* disparity measure at the predicted position */
+	double best_mismatch;	/* ... at the believed position */
 	int32_t compared;	/* cells compared at the predicted position */
 	bool corrected;		/* the disparity search moved the belief */
 	int32_t new_squares;	/* squares seen for the first time */

@@ -358,6 +358,29 @@ TEST_CASE(worldmodel_held_object_follows)
 	sim_free(&s);
 }
 
+/* A long move that halts against a wall seen only in the periphery: the belief
+ * ends within one square. */
+TEST_CASE(worldmodel_halted_at_coarse_wall)
+{
+	Sim s;
+	const char *text = read_file("worlds/tworooms.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	sim_step(&s, &m, "move 0 25");
+	int32_t bx, by, tx, ty;
+	worldmodel_utak_square(&m, &bx, &by);
+	table_square_of(s.w.utak, &tx, &ty);
+	Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
+	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 1 && fabs(b.y - (ty + 0.5)) <= 1);
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
 int main(void)
 {
 	TEST_RUN(worldmodel_default_model);
@@ -366,5 +389,6 @@ int main(void)
 	TEST_RUN(worldmodel_disparity_corrects_wrong_belief);
 	TEST_RUN(worldmodel_halted_move_found);
 	TEST_RUN(worldmodel_held_object_follows);
+	TEST_RUN(worldmodel_halted_at_coarse_wall);
 	return TEST_EXIT();
 }
