@@ -21,7 +21,7 @@
 static struct {
 	bool built;
 	EyeCell cell[RETINA_CELLS];
-	int32_t cover[RETINA_FIELD * RETINA_FIELD];	/* picture row-major: row * 32 + col */
+	int32_t cover[RETINA_FIELD * RETINA_FIELD]; /* picture row-major: row * 32 + col */
 	int32_t neighbour[RETINA_CELLS][EYE_MAX_NEIGHBOURS];
 	int32_t neighbour_count[RETINA_CELLS];
 } eye;
@@ -81,7 +81,8 @@ static void eye_build(void)
 	}
 	for (int32_t i = 0; i < RETINA_CELLS; i++)
 		for (int32_t j = 0; j < RETINA_CELLS; j++)
-			if (eye_touching(eye.cell[i], eye.cell[j]) || eye_touching(eye.cell[j], eye.cell[i])) {
+			if (eye_touching(eye.cell[i], eye.cell[j]) ||
+			    eye_touching(eye.cell[j], eye.cell[i])) {
 				assert(eye.neighbour_count[i] < EYE_MAX_NEIGHBOURS);
 				eye.neighbour[i][eye.neighbour_count[i]++] = j;
 			}
@@ -171,7 +172,8 @@ bool eye_validate(char *why, size_t size)
 		zone_count[eye.cell[i].zone]++;
 	if (zone_count[0] != RETINA_FOVEA || zone_count[1] != RETINA_INTERMEDIATE ||
 	    zone_count[2] != RETINA_PERIPHERAL) {
-		snprintf(why, size, "zones hold %d/%d/%d cells", zone_count[0], zone_count[1], zone_count[2]);
+		snprintf(why, size, "zones hold %d/%d/%d cells", zone_count[0], zone_count[1],
+		         zone_count[2]);
 		return false;
 	}
 	int32_t covered[RETINA_FIELD * RETINA_FIELD] = {0};
@@ -193,7 +195,8 @@ bool eye_validate(char *why, size_t size)
 	}
 	for (int32_t k = 0; k < RETINA_FIELD * RETINA_FIELD; k++)
 		if (covered[k] != 1) {
-			snprintf(why, size, "picture square %d is covered %d times", (int)k, (int)covered[k]);
+			snprintf(why, size, "picture square %d is covered %d times", (int)k,
+			         (int)covered[k]);
 			return false;
 		}
 	for (int32_t i = 0; i < RETINA_CELLS; i++)

@@ -105,7 +105,8 @@ void regions_find(Regions *r, const Impression *imp)
 	}
 	for (int32_t b = 0; b < r->count; b++)
 		for (int32_t a = 0; a < r->count; a++)
-			if (surrounds[a][b] && !r->region[a].nonzero && r->region[b].surrounded_by < 0)
+			if (surrounds[a][b] && !r->region[a].nonzero &&
+			    r->region[b].surrounded_by < 0)
 				r->region[b].surrounded_by = a;
 	for (int32_t b = 0; b < r->count; b++) {
 		Region *g = &r->region[b];
@@ -143,12 +144,12 @@ static char regions_letter(int32_t id)
 void regions_dump(const Regions *r, FILE *f)
 {
 	fprintf(f, "regions %d, floor regions %d%s\n", (int)r->count, (int)r->floor_regions,
-		r->floor_regions > 1 ? " (connected beyond view)" : "");
+	        r->floor_regions > 1 ? " (connected beyond view)" : "");
 	for (int32_t id = 0; id < r->count; id++) {
 		const Region *g = &r->region[id];
 		fprintf(f, "region %c %s %s cells %d squares %d%s", regions_letter(id),
-			g->nonzero ? "nonzero" : "zero", regions_reading_name(g->reading), (int)g->cells,
-			(int)g->squares, g->on_border ? " border" : "");
+		        g->nonzero ? "nonzero" : "zero", regions_reading_name(g->reading),
+		        (int)g->cells, (int)g->squares, g->on_border ? " border" : "");
 		if (g->has_utak && g->reading != REGION_UTAK)
 			fputs(" with-utak", f);
 		if (g->surrounded_by >= 0)

@@ -1,4 +1,5 @@
-/* retina.c - the retinal and tactile impression computed from the TABLE (paper 2.2). SIMULATOR SIDE.
+/* retina.c - the retinal and tactile impression computed from the TABLE (paper 2.2). SIMULATOR
+ * SIDE.
  *
  * ALGORITHM (paper 2.2): "superimpose the array of retinal fields on TABLE, centred
  * on Utak's digital representation, and compute the graylevels directly from the
@@ -55,7 +56,10 @@ void retina_print_touch(const Impression *imp, FILE *f)
 	const char *tc = imp->touch;
 	/* Impression.touch order: ahead, ahead-right, right, behind-right, behind,
 	 * behind-left, left, ahead-left. */
-	fprintf(f, "%c%c%c\n%c@%c\n%c%c%c\n", tc[7], tc[0], tc[1], tc[6], tc[2], tc[5], tc[4], tc[3]);
-	fprintf(f, "order ahead,ahead-right,right,behind-right,behind,behind-left,left,ahead-left: %.8s\n",
-		tc);
+	fprintf(f, "%c%c%c\n%c@%c\n%c%c%c\n", tc[7], tc[0], tc[1], tc[6], tc[2], tc[5], tc[4],
+	        tc[3]);
+	fprintf(
+	    f,
+	    "order ahead,ahead-right,right,behind-right,behind,behind-left,left,ahead-left: %.8s\n",
+	    tc);
 }

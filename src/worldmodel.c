@@ -62,8 +62,8 @@ enum { WM_HALF = WORLDMODEL_SIDE / 2 };
 #define WM_PATH_STEP 0.5
 
 /* Own-frame offsets of the touch squares, in Impression.touch order. */
-static const int8_t wm_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},	 {1, 0},  {1, -1},
-							{0, -1}, {-1, -1}, {-1, 0}, {-1, 1}};
+static const int8_t wm_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0},  {1, -1},
+                                                       {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}};
 
 /* ---- the evidence grid --------------------------------------------------------- */
 
@@ -107,15 +107,15 @@ void worldmodel_set_position(WorldModel *m, Vec2 p)
 static double wm_base(int res)
 {
 	static const double base[4] = {0, WORLDMODEL_CONF_PERIPHERAL, WORLDMODEL_CONF_INTERMEDIATE,
-				       WORLDMODEL_CONF_FOVEA};
+	                               WORLDMODEL_CONF_FOVEA};
 	return base[res];
 }
 
 static int wm_res_of_zone(int zone)
 {
-	return zone == EYE_FOVEA ? WORLDMODEL_RES_FOVEA
+	return zone == EYE_FOVEA          ? WORLDMODEL_RES_FOVEA
 	       : zone == EYE_INTERMEDIATE ? WORLDMODEL_RES_INTERMEDIATE
-					  : WORLDMODEL_RES_PERIPHERAL;
+	                                  : WORLDMODEL_RES_PERIPHERAL;
 }
 
 /* wm_level_count(level, n): how many of a cell's n squares a level says are
@@ -178,7 +178,8 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 			for (int dx = 0; dx < c.size; dx++) {
 				int64_t k = wm_index(sx + c.ox + dx, sy + c.oy + dy);
 				if (k < 0) {
-					m->clipped = true; /* outside the window: not recorded, but said */
+					m->clipped =
+					    true; /* outside the window: not recorded, but said */
 					continue;
 				}
 				Evidence *e = &m->grid[k];
@@ -197,7 +198,8 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 				if (e->res <= res)
 					continue;
 				if (agree) {
-					e->conf = (float)(e->conf + (1 - e->conf) * WM_AGREE_GROWTH);
+					e->conf =
+					    (float)(e->conf + (1 - e->conf) * WM_AGREE_GROWTH);
 				} else {
 					e->conf = (float)(e->conf * WORLDMODEL_CONF_DECAY);
 					if (e->conf < WORLDMODEL_CONF_FORGET)
@@ -226,7 +228,7 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 /* ---- prediction and disparity ---------------------------------------------------- */
 
 void worldmodel_predict(const WorldModel *m, int32_t x, int32_t y, Impression *pred,
-			bool known[RETINA_CELLS])
+                        bool known[RETINA_CELLS])
 {
 	int32_t utak_cell = eye_cell_at(0, 0);
 	memset(pred->touch, '?', sizeof pred->touch);
@@ -248,13 +250,13 @@ void worldmodel_predict(const WorldModel *m, int32_t x, int32_t y, Impression *p
 			}
 		known[i] = ok;
 		pred->level[i] = (uint8_t)(i == utak_cell ? EYE_MAX_LEVEL
-						: ok ? eye_level(occupied, c.size * c.size)
-						     : 0);
+		                           : ok           ? eye_level(occupied, c.size * c.size)
+		                                          : 0);
 	}
 }
 
 double worldmodel_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impression *imp,
-			   int32_t *compared)
+                           int32_t *compared)
 {
 	Impression pred;
 	bool known[RETINA_CELLS];
@@ -306,7 +308,8 @@ static double wm_block_error(const WorldModel *m, int32_t x, int32_t y, const Im
 					model += m->grid[k].p;
 					int32_t i = eye_cell_at(bx + dx - x, by + dy - y);
 					EyeCell c = eye_cell(i);
-					seen += wm_level_count(imp->level[i], c.size * c.size) / (c.size * c.size);
+					seen += wm_level_count(imp->level[i], c.size * c.size) /
+					        (c.size * c.size);
 				}
 			if (known) {
 				sum += fabs(seen - model) / (BLOCK * BLOCK);
@@ -317,7 +320,8 @@ static double wm_block_error(const WorldModel *m, int32_t x, int32_t y, const Im
 }
 
 /* wm_score(m, x, y, imp, &compared): the disparity measure of a position. */
-static double wm_score(const WorldModel *m, int32_t x, int32_t y, const Impression *imp, int32_t *compared)
+static double wm_score(const WorldModel *m, int32_t x, int32_t y, const Impression *imp,
+                       int32_t *compared)
 {
 	double mm = worldmodel_mismatch(m, x, y, imp, compared);
 	return mm + WM_BLOCK_WEIGHT * wm_block_error(m, x, y, imp);
@@ -327,8 +331,8 @@ static double wm_score(const WorldModel *m, int32_t x, int32_t y, const Impressi
 typedef struct WmSearch {
 	const WorldModel *m;
 	const Impression *imp;
-	int32_t px, py;		/* the predicted square */
-	int32_t bx, by;		/* the best so far */
+	int32_t px, py; /* the predicted square */
+	int32_t bx, by; /* the best so far */
 	double best_key, best_score;
 } WmSearch;
 
@@ -337,7 +341,8 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	int32_t ux, uy;
 	worldmodel_utak_square(s->m, &ux, &uy);
 	Evidence e = worldmodel_evidence(s->m, x, y);
-	if (!(x == ux && y == uy) && e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF)
+	if (!(x == ux && y == uy) && e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f &&
+	    e.conf >= WM_BLOCKED_CONF)
 		return; /* Utak cannot stand inside what is surely an object */
 	int32_t compared;
 	double score = wm_score(s->m, x, y, s->imp, &compared);
@@ -434,8 +439,8 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 
 /* The seen window, one square of margin round it, as a scratch belief map. */
 typedef struct WmMap {
-	int32_t x0, y0, w, h;	/* lower-left square and size */
-	uint8_t *belief;	/* Belief, row-major */
+	int32_t x0, y0, w, h; /* lower-left square and size */
+	uint8_t *belief;      /* Belief, row-major */
 } WmMap;
 
 static uint8_t wm_map_at(const WmMap *map, int32_t x, int32_t y)
@@ -488,7 +493,7 @@ static const int8_t wm_inside[4][2] = {{0, 0}, {-1, 0}, {-1, -1}, {0, -1}};
 static const int8_t wm_outside[4][2] = {{0, -1}, {0, 0}, {-1, 0}, {-1, -1}};
 
 typedef struct WmEdge {
-	int32_t x, y;	/* start vertex, $floor frame */
+	int32_t x, y; /* start vertex, $floor frame */
 	uint8_t dir, beyond;
 	float conf;
 } WmEdge;
@@ -498,7 +503,8 @@ typedef struct WmEdge {
 static void wm_trace(WorldModel *m, const WmMap *map, const uint8_t *in, int32_t node)
 {
 	int32_t vw = map->w + 1, vh = map->h + 1;
-	uint8_t *out = util_alloc((size_t)vw * (size_t)vh, 1); /* bit d: an edge leaves in direction d */
+	uint8_t *out =
+	    util_alloc((size_t)vw * (size_t)vh, 1); /* bit d: an edge leaves in direction d */
 	int32_t edge_total = 0;
 	for (int32_t y = 0; y < map->h; y++)
 		for (int32_t x = 0; x < map->w; x++) {
@@ -506,11 +512,12 @@ static void wm_trace(WorldModel *m, const WmMap *map, const uint8_t *in, int32_t
 				continue;
 			for (int d = 0; d < 4; d++) {
 				/* the neighbour across side d: the outside square of that edge */
-				static const int8_t across[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+				static const int8_t across[4][2] = {
+				    {0, -1}, {1, 0}, {0, 1}, {-1, 0}};
 				static const int8_t start[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 				int32_t nx = x + across[d][0], ny = y + across[d][1];
 				bool inside = nx >= 0 && ny >= 0 && nx < map->w && ny < map->h &&
-					      in[(int64_t)ny * map->w + nx];
+				              in[(int64_t)ny * map->w + nx];
 				if (inside)
 					continue;
 				int32_t vx = x + start[d][0], vy = y + start[d][1];
@@ -525,19 +532,21 @@ static void wm_trace(WorldModel *m, const WmMap *map, const uint8_t *in, int32_t
 				continue;
 			int32_t n = 0, vx = v0 % vw, vy = v0 / vw, d = d0;
 			for (;;) {
-				out[(int64_t)vy * vw + vx] &= (uint8_t)~(1u << d);
+				out[(int64_t)vy * vw + vx] &= (uint8_t) ~(1u << d);
 				int32_t gx = vx + map->x0, gy = vy + map->y0; /* $floor frame */
 				int32_t ox = gx + wm_outside[d][0], oy = gy + wm_outside[d][1];
 				int32_t ix = gx + wm_inside[d][0], iy = gy + wm_inside[d][1];
-				edges[n++] = (WmEdge){gx, gy, (uint8_t)d, wm_map_at(map, ox, oy),
-						      (wm_conf_at(m, ix, iy) + wm_conf_at(m, ox, oy)) / 2};
+				edges[n++] =
+				    (WmEdge){gx, gy, (uint8_t)d, wm_map_at(map, ox, oy),
+				             (wm_conf_at(m, ix, iy) + wm_conf_at(m, ox, oy)) / 2};
 				vx += wm_step[d][0];
 				vy += wm_step[d][1];
 				uint8_t bits = out[(int64_t)vy * vw + vx];
 				if (vy * vw + vx == v0)
 					bits |= (uint8_t)(1u << d0);
 				int next = -1;
-				for (int t = 1; t >= -1 && next < 0; t--) { /* left, straight, right */
+				for (int t = 1; t >= -1 && next < 0;
+				     t--) { /* left, straight, right */
 					int cand = (d + t + 4) % 4;
 					if (bits & (1u << cand))
 						next = cand;
@@ -553,14 +562,16 @@ static void wm_trace(WorldModel *m, const WmMap *map, const uint8_t *in, int32_t
 				s0++;
 			if (s0 == n)
 				continue; /* cannot happen for a closed loop of unit edges */
-			m->ring = util_grow(m->ring, &m->ring_cap, m->ring_count + 1, sizeof *m->ring);
+			m->ring =
+			    util_grow(m->ring, &m->ring_cap, m->ring_count + 1, sizeof *m->ring);
 			ModelRing *r = &m->ring[m->ring_count++];
 			r->first = m->vertex_count;
 			r->count = 0;
 			double area2 = 0;
 			for (int32_t j = 0; j < n; j++) {
 				const WmEdge *e = &edges[(s0 + j) % n];
-				area2 += (double)e->x * wm_step[e->dir][1] - (double)e->y * wm_step[e->dir][0];
+				area2 += (double)e->x * wm_step[e->dir][1] -
+				         (double)e->y * wm_step[e->dir][0];
 			}
 			for (int32_t j = 0; j < n;) {
 				const WmEdge *e = &edges[(s0 + j) % n];
@@ -571,10 +582,13 @@ static void wm_trace(WorldModel *m, const WmMap *map, const uint8_t *in, int32_t
 					conf += edges[(s0 + j + len) % n].conf;
 					len++;
 				}
-				float corner = (wm_conf_at(m, e->x, e->y) + wm_conf_at(m, e->x - 1, e->y) +
-						wm_conf_at(m, e->x, e->y - 1) + wm_conf_at(m, e->x - 1, e->y - 1)) / 4;
-				wm_push_vertex(m, (ModelVertex){vec2(e->x, e->y), corner, (float)(conf / len),
-								e->beyond});
+				float corner =
+				    (wm_conf_at(m, e->x, e->y) + wm_conf_at(m, e->x - 1, e->y) +
+				     wm_conf_at(m, e->x, e->y - 1) +
+				     wm_conf_at(m, e->x - 1, e->y - 1)) /
+				    4;
+				wm_push_vertex(m, (ModelVertex){vec2(e->x, e->y), corner,
+				                                (float)(conf / len), e->beyond});
 				r->count++;
 				j += len;
 			}
@@ -614,13 +628,14 @@ static void wm_finish_node(WorldModel *m, int32_t node, const WmMap *map, const 
 /* What an object node was at the last derivation, to keep its number. */
 typedef struct WmPrevious {
 	int32_t ident;
-	Box rect;	/* $floor frame; for a held object, relative to Utak's point */
+	Box rect; /* $floor frame; for a held object, relative to Utak's point */
 	bool held, used;
 } WmPrevious;
 
 static double wm_overlap(Box a, Box b)
 {
-	double w = fmin(a.hi.x, b.hi.x) - fmax(a.lo.x, b.lo.x), h = fmin(a.hi.y, b.hi.y) - fmax(a.lo.y, b.lo.y);
+	double w = fmin(a.hi.x, b.hi.x) - fmax(a.lo.x, b.lo.x),
+	       h = fmin(a.hi.y, b.hi.y) - fmax(a.lo.y, b.lo.y);
 	return w > 0 && h > 0 ? w * h : 0;
 }
 
@@ -632,7 +647,8 @@ static Box wm_box_shift(Box b, Vec2 d)
 /* wm_name_object(m, node, prev, nprev): gives the node the number of the previous
  * object whose rectangle overlaps its own most (a held object compared relative
  * to Utak, since it moved with him), or a new number. */
-static void wm_name_object(WorldModel *m, int32_t node, WmPrevious *prev, int32_t nprev, Vec2 prev_utak)
+static void wm_name_object(WorldModel *m, int32_t node, WmPrevious *prev, int32_t nprev,
+                           Vec2 prev_utak)
 {
 	ModelNode *n = &m->node[node];
 	int32_t best = -1;
@@ -668,7 +684,8 @@ static void wm_derive(WorldModel *m)
 	Vec2 prev_utak = m->node_count > 0 ? m->node[0].relation : m->utak;
 	for (int32_t id = 0; id < m->node_count; id++)
 		if (m->node[id].kind == NODE_OBJECT)
-			prev[nprev++] = (WmPrevious){m->node[id].ident, m->node[id].rect, m->node[id].held, false};
+			prev[nprev++] = (WmPrevious){m->node[id].ident, m->node[id].rect,
+			                             m->node[id].held, false};
 	m->node_count = m->ring_count = m->vertex_count = 0;
 	int32_t org = wm_new_node(m, NODE_ORG, "$org", -1);
 	m->node[org].relation = m->utak;
@@ -698,7 +715,7 @@ static void wm_derive(WorldModel *m)
 		m->ring = util_grow(m->ring, &m->ring_cap, 1, sizeof *m->ring);
 		m->ring[0] = (ModelRing){0, 4, false};
 		Vec2 corner[4] = {f->rect.lo, vec2(f->rect.hi.x, f->rect.lo.y), f->rect.hi,
-				  vec2(f->rect.lo.x, f->rect.hi.y)};
+		                  vec2(f->rect.lo.x, f->rect.hi.y)};
 		for (int k = 0; k < 4; k++)
 			wm_push_vertex(m, (ModelVertex){corner[k], 0, 0, BELIEF_UNKNOWN});
 		m->ring_count = 1;
@@ -711,7 +728,8 @@ static void wm_derive(WorldModel *m)
 	map.belief = util_alloc(area, 1);
 	for (int32_t y = 0; y < map.h; y++)
 		for (int32_t x = 0; x < map.w; x++)
-			map.belief[(int64_t)y * map.w + x] = (uint8_t)worldmodel_belief(m, x + map.x0, y + map.y0);
+			map.belief[(int64_t)y * map.w + x] =
+			    (uint8_t)worldmodel_belief(m, x + map.x0, y + map.y0);
 	uint8_t *in = util_alloc(area, 1);
 	for (size_t k = 0; k < area; k++)
 		in[k] = map.belief[k] == BELIEF_FLOOR;
@@ -738,7 +756,8 @@ static void wm_derive(WorldModel *m)
 				int32_t x = k % map.w, y = k / map.w;
 				in[k] = 1;
 				for (int32_t j = 0; j < m->held_count && m->holding; j++)
-					held |= x + map.x0 == ux + m->held_dx[j] && y + map.y0 == uy + m->held_dy[j];
+					held |= x + map.x0 == ux + m->held_dx[j] &&
+					        y + map.y0 == uy + m->held_dy[j];
 				for (int d = 0; d < 4; d++) {
 					int32_t nx = x + wm_step[d][0], ny = y + wm_step[d][1];
 					uint8_t b = wm_map_at(&map, nx + map.x0, ny + map.y0);
@@ -754,14 +773,16 @@ static void wm_derive(WorldModel *m)
 				}
 			}
 			if (!isolated) {
-				/* Verge, or an object partly out of sight: recorded as uncertain. */
+				/* Verge, or an object partly out of sight: recorded as uncertain.
+				 */
 				char name[24];
 				snprintf(name, sizeof name, "uncertain%d", (int)++uncertain);
 				int32_t node = wm_new_node(m, NODE_UNCERTAIN, name, floor_node);
 				wm_finish_node(m, node, &map, in);
 				continue;
 			}
-			int32_t node = wm_new_node(m, NODE_OBJECT, "object", held ? org : floor_node);
+			int32_t node =
+			    wm_new_node(m, NODE_OBJECT, "object", held ? org : floor_node);
 			wm_trace(m, &map, in, node);
 			wm_finish_node(m, node, &map, in);
 			m->node[node].held = held;
@@ -898,18 +919,21 @@ static void wm_dump_node(const WorldModel *m, int32_t id, int depth, FILE *f)
 	if (n->kind == NODE_ORG) {
 		fprintf(f, " at (%.2f, %.2f)\n", n->relation.x, n->relation.y);
 	} else {
-		fprintf(f, "%s relation (%.2f, %.2f) rect (%.2f, %.2f)-(%.2f, %.2f) squares %d conf %.2f\n",
-			n->held ? " held" : "", n->relation.x, n->relation.y, n->rect.lo.x, n->rect.lo.y,
-			n->rect.hi.x, n->rect.hi.y, (int)n->squares, n->conf);
+		fprintf(f,
+		        "%s relation (%.2f, %.2f) rect (%.2f, %.2f)-(%.2f, %.2f) squares %d conf "
+		        "%.2f\n",
+		        n->held ? " held" : "", n->relation.x, n->relation.y, n->rect.lo.x,
+		        n->rect.lo.y, n->rect.hi.x, n->rect.hi.y, (int)n->squares, n->conf);
 		for (int32_t k = 0; k < n->ring_count; k++) {
 			const ModelRing *r = &m->ring[n->first_ring + k];
-			fprintf(f, "%*s%s %d vertices:\n", 2 * depth + 2, "", r->hole ? "hole" : "boundary",
-				(int)r->count);
+			fprintf(f, "%*s%s %d vertices:\n", 2 * depth + 2, "",
+			        r->hole ? "hole" : "boundary", (int)r->count);
 			for (int32_t j = 0; j < r->count; j++) {
 				const ModelVertex *v = &m->vertex[r->first + j];
-				fprintf(f, "%*s(%.2f, %.2f) conf %.2f, segment conf %.2f beyond %s\n",
-					2 * depth + 4, "", v->p.x, v->p.y, v->conf, v->seg_conf,
-					wm_belief_name(v->beyond));
+				fprintf(f,
+				        "%*s(%.2f, %.2f) conf %.2f, segment conf %.2f beyond %s\n",
+				        2 * depth + 4, "", v->p.x, v->p.y, v->conf, v->seg_conf,
+				        wm_belief_name(v->beyond));
 			}
 		}
 	}
@@ -924,16 +948,19 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 	      "unit one square, origin the lower-left corner of his first square\n",
 	      f);
 	fprintf(f, "impressions %d; Utak believed at (%.2f, %.2f)", (int)m->impressions, m->utak.x,
-		m->utak.y);
+	        m->utak.y);
 	fprintf(f, "%s%s\n", m->holding ? ", holding an object" : "",
-		m->clipped ? "; WARNING: impressions reached past the evidence window and were cut" : "");
+	        m->clipped ? "; WARNING: impressions reached past the evidence window and were cut"
+	                   : "");
 	if (m->impressions > 1)
 		fprintf(f,
-			"last accommodation: predicted (%.2f, %.2f), mismatch %.3f over %d cells; %s (%.2f, "
-			"%.2f), mismatch %.3f; %d squares new, %d seen finer\n",
-			a->predicted.x, a->predicted.y, a->mismatch, (int)a->compared,
-			a->corrected ? "disparity: corrected to" : "kept", a->believed.x, a->believed.y,
-			a->best_mismatch, (int)a->new_squares, (int)a->finer_squares);
+		        "last accommodation: predicted (%.2f, %.2f), mismatch %.3f over %d cells; "
+		        "%s (%.2f, "
+		        "%.2f), mismatch %.3f; %d squares new, %d seen finer\n",
+		        a->predicted.x, a->predicted.y, a->mismatch, (int)a->compared,
+		        a->corrected ? "disparity: corrected to" : "kept", a->believed.x,
+		        a->believed.y, a->best_mismatch, (int)a->new_squares,
+		        (int)a->finer_squares);
 	wm_dump_node(m, 0, 0, f);
 	/* The belief map of the seen window. */
 	int32_t ux, uy, x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
@@ -950,13 +977,18 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 		fputs("belief map: nothing seen\n", f);
 		return;
 	}
-	fprintf(f, "belief map x %d..%d, y %d..%d, north row first ('.' floor, '#' occupied, '?' unknown, "
-		   "'@' Utak):\n",
-		(int)x0, (int)x1, (int)y0, (int)y1);
+	fprintf(
+	    f,
+	    "belief map x %d..%d, y %d..%d, north row first ('.' floor, '#' occupied, '?' unknown, "
+	    "'@' Utak):\n",
+	    (int)x0, (int)x1, (int)y0, (int)y1);
 	for (int32_t y = y1; y >= y0; y--) {
 		for (int32_t x = x0; x <= x1; x++) {
 			Belief b = worldmodel_belief(m, x, y);
-			fputc(x == ux && y == uy ? '@' : b == BELIEF_FLOOR ? '.' : b == BELIEF_OCCUPIED ? '#' : '?',
+			fputc(x == ux && y == uy     ? '@'
+			      : b == BELIEF_FLOOR    ? '.'
+			      : b == BELIEF_OCCUPIED ? '#'
+			                             : '?',
 			      f);
 		}
 		fputc('\n', f);
@@ -974,8 +1006,8 @@ bool worldmodel_validate(const WorldModel *m, char *why, size_t size)
 		const ModelNode *n = &m->node[id];
 		for (int32_t s = n->first_son; s >= 0; s = m->node[s].next_sibling)
 			if (m->node[s].parent != id) {
-				snprintf(why, size, "node %d lists son %d whose parent is %d", (int)id, (int)s,
-					 (int)m->node[s].parent);
+				snprintf(why, size, "node %d lists son %d whose parent is %d",
+				         (int)id, (int)s, (int)m->node[s].parent);
 				return false;
 			}
 		if (id > 0 && n->parent < 0) {
@@ -985,17 +1017,21 @@ bool worldmodel_validate(const WorldModel *m, char *why, size_t size)
 		for (int32_t k = 0; k < n->ring_count; k++) {
 			const ModelRing *r = &m->ring[n->first_ring + k];
 			if (r->count < 4) {
-				snprintf(why, size, "node %d ring %d has %d vertices", (int)id, (int)k, (int)r->count);
+				snprintf(why, size, "node %d ring %d has %d vertices", (int)id,
+				         (int)k, (int)r->count);
 				return false;
 			}
 			for (int32_t j = 0; j < r->count; j++) {
-				Vec2 a = m->vertex[r->first + j].p, b = m->vertex[r->first + (j + 1) % r->count].p;
+				Vec2 a = m->vertex[r->first + j].p,
+				     b = m->vertex[r->first + (j + 1) % r->count].p;
 				bool axis = (a.x == b.x) != (a.y == b.y);
-				bool inside = a.x >= n->rect.lo.x && a.x <= n->rect.hi.x && a.y >= n->rect.lo.y &&
-					      a.y <= n->rect.hi.y;
+				bool inside = a.x >= n->rect.lo.x && a.x <= n->rect.hi.x &&
+				              a.y >= n->rect.lo.y && a.y <= n->rect.hi.y;
 				if (!axis || !inside) {
-					snprintf(why, size, "node %d ring %d vertex %d: %s", (int)id, (int)k, (int)j,
-						 axis ? "outside the rectangle" : "segment not axis-aligned");
+					snprintf(why, size, "node %d ring %d vertex %d: %s",
+					         (int)id, (int)k, (int)j,
+					         axis ? "outside the rectangle"
+					              : "segment not axis-aligned");
 					return false;
 				}
 			}

@@ -38,10 +38,11 @@
 #include "utak/impression.h"
 
 enum {
-	EYE_HALF = RETINA_FIELD / 2,	/* offsets run from -EYE_HALF to EYE_HALF - 1 */
-	EYE_FOVEA_HALF = 4,		/* the fovea: offsets -4..3 */
-	EYE_INTERMEDIATE_HALF = 8,	/* fovea and intermediate zone: offsets -8..7 */
-	EYE_MAX_NEIGHBOURS = 12,	/* a 4 x 4 cell next to 2 x 2 cells: 2 per side, at most 8; margin */
+	EYE_HALF = RETINA_FIELD / 2, /* offsets run from -EYE_HALF to EYE_HALF - 1 */
+	EYE_FOVEA_HALF = 4,          /* the fovea: offsets -4..3 */
+	EYE_INTERMEDIATE_HALF = 8,   /* fovea and intermediate zone: offsets -8..7 */
+	EYE_MAX_NEIGHBOURS =
+	    12, /* a 4 x 4 cell next to 2 x 2 cells: 2 per side, at most 8; margin */
 	EYE_MAX_LEVEL = RETINA_LEVELS - 1,
 };
 
@@ -49,9 +50,9 @@ typedef enum EyeZone { EYE_FOVEA, EYE_INTERMEDIATE, EYE_PERIPHERAL } EyeZone;
 
 /* One retinal cell: its lower-left square and its side, in Utak's frame. */
 typedef struct EyeCell {
-	int8_t ox, oy;	/* offset of the lower-left square from Utak's square */
-	int8_t size;	/* side in squares: 1, 2 or 4 */
-	int8_t zone;	/* an EyeZone */
+	int8_t ox, oy; /* offset of the lower-left square from Utak's square */
+	int8_t size;   /* side in squares: 1, 2 or 4 */
+	int8_t zone;   /* an EyeZone */
 } EyeCell;
 
 /* eye_cell(i): cell i, 0 <= i < RETINA_CELLS, in the order above. */

@@ -36,21 +36,21 @@ typedef enum RegionReading {
 } RegionReading;
 
 typedef struct Region {
-	bool nonzero;		/* the cells' levels are all > 0 (else all 0) */
+	bool nonzero; /* the cells' levels are all > 0 (else all 0) */
 	RegionReading reading;
-	int32_t cells;		/* number of cells */
-	int32_t squares;	/* squares covered by its cells */
-	int32_t first_cell;	/* its lowest-numbered cell: regions are numbered by it */
-	bool on_border;		/* has a cell on the field's outer border */
-	bool has_utak;		/* holds Utak's own cell, offset (0, 0) */
-	int32_t surrounded_by;	/* the zero region surrounding it, -1 none */
+	int32_t cells;         /* number of cells */
+	int32_t squares;       /* squares covered by its cells */
+	int32_t first_cell;    /* its lowest-numbered cell: regions are numbered by it */
+	bool on_border;        /* has a cell on the field's outer border */
+	bool has_utak;         /* holds Utak's own cell, offset (0, 0) */
+	int32_t surrounded_by; /* the zero region surrounding it, -1 none */
 } Region;
 
 typedef struct Regions {
 	int32_t count;
-	int32_t region_of[RETINA_CELLS];	/* cell -> region index */
+	int32_t region_of[RETINA_CELLS]; /* cell -> region index */
 	Region region[RETINA_CELLS];
-	int32_t floor_regions;			/* zero regions: > 1 means connected beyond view */
+	int32_t floor_regions; /* zero regions: > 1 means connected beyond view */
 } Regions;
 
 /* regions_find(r, imp): finds the regions of imp and reads them. Regions are

@@ -61,17 +61,21 @@
 #include "utak/impression.h"
 
 enum {
-	WORLDMODEL_SIDE = 512,		/* evidence window: squares -256..255 on both axes;
-					   larger than any room Utak is given, and 3 MB */
-	WORLDMODEL_DEFAULT_FLOOR = 32,	/* the default $floor: a square of the eye's field */
-	WORLDMODEL_DISPARITY_RADIUS = 3,/* positions tried around the predicted one */
-	WORLDMODEL_MIN_COMPARED = 24,	/* cells a position must be judged on to count */
-	WORLDMODEL_HELD_MAX = 1024,	/* squares of a held object the model can carry */
+	WORLDMODEL_SIDE = 512,           /* evidence window: squares -256..255 on both axes;
+	                                    larger than any room Utak is given, and 3 MB */
+	WORLDMODEL_DEFAULT_FLOOR = 32,   /* the default $floor: a square of the eye's field */
+	WORLDMODEL_DISPARITY_RADIUS = 3, /* positions tried around the predicted one */
+	WORLDMODEL_MIN_COMPARED = 24,    /* cells a position must be judged on to count */
+	WORLDMODEL_HELD_MAX = 1024,      /* squares of a held object the model can carry */
 };
 
 /* Resolutions, finest last, so that a larger number is finer. */
-enum { WORLDMODEL_UNSEEN = 0, WORLDMODEL_RES_PERIPHERAL = 1, WORLDMODEL_RES_INTERMEDIATE = 2,
-       WORLDMODEL_RES_FOVEA = 3 };
+enum {
+	WORLDMODEL_UNSEEN = 0,
+	WORLDMODEL_RES_PERIPHERAL = 1,
+	WORLDMODEL_RES_INTERMEDIATE = 2,
+	WORLDMODEL_RES_FOVEA = 3
+};
 
 #define WORLDMODEL_CONF_FOVEA 0.9
 #define WORLDMODEL_CONF_INTERMEDIATE 0.6
@@ -92,10 +96,10 @@ typedef enum Belief { BELIEF_UNKNOWN, BELIEF_FLOOR, BELIEF_OCCUPIED } Belief;
 
 /* What the eye has said about one square. */
 typedef struct Evidence {
-	float p;	/* estimated probability that the square is occupied */
-	float conf;	/* confidence in p, 0..1 */
-	uint8_t res;	/* finest resolution seen at, WORLDMODEL_UNSEEN if never */
-	uint8_t seen;	/* observations at that resolution (saturates at 255) */
+	float p;      /* estimated probability that the square is occupied */
+	float conf;   /* confidence in p, 0..1 */
+	uint8_t res;  /* finest resolution seen at, WORLDMODEL_UNSEEN if never */
+	uint8_t seen; /* observations at that resolution (saturates at 255) */
 } Evidence;
 
 /* NODE_UNCERTAIN: an occupied set that touches the unseen, so that neither rule of
@@ -106,53 +110,53 @@ typedef enum NodeKind { NODE_ORG, NODE_FLOOR, NODE_OBJECT, NODE_UNCERTAIN } Node
 
 /* One corner of a boundary, and the straight segment from it to the next. */
 typedef struct ModelVertex {
-	Vec2 p;		/* $floor frame */
-	float conf;	/* of the vertex */
-	float seg_conf;	/* of the segment to the next vertex */
-	uint8_t beyond;	/* a Belief: what lies outside the segment (occupied or unknown) */
+	Vec2 p;         /* $floor frame */
+	float conf;     /* of the vertex */
+	float seg_conf; /* of the segment to the next vertex */
+	uint8_t beyond; /* a Belief: what lies outside the segment (occupied or unknown) */
 } ModelVertex;
 
 /* A closed boundary: vertices first..first+count-1, circular. */
 typedef struct ModelRing {
 	int32_t first, count;
-	bool hole;	/* clockwise: a hole in the node's shape */
+	bool hole; /* clockwise: a hole in the node's shape */
 } ModelRing;
 
 typedef struct ModelNode {
 	NodeKind kind;
-	char name[24];		/* "$org", "$floor", "object<ident>" */
-	int32_t ident;		/* an object's number, kept from impression to impression
-				   while its squares overlap; 0 for $org and $floor */
-	int32_t parent, first_son, next_sibling;	/* -1 none */
-	Vec2 relation;		/* origin of this node's frame in its parent's frame */
-	Box rect;		/* containing rectangle, $floor frame */
+	char name[24]; /* "$org", "$floor", "object<ident>" */
+	int32_t ident; /* an object's number, kept from impression to impression
+	                  while its squares overlap; 0 for $org and $floor */
+	int32_t parent, first_son, next_sibling; /* -1 none */
+	Vec2 relation; /* origin of this node's frame in its parent's frame */
+	Box rect;      /* containing rectangle, $floor frame */
 	int32_t first_ring, ring_count;
-	int32_t squares;	/* squares believed part of the shape */
+	int32_t squares; /* squares believed part of the shape */
 	float conf;
-	bool held;		/* an object Utak holds */
+	bool held; /* an object Utak holds */
 } ModelNode;
 
 /* What the last accommodation did, for the trace and the dump. */
 typedef struct Accommodation {
-	Vec2 predicted;		/* where the command should have put Utak */
-	Vec2 believed;		/* where he is now believed to be */
-	double mismatch;	/* disparity measure at the predicted position */
-	double best_mismatch;	/* ... at the believed position */
-	int32_t compared;	/* cells compared at the predicted position */
-	bool corrected;		/* the disparity search moved the belief */
-	int32_t new_squares;	/* squares seen for the first time */
-	int32_t finer_squares;	/* squares seen at a finer resolution than before */
+	Vec2 predicted;        /* where the command should have put Utak */
+	Vec2 believed;         /* where he is now believed to be */
+	double mismatch;       /* disparity measure at the predicted position */
+	double best_mismatch;  /* ... at the believed position */
+	int32_t compared;      /* cells compared at the predicted position */
+	bool corrected;        /* the disparity search moved the belief */
+	int32_t new_squares;   /* squares seen for the first time */
+	int32_t finer_squares; /* squares seen at a finer resolution than before */
 } Accommodation;
 
 typedef struct WorldModel {
-	Evidence *grid;		/* WORLDMODEL_SIDE^2, row-major, square (x, y) at
-				   (y + SIDE/2) * SIDE + (x + SIDE/2) */
-	Vec2 utak;		/* believed position of Utak's point, $floor frame */
-	int32_t impressions;	/* impressions accommodated */
-	Impression last;	/* the last impression (its touch names a held object) */
+	Evidence *grid;      /* WORLDMODEL_SIDE^2, row-major, square (x, y) at
+	                        (y + SIDE/2) * SIDE + (x + SIDE/2) */
+	Vec2 utak;           /* believed position of Utak's point, $floor frame */
+	int32_t impressions; /* impressions accommodated */
+	Impression last;     /* the last impression (its touch names a held object) */
 	Accommodation report;
-	int32_t next_ident;	/* the last object number given */
-	bool clipped;		/* some impression reached past the evidence window */
+	int32_t next_ident; /* the last object number given */
+	bool clipped;       /* some impression reached past the evidence window */
 	/* The held object: its squares as offsets from Utak's square. */
 	bool holding;
 	int32_t held_count;
@@ -193,12 +197,12 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
  * Utak on square (x, y); known[i] false where cell i's squares are not all known
  * and definite (then pred->level[i] is 0). Touch is not predicted ('?'). */
 void worldmodel_predict(const WorldModel *m, int32_t x, int32_t y, Impression *pred,
-			bool known[RETINA_CELLS]);
+                        bool known[RETINA_CELLS]);
 
 /* worldmodel_mismatch(m, x, y, imp, &compared): mean |predicted - actual| / 7 over
  * the cells known to the model with Utak on (x, y); 1 when none are. */
 double worldmodel_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impression *imp,
-			   int32_t *compared);
+                           int32_t *compared);
 
 /* worldmodel_belief(m, x, y): what the model believes of square (x, y). */
 Belief worldmodel_belief(const WorldModel *m, int32_t x, int32_t y);

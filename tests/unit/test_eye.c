@@ -24,7 +24,9 @@ TEST_CASE(eye_layout_counts_and_cover)
 	for (int i = 0; i < RETINA_CELLS; i++) {
 		EyeCell c = eye_cell(i);
 		zone[c.zone]++;
-		TEST_CHECK(c.size == (c.zone == EYE_FOVEA ? 1 : c.zone == EYE_INTERMEDIATE ? 2 : 4));
+		TEST_CHECK(c.size == (c.zone == EYE_FOVEA          ? 1
+		                      : c.zone == EYE_INTERMEDIATE ? 2
+		                                                   : 4));
 	}
 	TEST_CHECK(zone[0] == 64 && zone[1] == 48 && zone[2] == 48);
 	/* Every square of the 32 x 32 field is covered exactly once, by a cell that holds it. */
@@ -33,11 +35,13 @@ TEST_CASE(eye_layout_counts_and_cover)
 			int n = 0;
 			for (int i = 0; i < RETINA_CELLS; i++) {
 				EyeCell c = eye_cell(i);
-				n += ox >= c.ox && ox < c.ox + c.size && oy >= c.oy && oy < c.oy + c.size;
+				n += ox >= c.ox && ox < c.ox + c.size && oy >= c.oy &&
+				     oy < c.oy + c.size;
 			}
 			TEST_CHECK(n == 1);
 			EyeCell c = eye_cell(eye_cell_at(ox, oy));
-			TEST_CHECK(ox >= c.ox && ox < c.ox + c.size && oy >= c.oy && oy < c.oy + c.size);
+			TEST_CHECK(ox >= c.ox && ox < c.ox + c.size && oy >= c.oy &&
+			           oy < c.oy + c.size);
 		}
 	TEST_CHECK(eye_cell_at(16, 0) == -1 && eye_cell_at(0, -17) == -1);
 }
@@ -58,7 +62,8 @@ TEST_CASE(eye_cell_order_documented)
 	/* Offsets of the zones' inner and outer bounds. */
 	TEST_CHECK(eye_cell(eye_cell_at(3, 3)).size == 1 && eye_cell(eye_cell_at(4, 3)).size == 2);
 	TEST_CHECK(eye_cell(eye_cell_at(-5, 0)).ox == -6 && eye_cell(eye_cell_at(7, 7)).size == 2);
-	TEST_CHECK(eye_cell(eye_cell_at(8, 0)).size == 4 && eye_cell(eye_cell_at(-9, -9)).oy == -12);
+	TEST_CHECK(eye_cell(eye_cell_at(8, 0)).size == 4 &&
+	           eye_cell(eye_cell_at(-9, -9)).oy == -12);
 }
 
 TEST_CASE(eye_adjacency_mixed_sizes)
@@ -84,8 +89,10 @@ TEST_CASE(eye_adjacency_mixed_sizes)
 			for (int oy = -16; oy < 16 && !oracle; oy++)
 				for (int ox = -16; ox < 16 && !oracle; ox++)
 					if (eye_cell_at(ox, oy) == i && i != j)
-						oracle = eye_cell_at(ox + 1, oy) == j || eye_cell_at(ox - 1, oy) == j ||
-							 eye_cell_at(ox, oy + 1) == j || eye_cell_at(ox, oy - 1) == j;
+						oracle = eye_cell_at(ox + 1, oy) == j ||
+						         eye_cell_at(ox - 1, oy) == j ||
+						         eye_cell_at(ox, oy + 1) == j ||
+						         eye_cell_at(ox, oy - 1) == j;
 			TEST_CHECK(eye_adjacent(i, j) == oracle);
 		}
 }

@@ -18,10 +18,10 @@ TEST_CASE(regions_verge_object_utak)
 	for (int i = 0; i < RETINA_CELLS; i++)
 		if (eye_cell(i).zone == EYE_PERIPHERAL)
 			imp.level[i] = 5; /* a ring of verge all round */
-	set_square(&imp, 0, 0, 7);	/* Utak */
-	set_square(&imp, 2, 2, 7);	/* a two-square object in the fovea */
+	set_square(&imp, 0, 0, 7);        /* Utak */
+	set_square(&imp, 2, 2, 7);        /* a two-square object in the fovea */
 	set_square(&imp, 2, 3, 7);
-	set_square(&imp, 3, 1, 7);	/* ... and one square diagonal to it: a separate region */
+	set_square(&imp, 3, 1, 7); /* ... and one square diagonal to it: a separate region */
 	Regions r;
 	regions_find(&r, &imp);
 	TEST_CHECK(r.count == 5);

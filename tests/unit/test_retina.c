@@ -1,5 +1,6 @@
 /* test_retina.c - the retina and touch (retina.h, SIMULATOR SIDE): the eye turns with Utak. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "test.h"
@@ -24,10 +25,10 @@ static void make_world(const char *heading, World *w, Table *t)
 	int loy = by0 < by1 ? by0 : by1, hiy = by0 < by1 ? by1 : by0;
 	char text[512];
 	snprintf(text, sizeof text,
-		 "table 40 40\nobject marker A %d %d %d %d %d %d %d %d\n"
-		 "object block C %d %d %d %d %d %d %d %d\nutak 20.5 20.5 %s\n",
-		 mx, my, mx + 1, my, mx + 1, my + 1, mx, my + 1, lox, loy, hix + 1, loy, hix + 1, hiy + 1,
-		 lox, hiy + 1, heading);
+	         "table 40 40\nobject marker A %d %d %d %d %d %d %d %d\n"
+	         "object block C %d %d %d %d %d %d %d %d\nutak 20.5 20.5 %s\n",
+	         mx, my, mx + 1, my, mx + 1, my + 1, mx, my + 1, lox, loy, hix + 1, loy, hix + 1,
+	         hiy + 1, lox, hiy + 1, heading);
 	Diag d;
 	TEST_CHECK(world_parse(w, "test", text, strlen(text), &d) == 0);
 	TEST_CHECK(table_build(t, w, &d) == 0);
@@ -49,8 +50,22 @@ TEST_CASE(retina_four_headings)
 		TEST_CHECK(imp.level[eye_cell_at(-6, 0)] == 0 && imp.level[eye_cell_at(6, 0)] == 0);
 		/* The block at own x 2..3, y 0..1: four foveal 7s on the right. */
 		TEST_CHECK(imp.level[eye_cell_at(2, 0)] == 7 && imp.level[eye_cell_at(3, 1)] == 7);
-		TEST_CHECK(imp.level[eye_cell_at(-2, 0)] == 0 && imp.level[eye_cell_at(-3, 1)] == 0);
+		TEST_CHECK(imp.level[eye_cell_at(-2, 0)] == 0 &&
+		           imp.level[eye_cell_at(-3, 1)] == 0);
 		TEST_CHECK(imp.level[eye_cell_at(0, 0)] == 7); /* Utak himself */
+		/* In the picture: the marker's cell at the top half, column of Utak. */
+		char *pic = NULL;
+		size_t len = 0;
+		FILE *f = open_memstream(&pic, &len);
+		eye_print_picture(imp.level, f);
+		fclose(f);
+		TEST_CHECK(len == 32 * 33);
+		TEST_CHECK(pic[9 * 33 + 16] == '2' &&
+		           pic[8 * 33 + 16] == '2');  /* rows 8-9: oy 7, 6 */
+		TEST_CHECK(pic[21 * 33 + 16] == '0'); /* oy -6: behind */
+		TEST_CHECK(pic[15 * 33 + 16] == '7' &&
+		           pic[15 * 33 + 18] == '7'); /* Utak; block right */
+		free(pic);
 		/* The same world turned: the same impression, whatever the heading. */
 		if (h == 0)
 			first = imp;
@@ -75,7 +90,8 @@ TEST_CASE(retina_off_table_is_verge_and_touch)
 	TEST_CHECK(imp.level[eye_cell_at(-16, -16)] == 7 && imp.level[eye_cell_at(-2, 0)] == 7);
 	TEST_CHECK(imp.level[eye_cell_at(0, 1)] == 0);
 	/* Touch: ahead '.', right 'A', behind 'B', left 'B'. */
-	TEST_CHECK(imp.touch[0] == '.' && imp.touch[2] == 'A' && imp.touch[4] == 'B' && imp.touch[6] == 'B');
+	TEST_CHECK(imp.touch[0] == '.' && imp.touch[2] == 'A' && imp.touch[4] == 'B' &&
+	           imp.touch[6] == 'B');
 	table_free(&t);
 	world_free(&w);
 }

@@ -111,7 +111,8 @@ static double one_sided(const Polygon *a, const Polygon *b)
 		Vec2 p = a->v[i], q = a->v[(i + 1) % a->count];
 		double len = hypot(q.x - p.x, q.y - p.y);
 		for (double t = 0; t <= len; t += SAMPLE_STEP) {
-			double d = point_polygon(vec2_add(p, vec2_scale(vec2_sub(q, p), t / len)), b);
+			double d =
+			    point_polygon(vec2_add(p, vec2_scale(vec2_sub(q, p), t / len)), b);
 			worst = d > worst ? d : worst;
 		}
 	}
@@ -135,11 +136,12 @@ TEST_CASE(worldmodel_default_model)
 TEST_CASE(worldmodel_same_field_same_model)
 {
 	const char *a = "table 40 30\nobject square A 6 20 10 20 10 24 6 24\n"
-			"object lshape D 8 4 11 4 11 8 17 8 17 11 8 11\nutak 20.5 12.5 north\n";
-	const char *b = "table 60 40\nobject square A 6 20 10 20 10 24 6 24\n"
-			"object lshape D 8 4 11 4 11 8 17 8 17 11 8 11\n"
-			"object far C 40 30 44 30 44 34 40 34\nobject high E 10 29 14 29 14 31 10 31\n"
-			"utak 20.5 12.5 north\n";
+	                "object lshape D 8 4 11 4 11 8 17 8 17 11 8 11\nutak 20.5 12.5 north\n";
+	const char *b =
+	    "table 60 40\nobject square A 6 20 10 20 10 24 6 24\n"
+	    "object lshape D 8 4 11 4 11 8 17 8 17 11 8 11\n"
+	    "object far C 40 30 44 30 44 34 40 34\nobject high E 10 29 14 29 14 31 10 31\n"
+	    "utak 20.5 12.5 north\n";
 	Sim sa, sb;
 	sim_load(&sa, a);
 	sim_load(&sb, b);
@@ -169,9 +171,10 @@ TEST_CASE(worldmodel_same_field_same_model)
 }
 
 /* A walk round room.w that brings every object within the intermediate zone. */
-static const char room_walk[] = "move -6 4; move -6 0; move 0 -3; move -5 0; move 0 -8; move 2 -3;"
-				"move 8 0; move 6 4; move 0 8; move 8 2; move 8 0; move 0 8; move -8 0;"
-				"move -15 0; move 0 -6";
+static const char room_walk[] =
+    "move -6 4; move -6 0; move 0 -3; move -5 0; move 0 -8; move 2 -3;"
+    "move 8 0; move 6 4; move 0 8; move 8 2; move 8 0; move 0 8; move -8 0;"
+    "move -15 0; move 0 -6";
 
 TEST_CASE(worldmodel_room_walk_outlines)
 {
@@ -215,7 +218,8 @@ TEST_CASE(worldmodel_room_walk_outlines)
 	}
 	for (int32_t k = 0; k < s.w.object_count; k++) {
 		if (matched[k] != 1)
-			fprintf(stderr, "  true object %s matched %d times\n", s.w.objects[k].name, matched[k]);
+			fprintf(stderr, "  true object %s matched %d times\n", s.w.objects[k].name,
+			        matched[k]);
 		TEST_CHECK(matched[k] == 1);
 	}
 	/* The floor's outline, where both its sides were seen in the fovea, lies within
@@ -225,16 +229,20 @@ TEST_CASE(worldmodel_room_walk_outlines)
 	for (int32_t k = 0; k < floor_node->ring_count; k++) {
 		const ModelRing *r = &m.ring[floor_node->first_ring + k];
 		for (int32_t j = 0; j < r->count; j++) {
-			Vec2 a = m.vertex[r->first + j].p, b = m.vertex[r->first + (j + 1) % r->count].p;
+			Vec2 a = m.vertex[r->first + j].p,
+			     b = m.vertex[r->first + (j + 1) % r->count].p;
 			double len = hypot(b.x - a.x, b.y - a.y);
 			for (double t = 0.5; t < len; t += 1) {
 				Vec2 p = vec2_add(a, vec2_scale(vec2_sub(b, a), t / len));
 				/* the squares on the two sides of this unit edge */
 				Vec2 n = vec2((b.y - a.y) / len * 0.5, -(b.x - a.x) / len * 0.5);
 				Vec2 in = vec2_sub(p, n), out = vec2_add(p, n);
-				Evidence ei = worldmodel_evidence(&m, (int32_t)floor(in.x), (int32_t)floor(in.y));
-				Evidence eo = worldmodel_evidence(&m, (int32_t)floor(out.x), (int32_t)floor(out.y));
-				if (ei.res != WORLDMODEL_RES_FOVEA || eo.res != WORLDMODEL_RES_FOVEA)
+				Evidence ei = worldmodel_evidence(&m, (int32_t)floor(in.x),
+				                                  (int32_t)floor(in.y));
+				Evidence eo = worldmodel_evidence(&m, (int32_t)floor(out.x),
+				                                  (int32_t)floor(out.y));
+				if (ei.res != WORLDMODEL_RES_FOVEA ||
+				    eo.res != WORLDMODEL_RES_FOVEA)
 					continue;
 				Vec2 q = model_to_table(&s, p);
 				double d = point_polygon(q, &s.w.verge);
@@ -243,8 +251,10 @@ TEST_CASE(worldmodel_room_walk_outlines)
 					d = dobj < d ? dobj : d;
 				}
 				if (d > OUTLINE_TOLERANCE)
-					fprintf(stderr, "  floor edge at model (%.1f, %.1f) is %.2f from the truth\n", p.x,
-						p.y, d);
+					fprintf(stderr,
+					        "  floor edge at model (%.1f, %.1f) is %.2f from "
+					        "the truth\n",
+					        p.x, p.y, d);
 				TEST_CHECK(d <= OUTLINE_TOLERANCE);
 				checked++;
 			}
@@ -259,14 +269,16 @@ TEST_CASE(worldmodel_room_walk_outlines)
  * zone sees an edge, is corrected to within one square in two impressions. */
 TEST_CASE(worldmodel_disparity_corrects_wrong_belief)
 {
-	const char *starts[] = {"utak 20.5 12.5 north", "utak 14.5 15.5 north", "utak 27.5 16.5 north"};
+	const char *starts[] = {"utak 20.5 12.5 north", "utak 14.5 15.5 north",
+	                        "utak 27.5 16.5 north"};
 	Sim s;
 	const char *room = read_file("worlds/room.w");
 	TEST_CHECK(room != NULL);
 	int trials = 0;
 	for (int st = 0; st < 3; st++) {
 		char text[1024];
-		snprintf(text, sizeof text, "%.*s%s\n", (int)(strstr(room, "utak 20.5") - room), room, starts[st]);
+		snprintf(text, sizeof text, "%.*s%s\n", (int)(strstr(room, "utak 20.5") - room),
+		         room, starts[st]);
 		for (int ey = -3; ey <= 3; ey++)
 			for (int ex = -3; ex <= 3; ex++) {
 				if (ex == 0 && ey == 0)
@@ -284,8 +296,10 @@ TEST_CASE(worldmodel_disparity_corrects_wrong_belief)
 				table_square_of(s.w.utak, &tx, &ty);
 				int32_t dx = abs(bx - (tx - s.ux0)), dy = abs(by - (ty - s.uy0));
 				if (dx > 1 || dy > 1)
-					fprintf(stderr, "  start %d error (%d, %d): still off by (%d, %d)\n", st, ex, ey,
-						(int)dx, (int)dy);
+					fprintf(
+					    stderr,
+					    "  start %d error (%d, %d): still off by (%d, %d)\n",
+					    st, ex, ey, (int)dx, (int)dy);
 				TEST_CHECK(dx <= 1 && dy <= 1);
 				trials++;
 				worldmodel_free(&m);
@@ -332,7 +346,8 @@ TEST_CASE(worldmodel_held_object_follows)
 	Impression imp;
 	retina_sense(&s.w, &s.t, &imp);
 	worldmodel_accommodate_first(&m, &imp);
-	const char *steps[] = {"move -10 9", "grasp", "push 0 -3", "push 4 0", "turn 90", "release"};
+	const char *steps[] = {"move -10 9", "grasp",   "push 0 -3",
+	                       "push 4 0",   "turn 90", "release"};
 	int32_t ident = -1;
 	for (int k = 0; k < 6; k++) {
 		sim_step(&s, &m, steps[k]);
