@@ -65,40 +65,39 @@ static void mind_perceive(Mind *m, const MotorCommand *cmd, const Impression *im
 	worldmodel_accommodate(&m->model, cmd, imp);
 }
 
-typedef struct Session {
-	Body body;
-	Mind mind;
-} Session;
+typedef void DumpFn(const Body *b, const Mind *m, FILE *f);
 
-typedef void DumpFn(const Session *s, FILE *f);
-
-static void dump_table(const Session *s, FILE *f)
+static void dump_table(const Body *b, const Mind *m, FILE *f)
 {
-	const Body *b = &s->body;
+	(void)m;
 	fprintf(f, "TABLE %d x %d, north at the top:\n", (int)b->table.w, (int)b->table.h);
 	table_dump(&b->table, &b->world, f);
 }
 
-static void dump_retina(const Session *s, FILE *f)
+static void dump_retina(const Body *b, const Mind *m, FILE *f)
 {
+	(void)m;
 	fputs("retina, ahead at the top:\n", f);
-	eye_print_picture(s->body.sensed.level, f);
+	eye_print_picture(b->sensed.level, f);
 }
 
-static void dump_touch(const Session *s, FILE *f)
+static void dump_touch(const Body *b, const Mind *m, FILE *f)
 {
+	(void)m;
 	fputs("touch, ahead at the top:\n", f);
-	retina_print_touch(&s->body.sensed, f);
+	retina_print_touch(&b->sensed, f);
 }
 
-static void dump_regions(const Session *s, FILE *f)
+static void dump_regions(const Body *b, const Mind *m, FILE *f)
 {
-	regions_dump(&s->mind.regions, f);
+	(void)b;
+	regions_dump(&m->regions, f);
 }
 
-static void dump_model(const Session *s, FILE *f)
+static void dump_model(const Body *b, const Mind *m, FILE *f)
 {
-	worldmodel_dump(&s->mind.model, f);
+	(void)b;
+	worldmodel_dump(&m->model, f);
 }
 
 static const struct {
@@ -202,10 +201,9 @@ int main(int argc, char **argv)
 		fprintf(stderr, "utak: %s\n", d.msg);
 		return 2;
 	}
-	static Session session; /* the world model is large: off the stack */
-	Body *body = &session.body;
-	if (world_read(&body->world, path, &d) || table_build(&body->table, &body->world, &d)) {
-		world_free(&body->world); /* safe on a world that failed to read */
+	Body body;
+	if (world_read(&body.world, path, &d) || table_build(&body.table, &body.world, &d)) {
+		world_free(&body.world); /* safe on a world that failed to read */
 		fprintf(stderr, "utak: %s\n", d.msg);
 		free(cmds);
 		return 2;
@@ -213,21 +211,22 @@ int main(int argc, char **argv)
 	if (!any_dump)
 		want[0] = true; /* the TABLE */
 
-	retina_sense(&body->world, &body->table, &body->sensed);
-	mind_start(&session.mind, &body->sensed);
+	Mind mind;
+	retina_sense(&body.world, &body.table, &body.sensed);
+	mind_start(&mind, &body.sensed);
 	for (int i = 0; i < ncmds; i++) {
 		MotorOutcome out;
-		motion_execute(&body->world, &body->table, &cmds[i], &out);
+		motion_execute(&body.world, &body.table, &cmds[i], &out);
 		printf("act %d: ", i + 1);
 		motion_print(&cmds[i], &out, stdout);
 		putchar('\n');
 		/* Utak halts: a fresh impression, and the mind perceives it (paper 3.1 steps 10-11). */
-		retina_sense(&body->world, &body->table, &body->sensed);
-		mind_perceive(&session.mind, &cmds[i], &body->sensed);
+		retina_sense(&body.world, &body.table, &body.sensed);
+		mind_perceive(&mind, &cmds[i], &body.sensed);
 	}
 	for (int i = 0; i < DUMP_COUNT; i++)
 		if (want[i])
-			dumps[i].fn(&session, stdout);
+			dumps[i].fn(&body, &mind, stdout);
 
 	int status = 0;
 	if (outfile) {
@@ -236,7 +235,7 @@ int main(int argc, char **argv)
 			fprintf(stderr, "utak: %s: cannot write\n", outfile);
 			status = 2;
 		} else {
-			world_write(&body->world, f);
+			world_write(&body.world, f);
 			if (fclose(f) != 0) {
 				fprintf(stderr, "utak: %s: cannot write\n", outfile);
 				status = 2;
@@ -244,8 +243,8 @@ int main(int argc, char **argv)
 		}
 	}
 	free(cmds);
-	worldmodel_free(&session.mind.model);
-	table_free(&body->table);
-	world_free(&body->world);
+	worldmodel_free(&mind.model);
+	table_free(&body.table);
+	world_free(&body.world);
 	return status;
 }

@@ -15,7 +15,8 @@
  * every square under it is known and definite, so that new parts coming into view
  * and coarse old knowledge never count as disagreement.
  * Disparity (paper 3.5, "trying the positions closest to the predicted position"):
- * the mean level difference over the predicted cells is computed for the
+ * the mean level difference over the predicted cells, plus a coarser comparison
+ * of occupied shares over 4 x 4 blocks (wm_block_error), is computed for the
  * predicted square, every square within WORLDMODEL_DISPARITY_RADIUS of it, and
  * every square within one of the commanded straight line (the controller is not
  * told where a move halted). The best, ties going to the nearest to the
@@ -26,9 +27,10 @@
  * unknown may be verge or objects partly seen, and stay part of $floor's
  * boundary, with the segments there marked as bounded by the occupied or the
  * unknown). Boundaries are traced along square edges with the set on the left
- * (crack following, as in Rosenfeld and Kak's "Digital Picture Processing",
- * 11.2), turning left first at pinch points so that 4-connected sets stay apart,
- * and merged into maximal straight segments.
+ * ("crack following" in digital topology), turning left first at pinch points
+ * so that 4-connected sets stay apart, and merged into maximal straight segments.
+ * A slanted edge therefore stays a staircase of unit steps: exactly what the
+ * evidence says, never cutting into a square believed occupied.
  *
  * INVARIANTS: worldmodel_validate. MEMORY: one grid of WORLDMODEL_SIDE^2 Evidence
  * (3 MB) and the tree's arrays, owned by the WorldModel; scratch for tracing is
@@ -178,8 +180,8 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 			for (int dx = 0; dx < c.size; dx++) {
 				int64_t k = wm_index(sx + c.ox + dx, sy + c.oy + dy);
 				if (k < 0) {
-					m->clipped =
-					    true; /* outside the window: not recorded, but said */
+					/* Outside the window: not recorded, but said in the dump. */
+					m->clipped = true;
 					continue;
 				}
 				Evidence *e = &m->grid[k];
