@@ -10,11 +10,15 @@
 #include <string.h>
 
 #include "utak/act.h"
+#include "utak/eye.h"
 #include "utak/motion.h"
+#include "utak/regions.h"
+#include "utak/retina.h"
 #include "utak/table.h"
 #include "utak/task.h"
 #include "utak/util.h"
 #include "utak/world.h"
+#include "utak/worldmodel.h"
 
 #define UTAK_VERSION "0.1.0"
 
@@ -23,7 +27,8 @@ static const char usage_text[] =
 	"Runs Utak, the robot of Rosenberg and Jenkin's TABLETOP, in the world file WORLD.\n"
 	"\n"
 	"  --act SCRIPT   carry out motor commands, e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
-	"  --dump LIST    print dumps after the commands, comma-separated: table\n"
+	"  --dump LIST    print dumps after the commands, comma-separated:\n"
+	"                 table, retina, touch, regions, model\n"
 	"  -o FILE        write the final state as a world file\n"
 	"  -n, --dry-run  read WORLD and TASK, say how the task reads, and stop\n"
 	"  -h, --help     this text\n"
@@ -34,14 +39,67 @@ static const char usage_text[] =
 typedef struct Body {
 	World world;
 	Table table;
+	Impression sensed;	/* what the senses gave after the last halt */
 } Body;
 
-typedef void DumpFn(const Body *b, FILE *f);
+/* The mind: the controller side. It is handed impressions and the commands it
+ * gave, nothing else (impression.h). */
+typedef struct Mind {
+	Impression impression;	/* the last impression received */
+	Regions regions;	/* its regions and their reading (paper 3.4.1-3.4.2) */
+	WorldModel model;	/* what Utak believes (paper 3.3-3.5) */
+} Mind;
 
-static void dump_table(const Body *b, FILE *f)
+/* mind_start: initialization steps 1-5 of paper 3.1. */
+static void mind_start(Mind *m, const Impression *first)
 {
+	worldmodel_init(&m->model);
+	m->impression = *first;
+	regions_find(&m->regions, first);
+	worldmodel_accommodate_first(&m->model, first);
+}
+
+/* mind_perceive: step 11 of paper 3.1, after the command it gave. */
+static void mind_perceive(Mind *m, const MotorCommand *cmd, const Impression *imp)
+{
+	m->impression = *imp;
+	regions_find(&m->regions, imp);
+	worldmodel_accommodate(&m->model, cmd, imp);
+}
+
+typedef void DumpFn(const Body *b, const Mind *m, FILE *f);
+
+static void dump_table(const Body *b, const Mind *m, FILE *f)
+{
+	(void)m;
 	fprintf(f, "TABLE %d x %d, north at the top:\n", (int)b->table.w, (int)b->table.h);
 	table_dump(&b->table, &b->world, f);
+}
+
+static void dump_retina(const Body *b, const Mind *m, FILE *f)
+{
+	(void)m;
+	fputs("retina, ahead at the top:\n", f);
+	eye_print_picture(b->sensed.level, f);
+}
+
+static void dump_touch(const Body *b, const Mind *m, FILE *f)
+{
+	(void)m;
+	fputs("touch, ahead at the top:\n", f);
+	retina_print_touch(&b->sensed, f);
+}
+
+static void dump_regions(const Body *b, const Mind *m, FILE *f)
+{
+	(void)b;
+	regions_dump(&m->regions, f);
+}
+
+static void dump_model(const Body *b, const Mind *m, FILE *f)
+{
+	(void)b;
+	worldmodel_dump(&m->model, f);
 }
 
 static const struct {
@@ -49,6 +107,10 @@ static const struct {
 	DumpFn *fn;
 } dumps[] = {
 	{"table", dump_table},
+	{"retina", dump_retina},
+	{"touch", dump_touch},
+	{"regions", dump_regions},
+	{"model", dump_model},
 };
 enum { DUMP_COUNT = sizeof dumps / sizeof dumps[0] };
 
@@ -177,16 +239,22 @@ int main(int argc, char **argv)
 	if (!any_dump)
 		want[0] = true; /* the TABLE */
 
+	Mind mind;
+	retina_sense(&body.world, &body.table, &body.sensed);
+	mind_start(&mind, &body.sensed);
 	for (int i = 0; i < ncmds; i++) {
 		MotorOutcome out;
 		motion_execute(&body.world, &body.table, &cmds[i], &out);
 		printf("act %d: ", i + 1);
 		motion_print(&cmds[i], &out, stdout);
 		putchar('\n');
+		/* Utak halts: a fresh impression, and the mind perceives it (paper 3.1 steps 10-11). */
+		retina_sense(&body.world, &body.table, &body.sensed);
+		mind_perceive(&mind, &cmds[i], &body.sensed);
 	}
 	for (int i = 0; i < DUMP_COUNT; i++)
 		if (want[i])
-			dumps[i].fn(&body, stdout);
+			dumps[i].fn(&body, &mind, stdout);
 
 	int status = 0;
 	if (outfile) {
@@ -203,6 +271,7 @@ int main(int argc, char **argv)
 		}
 	}
 	free(cmds);
+	worldmodel_free(&mind.model);
 	table_free(&body.table);
 	world_free(&body.world);
 	return status;

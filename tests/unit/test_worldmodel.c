@@ -1,0 +1,409 @@
+/* test_worldmodel.c - the world model (worldmodel.h, CONTROLLER SIDE) judged against
+ * the ground truth. This test is a helper that may see both sides of the wall: it
+ * runs the simulator (world, table, motion, retina) to make impressions, hands the
+ * model only those and the commands, and then compares the model with the TABLE. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "test.h"
+#include "utak/act.h"
+#include "utak/eye.h"
+#include "utak/motion.h"
+#include "utak/retina.h"
+#include "utak/worldmodel.h"
+
+/* Outlines are judged within one square (the tolerance), plus rounding. */
+#define OUTLINE_TOLERANCE (1.0 + 1e-9)
+#define SAMPLE_STEP 0.125
+
+typedef struct Sim {
+	World w;
+	Table t;
+	int32_t ux0, uy0; /* Utak's first square: the model's origin */
+} Sim;
+
+static void sim_load(Sim *s, const char *text)
+{
+	Diag d;
+	TEST_CHECK(world_parse(&s->w, "test", text, strlen(text), &d) == 0);
+	TEST_CHECK(table_build(&s->t, &s->w, &d) == 0);
+	table_square_of(s->w.utak, &s->ux0, &s->uy0);
+}
+
+static void sim_free(Sim *s)
+{
+	table_free(&s->t);
+	world_free(&s->w);
+}
+
+static char *read_file(const char *path)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return NULL;
+	static char buf[1 << 16];
+	size_t n = fread(buf, 1, sizeof buf - 1, f);
+	fclose(f);
+	buf[n] = 0;
+	return buf;
+}
+
+/* model_to_table(s, p): a point of the model's frame on the TABLE. */
+static Vec2 model_to_table(const Sim *s, Vec2 p)
+{
+	Vec2 d = world_own_to_table(s->w.heading, vec2(p.x - 0.5, p.y - 0.5));
+	return vec2(s->ux0 + 0.5 + d.x, s->uy0 + 0.5 + d.y);
+}
+
+static void sim_step(Sim *s, WorldModel *m, const char *script)
+{
+	MotorCommand *cmds;
+	int n;
+	Diag d;
+	TEST_CHECK(act_parse(script, strlen(script), &cmds, &n, &d) == 0);
+	for (int i = 0; i < n; i++) {
+		MotorOutcome out;
+		motion_execute(&s->w, &s->t, &cmds[i], &out);
+		Impression imp;
+		retina_sense(&s->w, &s->t, &imp);
+		worldmodel_accommodate(m, &cmds[i], &imp);
+		char why[160];
+		TEST_CHECK(worldmodel_validate(m, why, sizeof why));
+	}
+	free(cmds);
+}
+
+static double point_segment(Vec2 p, Vec2 a, Vec2 b)
+{
+	Vec2 ab = vec2_sub(b, a);
+	double len2 = vec2_dot(ab, ab), t = len2 > 0 ? vec2_dot(vec2_sub(p, a), ab) / len2 : 0;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	Vec2 q = vec2_add(a, vec2_scale(ab, t));
+	return hypot(p.x - q.x, p.y - q.y);
+}
+
+static double point_polygon(Vec2 p, const Polygon *poly)
+{
+	double best = INFINITY;
+	for (int32_t i = 0; i < poly->count; i++) {
+		double d = point_segment(p, poly->v[i], poly->v[(i + 1) % poly->count]);
+		best = d < best ? d : best;
+	}
+	return best;
+}
+
+/* ring_polygon(s, m, r): a believed ring on the TABLE (rings are short: <= 64). */
+static bool ring_polygon(const Sim *s, const WorldModel *m, const ModelRing *r, Polygon *out)
+{
+	if (r->count > GEOM_MAX_VERTICES)
+		return false;
+	out->count = r->count;
+	for (int32_t j = 0; j < r->count; j++)
+		out->v[j] = model_to_table(s, m->vertex[r->first + j].p);
+	return true;
+}
+
+/* hausdorff(a, b): the larger of the two one-sided distances between outlines. */
+static double one_sided(const Polygon *a, const Polygon *b)
+{
+	double worst = 0;
+	for (int32_t i = 0; i < a->count; i++) {
+		Vec2 p = a->v[i], q = a->v[(i + 1) % a->count];
+		double len = hypot(q.x - p.x, q.y - p.y);
+		for (double t = 0; t <= len; t += SAMPLE_STEP) {
+			double d =
+			    point_polygon(vec2_add(p, vec2_scale(vec2_sub(q, p), t / len)), b);
+			worst = d > worst ? d : worst;
+		}
+	}
+	return worst;
+}
+
+TEST_CASE(worldmodel_default_model)
+{
+	WorldModel m;
+	worldmodel_init(&m);
+	char why[160];
+	TEST_CHECK(worldmodel_validate(&m, why, sizeof why));
+	TEST_CHECK(m.node_count == 2 && m.node[1].ring_count == 1);
+	TEST_NEAR(m.node[1].rect.hi.x - m.node[1].rect.lo.x, WORLDMODEL_DEFAULT_FLOOR, 0);
+	TEST_NEAR((m.node[1].rect.hi.x + m.node[1].rect.lo.x) / 2, 0.5, 0); /* centred on Utak */
+	TEST_CHECK(worldmodel_belief(&m, 3, 3) == BELIEF_UNKNOWN);
+	worldmodel_free(&m);
+}
+
+/* Two worlds the same within Utak's 32 x 32 field, different outside it. */
+TEST_CASE(worldmodel_same_field_same_model)
+{
+	const char *a = "table 40 30\nobject square A 6 20 10 20 10 24 6 24\n"
+	                "object lshape D 8 4 11 4 11 8 17 8 17 11 8 11\nutak 20.5 12.5 north\n";
+	const char *b =
+	    "table 60 40\nobject square A 6 20 10 20 10 24 6 24\n"
+	    "object lshape D 8 4 11 4 11 8 17 8 17 11 8 11\n"
+	    "object far C 40 30 44 30 44 34 40 34\nobject high E 10 29 14 29 14 31 10 31\n"
+	    "utak 20.5 12.5 north\n";
+	Sim sa, sb;
+	sim_load(&sa, a);
+	sim_load(&sb, b);
+	Impression ia, ib;
+	retina_sense(&sa.w, &sa.t, &ia);
+	retina_sense(&sb.w, &sb.t, &ib);
+	TEST_CHECK(memcmp(&ia, &ib, sizeof ia) == 0);
+	WorldModel ma, mb;
+	worldmodel_init(&ma);
+	worldmodel_init(&mb);
+	worldmodel_accommodate_first(&ma, &ia);
+	worldmodel_accommodate_first(&mb, &ib);
+	char *da = NULL, *db = NULL;
+	size_t la = 0, lb = 0;
+	FILE *fa = open_memstream(&da, &la), *fb = open_memstream(&db, &lb);
+	worldmodel_dump(&ma, fa);
+	worldmodel_dump(&mb, fb);
+	fclose(fa);
+	fclose(fb);
+	TEST_CHECK(la == lb && la > 0 && memcmp(da, db, la) == 0);
+	free(da);
+	free(db);
+	worldmodel_free(&ma);
+	worldmodel_free(&mb);
+	sim_free(&sa);
+	sim_free(&sb);
+}
+
+/* A walk round room.w that brings every object within the intermediate zone. */
+static const char room_walk[] =
+    "move -6 4; move -6 0; move 0 -3; move -5 0; move 0 -8; move 2 -3;"
+    "move 8 0; move 6 4; move 0 8; move 8 2; move 8 0; move 0 8; move -8 0;"
+    "move -15 0; move 0 -6";
+
+TEST_CASE(worldmodel_room_walk_outlines)
+{
+	Sim s;
+	const char *text = read_file("worlds/room.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	sim_step(&s, &m, room_walk);
+	/* Utak is where the model believes, to the square. */
+	int32_t bx, by, tx, ty;
+	worldmodel_utak_square(&m, &bx, &by);
+	table_square_of(s.w.utak, &tx, &ty);
+	Vec2 believed = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
+	TEST_NEAR(believed.x, tx + 0.5, 0);
+	TEST_NEAR(believed.y, ty + 0.5, 0);
+	/* Every true object has a believed object whose outline is within one square
+	 * of its own, both ways; every believed object is within one square of one. */
+	int matched[WORLD_MAX_OBJECTS] = {0};
+	for (int32_t id = 0; id < m.node_count; id++) {
+		if (m.node[id].kind != NODE_OBJECT)
+			continue;
+		Polygon believed_outline;
+		TEST_CHECK(m.node[id].ring_count >= 1 && !m.ring[m.node[id].first_ring].hole);
+		TEST_CHECK(ring_polygon(&s, &m, &m.ring[m.node[id].first_ring], &believed_outline));
+		int found = -1;
+		for (int32_t k = 0; k < s.w.object_count && found < 0; k++) {
+			const Polygon *truth = &s.w.objects[k].shape;
+			if (one_sided(&believed_outline, truth) <= OUTLINE_TOLERANCE &&
+			    one_sided(truth, &believed_outline) <= OUTLINE_TOLERANCE)
+				found = (int)k;
+		}
+		if (found < 0)
+			fprintf(stderr, "  believed %s matches no true object\n", m.node[id].name);
+		TEST_CHECK(found >= 0);
+		matched[found]++;
+	}
+	for (int32_t k = 0; k < s.w.object_count; k++) {
+		if (matched[k] != 1)
+			fprintf(stderr, "  true object %s matched %d times\n", s.w.objects[k].name,
+			        matched[k]);
+		TEST_CHECK(matched[k] == 1);
+	}
+	/* The floor's outline, where both its sides were seen in the fovea, lies within
+	 * one square of the verge or an object. */
+	const ModelNode *floor_node = &m.node[1];
+	int32_t checked = 0;
+	for (int32_t k = 0; k < floor_node->ring_count; k++) {
+		const ModelRing *r = &m.ring[floor_node->first_ring + k];
+		for (int32_t j = 0; j < r->count; j++) {
+			Vec2 a = m.vertex[r->first + j].p,
+			     b = m.vertex[r->first + (j + 1) % r->count].p;
+			double len = hypot(b.x - a.x, b.y - a.y);
+			for (double t = 0.5; t < len; t += 1) {
+				Vec2 p = vec2_add(a, vec2_scale(vec2_sub(b, a), t / len));
+				/* the squares on the two sides of this unit edge */
+				Vec2 n = vec2((b.y - a.y) / len * 0.5, -(b.x - a.x) / len * 0.5);
+				Vec2 in = vec2_sub(p, n), out = vec2_add(p, n);
+				Evidence ei = worldmodel_evidence(&m, (int32_t)floor(in.x),
+				                                  (int32_t)floor(in.y));
+				Evidence eo = worldmodel_evidence(&m, (int32_t)floor(out.x),
+				                                  (int32_t)floor(out.y));
+				if (ei.res != WORLDMODEL_RES_FOVEA ||
+				    eo.res != WORLDMODEL_RES_FOVEA)
+					continue;
+				Vec2 q = model_to_table(&s, p);
+				double d = point_polygon(q, &s.w.verge);
+				for (int32_t o = 0; o < s.w.object_count; o++) {
+					double dobj = point_polygon(q, &s.w.objects[o].shape);
+					d = dobj < d ? dobj : d;
+				}
+				if (d > OUTLINE_TOLERANCE)
+					fprintf(stderr,
+					        "  floor edge at model (%.1f, %.1f) is %.2f from "
+					        "the truth\n",
+					        p.x, p.y, d);
+				TEST_CHECK(d <= OUTLINE_TOLERANCE);
+				checked++;
+			}
+		}
+	}
+	TEST_CHECK(checked > 20);
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
+/* A believed position off by up to 3 squares, where the fovea or the intermediate
+ * zone sees an edge, is corrected to within one square in two impressions. */
+TEST_CASE(worldmodel_disparity_corrects_wrong_belief)
+{
+	const char *starts[] = {"utak 20.5 12.5 north", "utak 14.5 15.5 north",
+	                        "utak 27.5 16.5 north"};
+	Sim s;
+	const char *room = read_file("worlds/room.w");
+	TEST_CHECK(room != NULL);
+	int trials = 0;
+	for (int st = 0; st < 3; st++) {
+		char text[1024];
+		snprintf(text, sizeof text, "%.*s%s\n", (int)(strstr(room, "utak 20.5") - room),
+		         room, starts[st]);
+		for (int ey = -3; ey <= 3; ey++)
+			for (int ex = -3; ex <= 3; ex++) {
+				if (ex == 0 && ey == 0)
+					continue;
+				sim_load(&s, text);
+				WorldModel m;
+				worldmodel_init(&m);
+				Impression imp;
+				retina_sense(&s.w, &s.t, &imp);
+				worldmodel_accommodate_first(&m, &imp);
+				worldmodel_set_position(&m, vec2(0.5 + ex, 0.5 + ey));
+				sim_step(&s, &m, "move 1 0; move 0 1");
+				int32_t bx, by, tx, ty;
+				worldmodel_utak_square(&m, &bx, &by);
+				table_square_of(s.w.utak, &tx, &ty);
+				int32_t dx = abs(bx - (tx - s.ux0)), dy = abs(by - (ty - s.uy0));
+				if (dx > 1 || dy > 1)
+					fprintf(
+					    stderr,
+					    "  start %d error (%d, %d): still off by (%d, %d)\n",
+					    st, ex, ey, (int)dx, (int)dy);
+				TEST_CHECK(dx <= 1 && dy <= 1);
+				trials++;
+				worldmodel_free(&m);
+				sim_free(&s);
+			}
+	}
+	TEST_CHECK(trials == 3 * 48);
+}
+
+/* The controller is not told where a move halted: the disparity search along the
+ * commanded line finds it. From the start of room.w, "move 0 -12" halts against
+ * the L-shaped object after about 6.5 squares. */
+TEST_CASE(worldmodel_halted_move_found)
+{
+	Sim s;
+	const char *text = read_file("worlds/room.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	sim_step(&s, &m, "move 0 5; move -8 0; move 0 -12");
+	TEST_CHECK(m.report.corrected);
+	int32_t bx, by, tx, ty;
+	worldmodel_utak_square(&m, &bx, &by);
+	table_square_of(s.w.utak, &tx, &ty);
+	TEST_CHECK(bx == tx - s.ux0 && by == ty - s.uy0);
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
+/* Grasp, push and turn: the held object hangs under $org and moves with Utak; its
+ * believed outline follows the true one. */
+TEST_CASE(worldmodel_held_object_follows)
+{
+	Sim s;
+	const char *text = read_file("worlds/room.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	const char *steps[] = {"move -10 9", "grasp",   "push 0 -3",
+	                       "push 4 0",   "turn 90", "release"};
+	int32_t ident = -1;
+	for (int k = 0; k < 6; k++) {
+		sim_step(&s, &m, steps[k]);
+		if (k == 0)
+			continue;
+		/* The node of the square: the object nearest Utak. */
+		int32_t held = -1;
+		for (int32_t id = 0; id < m.node_count; id++)
+			if (m.node[id].kind == NODE_OBJECT && m.node[id].squares == 16)
+				held = id;
+		TEST_CHECK(held >= 0);
+		TEST_CHECK(m.node[held].held == (k < 5) && m.node[held].parent == (k < 5 ? 0 : 1));
+		if (ident < 0)
+			ident = m.node[held].ident;
+		TEST_CHECK(m.node[held].ident == ident);
+		Polygon believed;
+		TEST_CHECK(ring_polygon(&s, &m, &m.ring[m.node[held].first_ring], &believed));
+		TEST_CHECK(one_sided(&believed, &s.w.objects[0].shape) <= OUTLINE_TOLERANCE);
+		TEST_CHECK(one_sided(&s.w.objects[0].shape, &believed) <= OUTLINE_TOLERANCE);
+		TEST_CHECK(!m.report.corrected);
+	}
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
+/* A long move that halts against a wall seen only in the periphery: the belief
+ * ends within one square. */
+TEST_CASE(worldmodel_halted_at_coarse_wall)
+{
+	Sim s;
+	const char *text = read_file("worlds/tworooms.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	sim_step(&s, &m, "move 0 25");
+	int32_t bx, by, tx, ty;
+	worldmodel_utak_square(&m, &bx, &by);
+	table_square_of(s.w.utak, &tx, &ty);
+	Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
+	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 1 && fabs(b.y - (ty + 0.5)) <= 1);
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
+int main(void)
+{
+	TEST_RUN(worldmodel_default_model);
+	TEST_RUN(worldmodel_same_field_same_model);
+	TEST_RUN(worldmodel_room_walk_outlines);
+	TEST_RUN(worldmodel_disparity_corrects_wrong_belief);
+	TEST_RUN(worldmodel_halted_move_found);
+	TEST_RUN(worldmodel_held_object_follows);
+	TEST_RUN(worldmodel_halted_at_coarse_wall);
+	return TEST_EXIT();
+}
