@@ -106,6 +106,7 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 		if (k == 5) {
 			free(*cmds);
 			*cmds = NULL;
+			*count = 0;
 			return act_fail(&r, col,
 					"unknown command (move DX DY, grasp, push DX DY, turn DEG, release):",
 					w, n);
