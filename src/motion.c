@@ -60,10 +60,13 @@ static Vec2 motion_utak_at(const Motion *m, double f)
  * of it beside him): there the TABLE cannot tell whether his point stays out. */
 static bool enters_polygon(const Polygon *p, Vec2 a, Vec2 b)
 {
-	if (geom_point_in_polygon(p, b))
+	if (table_point_inside(p, b))
 		return true;
 	for (int32_t i = 0; i < p->count; i++) {
 		Vec2 c = p->v[i], d = p->v[(i + 1) % p->count];
+		/* The edge he stands on (table.h, TABLE_TOUCH): leaving it is no crossing. */
+		if (geom_point_segment_distance(a, c, d) <= TABLE_TOUCH)
+			continue;
 		double o1 = geom_orient(a, b, c), o2 = geom_orient(a, b, d);
 		double o3 = geom_orient(c, d, a), o4 = geom_orient(c, d, b);
 		if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
