@@ -108,9 +108,34 @@ TEST_CASE(turn_about_a_point_on_the_edge)
 	unload();
 }
 
+TEST_CASE(a_million_degrees_is_quick)
+{
+	/* A free turn of 1e6 degrees swept every circle, ~2,800 of them: with a long
+	 * object on a large TABLE, most of an hour. Now one circle and the rest. */
+	load("table 100 100\nobject bar A 51 50 91 50 91 51 51 51\nutak 50.5 50.5 north\n");
+	act(MOTOR_GRASP, 0, 0);
+	MotorOutcome out = act(MOTOR_TURN, 1e6, 0);
+	TEST_CHECK(!out.halted && out.done == 1e6);
+	/* 1e6 = 2777 x 360 + 280: the bar ends turned by 280 degrees. */
+	double c, s;
+	geom_cos_sin(280, &c, &s);
+	Vec2 want = geom_rotate(vec2(91, 50), vec2(50.5, 50.5), c, s);
+	TEST_NEAR(world.objects[0].shape.v[1].x, want.x, 1e-9);
+	TEST_NEAR(world.objects[0].shape.v[1].y, want.y, 1e-9);
+	/* Blocked in its first circle, it halts as before. */
+	unload();
+	load("table 100 100\nwall 40 55 60 55 60 56 40 56\nobject bar A 51 50 58 50 58 51 51 51\n"
+	     "utak 50.5 50.5 north\n");
+	act(MOTOR_GRASP, 0, 0);
+	out = act(MOTOR_TURN, -1e6, 0);
+	TEST_CHECK(out.halted && out.done < -180 && out.done > -360);
+	unload();
+}
+
 int main(void)
 {
 	TEST_RUN(released_beside_utak_reads_back);
 	TEST_RUN(turn_about_a_point_on_the_edge);
+	TEST_RUN(a_million_degrees_is_quick);
 	return TEST_EXIT();
 }
