@@ -153,3 +153,9 @@ check: fuzz-replay
 
 # test_invariants shares the invariant checks of the whole-run fuzz harness.
 build/chk/unit/test_invariants: tests/fuzz/invariants.h
+
+# Inputs one past the count and size limits, too big to commit (tests/bad/gen.sh).
+build/gen/.done: tests/bad/gen.sh
+	sh tests/bad/gen.sh build/gen && touch $@
+
+check: build/gen/.done
