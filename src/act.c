@@ -82,6 +82,18 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 		return diag_set(d, "--act", 0, 0, "script is over the limit of %d bytes", ACT_MAX_BYTES);
 	if (memchr(text, 0, len))
 		return diag_set(d, "--act", 0, 0, "script holds a NUL byte");
+	/* Plain ASCII only, as in a world file: a stray byte would otherwise be
+	 * echoed raw into the diagnostic and onto the user's terminal. */
+	for (size_t i = 0, line = 1, col = 1; i < len; i++, col++) {
+		unsigned char c = (unsigned char)text[i];
+		if (c == '\n') {
+			line++;
+			col = 0;
+		} else if ((c < 0x20 && c != '\t' && c != '\r') || c > 0x7e) {
+			return diag_set(d, "--act", (int)line, (int)col,
+					"unexpected byte 0x%02x (a script is plain ASCII text)", c);
+		}
+	}
 	for (;;) {
 		size_t start, n;
 		if (!next_word(&r, &start, &n)) {
@@ -106,6 +118,7 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 		if (k == 5) {
 			free(*cmds);
 			*cmds = NULL;
+			*count = 0;
 			return act_fail(&r, col,
 					"unknown command (move DX DY, grasp, push DX DY, turn DEG, release):",
 					w, n);

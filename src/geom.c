@@ -101,6 +101,15 @@ bool geom_point_in_polygon(const Polygon *p, Vec2 q)
 	return in;
 }
 
+double geom_point_segment_distance(Vec2 q, Vec2 a, Vec2 b)
+{
+	Vec2 ab = vec2_sub(b, a), aq = vec2_sub(q, a);
+	double len2 = vec2_dot(ab, ab), f = len2 > 0 ? vec2_dot(aq, ab) / len2 : 0;
+	f = f < 0 ? 0 : f > 1 ? 1 : f;
+	Vec2 d = vec2_sub(aq, vec2_scale(ab, f));
+	return hypot(d.x, d.y);
+}
+
 Vec2 geom_rotate(Vec2 p, Vec2 centre, double c, double s)
 {
 	Vec2 d = vec2_sub(p, centre);

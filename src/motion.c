@@ -60,10 +60,13 @@ static Vec2 motion_utak_at(const Motion *m, double f)
  * of it beside him): there the TABLE cannot tell whether his point stays out. */
 static bool enters_polygon(const Polygon *p, Vec2 a, Vec2 b)
 {
-	if (geom_point_in_polygon(p, b))
+	if (table_point_inside(p, b))
 		return true;
 	for (int32_t i = 0; i < p->count; i++) {
 		Vec2 c = p->v[i], d = p->v[(i + 1) % p->count];
+		/* The edge he stands on (table.h, TABLE_TOUCH): leaving it is no crossing. */
+		if (geom_point_segment_distance(a, c, d) <= TABLE_TOUCH)
+			continue;
 		double o1 = geom_orient(a, b, c), o2 = geom_orient(a, b, d);
 		double o3 = geom_orient(c, d, a), o4 = geom_orient(c, d, b);
 		if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
@@ -195,7 +198,26 @@ static void motion_turn(World *w, Table *t, const MotorCommand *cmd, MotorOutcom
 	for (int32_t i = 0; i < m.shape0.count; i++)
 		r = fmax(r, hypot(m.shape0.v[i].x - m.utak0.x, m.shape0.v[i].y - m.utak0.y));
 	double step_deg = r > 0 ? (MOTION_STEP / r) * (180.0 / 3.14159265358979323846) : 360;
-	motion_run(&m, (int64_t)fmax(1, ceil(fabs(cmd->deg) / step_deg)), out);
+	/* A turn past a full circle sweeps no pose the first circle did not, and only
+	 * the held object moves: when the first circle is free, so is the rest, and
+	 * only its last part, deg mod 360, need be swept. (Sweeping it all made
+	 * "turn 1000000" of a long object take most of an hour.) */
+	double skipped = 0;
+	if (fabs(cmd->deg) > 360) {
+		m.deg = cmd->deg > 0 ? 360 : -360;
+		out->asked = m.deg;
+		motion_run(&m, (int64_t)ceil(360 / step_deg), out);
+		out->asked = cmd->deg;
+		if (out->halted)
+			return;
+		m.shape0 = w->objects[w->held].shape;
+		m.deg = fmod(cmd->deg, 360);
+		skipped = cmd->deg - m.deg;
+	}
+	out->asked = m.deg;
+	motion_run(&m, (int64_t)fmax(1, ceil(fabs(m.deg) / step_deg)), out);
+	out->asked = cmd->deg;
+	out->done += skipped;
 }
 
 static void motion_grasp(World *w, const Table *t, MotorOutcome *out)

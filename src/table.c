@@ -102,6 +102,16 @@ bool table_fits(const Table *t, const Polygon *p, int32_t k)
 	return table_conflict(t, p, k, &x, &y) == TABLE_FLOOR;
 }
 
+bool table_point_inside(const Polygon *p, Vec2 q)
+{
+	if (!geom_point_in_polygon(p, q))
+		return false;
+	for (int32_t i = 0; i < p->count; i++)
+		if (geom_point_segment_distance(q, p->v[i], p->v[(i + 1) % p->count]) <= TABLE_TOUCH)
+			return false;
+	return true;
+}
+
 /* ---- building --------------------------------------------------------------- */
 
 int table_build(Table *t, const World *w, Diag *d)
@@ -139,6 +149,10 @@ int table_build(Table *t, const World *w, Diag *d)
 	int32_t ux, uy;
 	table_square_of(w->utak, &ux, &uy);
 	int32_t who = table_owner(t, ux, uy);
+	/* He may share his square with an object his point is outside of: one he
+	 * pushed or turned and let go beside him (motion.c), which -o writes. */
+	if (who > 0 && !table_point_inside(&w->objects[who - 1].shape, w->utak))
+		who = TABLE_FLOOR;
 	if (who != TABLE_FLOOR) {
 		diag_set(d, w->file, w->utak_line, 1, "Utak's square (%d, %d) is %s", (int)ux, (int)uy,
 			 who == TABLE_VERGE ? "in the verge or a wall" : "inside an object");
@@ -240,7 +254,7 @@ bool table_validate(const Table *t, const World *w, char *why, size_t size)
 	/* His square may share an object's squares only while he touches it (he
 	 * pushed it, then let go): his point itself is never inside an object. */
 	for (int32_t k = 0; k < w->object_count; k++)
-		if (geom_point_in_polygon(&w->objects[k].shape, w->utak)) {
+		if (table_point_inside(&w->objects[k].shape, w->utak)) {
 			snprintf(why, size, "Utak's point is inside object '%s'", w->objects[k].name);
 			return false;
 		}

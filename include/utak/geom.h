@@ -54,6 +54,8 @@ Box geom_polygon_box(const Polygon *p);
 bool geom_polygon_is_simple(const Polygon *p);
 /* geom_point_in_polygon: strictly inside (points on an edge may go either way). */
 bool geom_point_in_polygon(const Polygon *p, Vec2 q);
+/* geom_point_segment_distance: the distance from q to the closed segment ab. */
+double geom_point_segment_distance(Vec2 q, Vec2 a, Vec2 b);
 /* geom_segments_cross: the closed segments ab and cd share a point. */
 bool geom_segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 

@@ -57,6 +57,16 @@ bool table_fits(const Table *t, const Polygon *p, int32_t k);
  * when none. Parts of p off the TABLE conflict with the verge. */
 int32_t table_conflict(const Table *t, const Polygon *p, int32_t k, int32_t *x, int32_t *y);
 
+/* Utak's point is inside an object only when it is inside by more than TABLE_TOUCH
+ * squares. He often stands exactly on an object's edge (a move halts there); a
+ * turn rotates the held object about his point, which keeps him on the edge in
+ * exact arithmetic, but rounding may carry the edge past him by ~1e-15. Without
+ * this tolerance that made him "inside": stuck for good, and his -o world
+ * unreadable. Far below anything a world file or a motion can mean. */
+#define TABLE_TOUCH 1e-9
+/* table_point_inside(p, q): q is inside p and farther than TABLE_TOUCH from its edges. */
+bool table_point_inside(const Polygon *p, Vec2 q);
+
 /* table_dump(t, w, f): H lines of exactly W characters, north row first: '.'
  * floor, the colour letter of an object, 'B' verge, '@' Utak. */
 void table_dump(const Table *t, const World *w, FILE *f);

@@ -1,0 +1,3 @@
+object a A 4 4 8 4 8 8
+table 20 20
+utak 2.5 2.5 north

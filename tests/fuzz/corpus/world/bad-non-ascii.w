@@ -1,0 +1,3 @@
+table 20 20
+object café A 4 4 8 4 8 8
+utak 2.5 2.5 north

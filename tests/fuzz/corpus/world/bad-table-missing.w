@@ -1,0 +1,1 @@
+utak 5.5 5.5 north

@@ -1,0 +1,2 @@
+table 2 2
+utak 0.5 0.5 north

@@ -1,0 +1,2 @@
+table 20
+utak 5.5 5.5 north

@@ -1,0 +1,3 @@
+table 20 20
+wall 4 4 8 4 8 8 4 8
+utak 5.5 5.5 north

@@ -1,0 +1,2 @@
+table 20 20
+utak 25 5.5 north

@@ -1,0 +1,3 @@
+table 20 20
+utak 5.5 5.5 north
+utak 6.5 5.5 north

@@ -1,0 +1,4 @@
+table 20 20
+verge 1 1 19 1 19 19
+verge 1 1 19 1 19 19
+utak 2.5 2.5 north
