@@ -1,118 +1,138 @@
 /* main.c - the utak command: reads a world, runs Utak in it, prints what happened.
  *
  * The only file that sees both sides of the wall (impression.h): it owns the body
- * (World, Table: the simulator) and hands the mind only impressions. It alone
- * prints diagnostics and chooses the exit status: 0 done, 1 a task was not
- * achieved, 2 bad usage or bad input. */
+ * (World, Table: the simulator) and the mind (Controller), and passes between them
+ * only impressions and motor commands. It alone prints diagnostics and chooses the
+ * exit status: 0 done, 1 a task was not achieved, 2 bad usage or bad input. */
+#include <errno.h>
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "utak/act.h"
+#include "utak/controller.h"
 #include "utak/eye.h"
+#include "utak/judge.h"
 #include "utak/motion.h"
-#include "utak/regions.h"
 #include "utak/retina.h"
+#include "utak/svg.h"
 #include "utak/table.h"
 #include "utak/task.h"
 #include "utak/util.h"
 #include "utak/world.h"
-#include "utak/worldmodel.h"
 
 #define UTAK_VERSION "0.1.0"
+/* The default limit on action cycles: several times what any task in worlds/
+ * needs, small enough that a hopeless task ends within a second or two. */
+#define UTAK_MAX_CYCLES 300
+/* The largest --max-cycles accepted. */
+#define UTAK_MAX_CYCLES_LIMIT 100000
 
 static const char usage_text[] =
 	"usage: utak [OPTIONS] WORLD [TASK]\n"
-	"Runs Utak, the robot of Rosenberg and Jenkin's TABLETOP, in the world file WORLD.\n"
+	"Runs Utak, the robot of Rosenberg and Jenkin's TABLETOP, in the world file WORLD,\n"
+	"on TASK (e.g. \"go ne-corner\", \"Push the square into the northeast corner\").\n"
 	"\n"
-	"  --act SCRIPT   carry out motor commands, e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
-	"  --dump LIST    print dumps after the commands, comma-separated:\n"
-	"                 table, retina, touch, regions, model\n"
-	"  -o FILE        write the final state as a world file\n"
-	"  -n, --dry-run  read WORLD and TASK, say how the task reads, and stop\n"
-	"  -h, --help     this text\n"
-	"  -V, --version  the version\n"
+	"  --act SCRIPT      carry out motor commands instead of a task,\n"
+	"                    e.g. \"move 3 0; grasp; push 0 5; turn 90; release\"\n"
+	"  --dump LIST       print dumps, comma-separated: table, retina, touch, regions,\n"
+	"                    model, screen, skeleton, pathgraph, rooms, path\n"
+	"  --planner NAME    skeleton (the paper's, default), grid or visibility\n"
+	"  --max-cycles N    give up a task after N action cycles (default 300)\n"
+	"  --svg FILE        draw the run as an SVG picture\n"
+	"  -q, --quiet       print only the verdict of a task\n"
+	"  -v, --verbose     print every dump after every cycle\n"
+	"  -o FILE           write the final state as a world file\n"
+	"  -n, --dry-run     read WORLD and TASK, say how the task reads, and stop\n"
+	"  -h, --help        this text\n"
+	"  -V, --version     the version\n"
 	"See utak(1) and, for the world file, utak(5).\n";
 
-/* The dumps, in the order they are printed whatever order --dump names them. */
 typedef struct Body {
 	World world;
 	Table table;
-	Impression sensed;	/* what the senses gave after the last halt */
+	Impression sensed; /* what the senses gave after the last halt */
 } Body;
 
-/* The mind: the controller side. It is handed impressions and the commands it
- * gave, nothing else (impression.h). */
-typedef struct Mind {
-	Impression impression;	/* the last impression received */
-	Regions regions;	/* its regions and their reading (paper 3.4.1-3.4.2) */
-	WorldModel model;	/* what Utak believes (paper 3.3-3.5) */
-} Mind;
+/* ---- dumps -------------------------------------------------------------------------- */
 
-/* mind_start: initialization steps 1-5 of paper 3.1. */
-static void mind_start(Mind *m, const Impression *first)
+typedef void DumpFn(const Body *b, Controller *c, FILE *f);
+
+static void dump_table(const Body *b, Controller *c, FILE *f)
 {
-	worldmodel_init(&m->model);
-	m->impression = *first;
-	regions_find(&m->regions, first);
-	worldmodel_accommodate_first(&m->model, first);
-}
-
-/* mind_perceive: step 11 of paper 3.1, after the command it gave. */
-static void mind_perceive(Mind *m, const MotorCommand *cmd, const Impression *imp)
-{
-	m->impression = *imp;
-	regions_find(&m->regions, imp);
-	worldmodel_accommodate(&m->model, cmd, imp);
-}
-
-typedef void DumpFn(const Body *b, const Mind *m, FILE *f);
-
-static void dump_table(const Body *b, const Mind *m, FILE *f)
-{
-	(void)m;
+	(void)c;
 	fprintf(f, "TABLE %d x %d, north at the top:\n", (int)b->table.w, (int)b->table.h);
 	table_dump(&b->table, &b->world, f);
 }
 
-static void dump_retina(const Body *b, const Mind *m, FILE *f)
+static void dump_retina(const Body *b, Controller *c, FILE *f)
 {
-	(void)m;
+	(void)c;
 	fputs("retina, ahead at the top:\n", f);
 	eye_print_picture(b->sensed.level, f);
 }
 
-static void dump_touch(const Body *b, const Mind *m, FILE *f)
+static void dump_touch(const Body *b, Controller *c, FILE *f)
 {
-	(void)m;
+	(void)c;
 	fputs("touch, ahead at the top:\n", f);
 	retina_print_touch(&b->sensed, f);
 }
 
-static void dump_regions(const Body *b, const Mind *m, FILE *f)
+static void dump_regions(const Body *b, Controller *c, FILE *f)
 {
 	(void)b;
-	regions_dump(&m->regions, f);
+	regions_dump(&c->regions, f);
 }
 
-static void dump_model(const Body *b, const Mind *m, FILE *f)
+static void dump_model(const Body *b, Controller *c, FILE *f)
 {
 	(void)b;
-	worldmodel_dump(&m->model, f);
+	worldmodel_dump(&c->model, f);
 }
 
+static void dump_screen(const Body *b, Controller *c, FILE *f)
+{
+	(void)b;
+	controller_dump_screen(c, f);
+}
+
+static void dump_skeleton(const Body *b, Controller *c, FILE *f)
+{
+	(void)b;
+	controller_dump_skeleton(c, f);
+}
+
+static void dump_pathgraph(const Body *b, Controller *c, FILE *f)
+{
+	(void)b;
+	controller_dump_pathgraph(c, f);
+}
+
+static void dump_rooms(const Body *b, Controller *c, FILE *f)
+{
+	(void)b;
+	controller_dump_rooms(c, f);
+}
+
+static void dump_path(const Body *b, Controller *c, FILE *f)
+{
+	(void)b;
+	controller_dump_path(c, f);
+}
+
+/* The dumps, in the order they are printed whatever order --dump names them. */
 static const struct {
 	const char *name;
 	DumpFn *fn;
 } dumps[] = {
-	{"table", dump_table},
-	{"retina", dump_retina},
-	{"touch", dump_touch},
-	{"regions", dump_regions},
-	{"model", dump_model},
+	{"table", dump_table},	     {"retina", dump_retina},	  {"touch", dump_touch},
+	{"regions", dump_regions},   {"model", dump_model},	  {"screen", dump_screen},
+	{"skeleton", dump_skeleton}, {"pathgraph", dump_pathgraph}, {"rooms", dump_rooms},
+	{"path", dump_path},
 };
-enum { DUMP_COUNT = sizeof dumps / sizeof dumps[0] };
+enum { DUMP_COUNT = sizeof dumps / sizeof dumps[0], DUMP_TABLE = 0, DUMP_RETINA = 1 };
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -137,8 +157,8 @@ static int parse_dumps(const char *list, bool want[DUMP_COUNT])
 				strcat(known, k ? ", " : "");
 				strcat(known, dumps[k].name);
 			}
-			fprintf(stderr, "utak: --dump: unknown dump '%.*s' (known: %s)\n", (int)(n > 40 ? 40 : n),
-				s, known);
+			fprintf(stderr, "utak: --dump: unknown dump '%.*s' (known: %s)\n", (int)(n > 40 ? 40 : n), s,
+				known);
 			return 2;
 		}
 		want[i] = true;
@@ -148,35 +168,160 @@ static int parse_dumps(const char *list, bool want[DUMP_COUNT])
 	}
 }
 
+static void print_dumps(const bool want[DUMP_COUNT], const Body *b, Controller *c)
+{
+	for (int i = 0; i < DUMP_COUNT; i++)
+		if (want[i])
+			dumps[i].fn(b, c, stdout);
+}
+
+/* ---- the run ------------------------------------------------------------------------ */
+
+typedef struct Options {
+	const char *act, *outfile, *svgfile, *task_text;
+	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose;
+	PlannerKind planner;
+	long max_cycles;
+} Options;
+
+/* act(o, body, ctl, cmds, n): the --act run: each command, its outcome, and the
+ * mind perceiving the impression that follows (paper 3.1 steps 10-11). */
+static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
+{
+	for (int i = 0; i < n; i++) {
+		MotorOutcome out;
+		motion_execute(&body->world, &body->table, &cmds[i], &out);
+		printf("act %d: ", i + 1);
+		motion_print(&cmds[i], &out, stdout);
+		putchar('\n');
+		retina_sense(&body->world, &body->table, &body->sensed);
+		controller_perceive(ctl, &cmds[i], &body->sensed);
+	}
+	if (!o->any_dump) {
+		bool table_only[DUMP_COUNT] = {[DUMP_TABLE] = true};
+		print_dumps(table_only, body, ctl);
+	} else {
+		print_dumps(o->want, body, ctl);
+	}
+}
+
+/* run_task(o, body, ctl, task): the action cycle on a task, then the verdict of the
+ * ground truth. Returns the exit status. */
+static int run_task(const Options *o, Body *body, Controller *ctl, const Task *task, World *start)
+{
+	char form[64];
+	task_short_form(task, form, sizeof form);
+	if (!o->quiet) {
+		const char *number = task_paper_number(task);
+		printf("task: %s%s%s, planner %s\n", form, number ? ", the paper's task " : "", number ? number : "",
+		       planner_name(o->planner));
+		bool first[DUMP_COUNT] = {[DUMP_TABLE] = true, [DUMP_RETINA] = true};
+		print_dumps(o->any_dump || o->verbose ? o->want : first, body, ctl);
+	}
+	int cap = 64, count = 0;
+	Vec2 *trail = util_alloc((size_t)cap, sizeof *trail);
+	trail[count++] = body->world.utak;
+	MotorCommand cmd;
+	long cycle = 0;
+	bool out_of_cycles = false;
+	while (controller_decide(ctl, &cmd)) {
+		if (cycle == o->max_cycles) {
+			out_of_cycles = true;
+			break;
+		}
+		cycle++;
+		MotorOutcome out;
+		motion_execute(&body->world, &body->table, &cmd, &out);
+		trail = util_grow(trail, &cap, count + 1, sizeof *trail);
+		trail[count++] = body->world.utak;
+		retina_sense(&body->world, &body->table, &body->sensed);
+		controller_perceive(ctl, &cmd, &body->sensed);
+		if (!o->quiet) {
+			printf("cycle %ld: ", cycle);
+			motion_print(&cmd, &out, stdout);
+			printf(" | %s\n", ctl->note);
+			if (o->verbose)
+				print_dumps(o->want, body, ctl);
+		}
+	}
+	if (!o->quiet) {
+		bool last[DUMP_COUNT] = {[DUMP_TABLE] = true};
+		print_dumps(last, body, ctl);
+	}
+	if (o->svgfile) {
+		FILE *f = fopen(o->svgfile, "w");
+		if (f) {
+			svg_draw(f, &body->world, &body->table, ctl, trail, count);
+			fclose(f);
+		} else {
+			fprintf(stderr, "utak: %s: cannot write: %s\n", o->svgfile, strerror(errno));
+		}
+	}
+	char why[256];
+	bool achieved = judge_task(start, &body->world, &body->table, task, trail, count, why, sizeof why);
+	free(trail);
+	const char *belief = ctl->phase == PHASE_DONE ? "achieved" : "not achieved";
+	if (achieved) {
+		printf("task: achieved (%s, %ld cycles)\n", why, cycle);
+		return 0;
+	}
+	if (out_of_cycles)
+		printf("task: failed: out of cycles (%ld); %s\n", o->max_cycles, why);
+	else if (ctl->phase == PHASE_FAILED)
+		printf("task: failed: %s; %s\n", ctl->why, why);
+	else
+		printf("task: failed: %s (Utak believes it %s)\n", why, belief);
+	return 1;
+}
+
 int main(int argc, char **argv)
 {
 	static const struct option longopts[] = {
-		{"act", required_argument, NULL, 'a'},
-		{"dump", required_argument, NULL, 'd'},
-		{"help", no_argument, NULL, 'h'},
-		{"dry-run", no_argument, NULL, 'n'},
-		{"version", no_argument, NULL, 'V'},
+		{"act", required_argument, NULL, 'a'},	      {"dump", required_argument, NULL, 'd'},
+		{"planner", required_argument, NULL, 'p'},    {"max-cycles", required_argument, NULL, 'm'},
+		{"svg", required_argument, NULL, 's'},	      {"quiet", no_argument, NULL, 'q'},
+		{"verbose", no_argument, NULL, 'v'},	      {"help", no_argument, NULL, 'h'},
+		{"dry-run", no_argument, NULL, 'n'},	      {"version", no_argument, NULL, 'V'},
 		{NULL, 0, NULL, 0},
 	};
-	const char *act = NULL, *outfile = NULL;
-	bool want[DUMP_COUNT] = {false}, any_dump = false, dry_run = false;
+	Options o = {.planner = PLANNER_SKELETON, .max_cycles = UTAK_MAX_CYCLES};
 	int c;
 	opterr = 0;
-	while ((c = getopt_long(argc, argv, ":o:hnV", longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":o:hnqvV", longopts, NULL)) != -1) {
+		char *end;
 		switch (c) {
 		case 'a':
-			act = optarg;
+			o.act = optarg;
 			break;
 		case 'd':
-			if (parse_dumps(optarg, want))
+			if (parse_dumps(optarg, o.want))
 				return 2;
-			any_dump = true;
+			o.any_dump = true;
+			break;
+		case 'p':
+			if (!planner_parse(optarg, &o.planner))
+				return usage_error("--planner: unknown planner '%s' (skeleton, grid or visibility)", optarg);
+			break;
+		case 'm':
+			errno = 0;
+			o.max_cycles = strtol(optarg, &end, 10);
+			if (errno || end == optarg || *end || o.max_cycles < 0 || o.max_cycles > UTAK_MAX_CYCLES_LIMIT)
+				return usage_error("--max-cycles: '%s' is not a whole number from 0 to 100000", optarg);
+			break;
+		case 's':
+			o.svgfile = optarg;
 			break;
 		case 'o':
-			outfile = optarg;
+			o.outfile = optarg;
+			break;
+		case 'q':
+			o.quiet = true;
+			break;
+		case 'v':
+			o.verbose = true;
 			break;
 		case 'n':
-			dry_run = true;
+			o.dry_run = true;
 			break;
 		case 'h':
 			fputs(usage_text, stdout);
@@ -194,23 +339,23 @@ int main(int argc, char **argv)
 		return usage_error("%s", "no WORLD file given");
 	if (argc - optind > 2)
 		return usage_error("too many arguments, from '%s' (quote the TASK)", argv[optind + 2]);
-	const char *path = argv[optind], *task = optind + 1 < argc ? argv[optind + 1] : NULL;
+	const char *path = argv[optind];
+	o.task_text = optind + 1 < argc ? argv[optind + 1] : NULL;
+	if (o.verbose && !o.any_dump)
+		for (int i = 0; i < DUMP_COUNT; i++)
+			o.want[i] = true;
 	Diag d;
-	Task goal;
-	if (task && task_parse(task, &goal, &d)) {
+	Task task;
+	if (o.task_text && task_parse(o.task_text, &task, &d)) {
 		fprintf(stderr, "utak: %s\n", d.msg);
 		return 2;
 	}
-	if (task && act)
+	if (o.task_text && o.act)
 		return usage_error("%s", "give either --act or a TASK, not both");
-	if (task && !dry_run) {
-		fprintf(stderr, "utak: the controller is not built yet; drive Utak with --act\n");
-		return 2;
-	}
 
 	MotorCommand *cmds = NULL;
 	int ncmds = 0;
-	if (act && act_parse(act, strlen(act), &cmds, &ncmds, &d)) {
+	if (o.act && act_parse(o.act, strlen(o.act), &cmds, &ncmds, &d)) {
 		fprintf(stderr, "utak: %s\n", d.msg);
 		return 2;
 	}
@@ -221,57 +366,50 @@ int main(int argc, char **argv)
 		free(cmds);
 		return 2;
 	}
-	if (dry_run) {
-		if (task) {
+	int status = 0;
+	if (o.dry_run) {
+		if (o.task_text) {
 			char form[64];
-			const char *number = task_paper_number(&goal);
-			task_short_form(&goal, form, sizeof form);
-			printf("task: \"%s\" reads as \"%s\"", task, form);
+			const char *number = task_paper_number(&task);
+			task_short_form(&task, form, sizeof form);
+			printf("task: \"%s\" reads as \"%s\"", o.task_text, form);
 			if (number)
 				printf(", the paper's task %s", number);
 			putchar('\n');
 		}
-		free(cmds);
-		table_free(&body.table);
-		world_free(&body.world);
-		return 0;
-	}
-	if (!any_dump)
-		want[0] = true; /* the TABLE */
-
-	Mind mind;
-	retina_sense(&body.world, &body.table, &body.sensed);
-	mind_start(&mind, &body.sensed);
-	for (int i = 0; i < ncmds; i++) {
-		MotorOutcome out;
-		motion_execute(&body.world, &body.table, &cmds[i], &out);
-		printf("act %d: ", i + 1);
-		motion_print(&cmds[i], &out, stdout);
-		putchar('\n');
-		/* Utak halts: a fresh impression, and the mind perceives it (paper 3.1 steps 10-11). */
+	} else {
+		/* The world as it began, for the judge: a copy of the objects. */
+		World start = body.world;
+		start.objects = util_alloc((size_t)body.world.object_count + 1, sizeof *start.objects);
+		memcpy(start.objects, body.world.objects, sizeof *start.objects * (size_t)body.world.object_count);
+		Controller *ctl = util_alloc(1, sizeof *ctl);
+		controller_init(ctl, o.planner);
+		if (o.task_text)
+			controller_set_task(ctl, &task);
 		retina_sense(&body.world, &body.table, &body.sensed);
-		mind_perceive(&mind, &cmds[i], &body.sensed);
+		controller_start(ctl, &body.sensed);
+		if (o.task_text)
+			status = run_task(&o, &body, ctl, &task, &start);
+		else
+			run_act(&o, &body, ctl, cmds, ncmds);
+		controller_free(ctl);
+		free(ctl);
+		free(start.objects);
 	}
-	for (int i = 0; i < DUMP_COUNT; i++)
-		if (want[i])
-			dumps[i].fn(&body, &mind, stdout);
-
-	int status = 0;
-	if (outfile) {
-		FILE *f = fopen(outfile, "w");
+	if (o.outfile && !o.dry_run) {
+		FILE *f = fopen(o.outfile, "w");
 		if (!f) {
-			fprintf(stderr, "utak: %s: cannot write\n", outfile);
+			fprintf(stderr, "utak: %s: cannot write: %s\n", o.outfile, strerror(errno));
 			status = 2;
 		} else {
 			world_write(&body.world, f);
 			if (fclose(f) != 0) {
-				fprintf(stderr, "utak: %s: cannot write\n", outfile);
+				fprintf(stderr, "utak: %s: cannot write\n", o.outfile);
 				status = 2;
 			}
 		}
 	}
 	free(cmds);
-	worldmodel_free(&mind.model);
 	table_free(&body.table);
 	world_free(&body.world);
 	return status;

@@ -8,7 +8,9 @@
 #
 # THE ONE LIST: the simulator's modules. Every other src/*.c except main.c (which
 # owns both sides) is on the controller's side of the wall, or shared.
-SIMULATOR="world table motion retina"
+# judge and svg read the real world too: the ground-truth verdict and the picture of
+# a run (which shows the world beside what Utak believed).
+SIMULATOR="world table motion retina judge svg"
 
 cd "$(dirname "$0")/.." || exit 2
 status=0

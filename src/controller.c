@@ -1,0 +1,848 @@
+/* controller.c - the robot-controller: initialization, plan and action cycle (paper 3.1).
+ * CONTROLLER SIDE: it knows the world only through impressions and its own commands.
+ *
+ * The steps are the paper's:
+ *   1-5  controller_start: default world model, first impression, regions and
+ *        their interpretation, accommodation (worldmodel.c, regions.c);
+ *   6    controller_set_task: the task, read in terms of the world model (an object
+ *        named but not seen is looked for: Utak explores the frontiers of the
+ *        unseen until he sees it or has seen everything);
+ *   7    the plan: a goal on the screen, and a path to it (screen.c, planner.c);
+ *   8-9  controller_decide: is the task complete? else the next leg of the plan;
+ *   10   (the simulator carries it out; main.c);
+ *   11   controller_perceive: accommodate the new impression;
+ *   12   is the plan still viable (its goal unchanged, its path still free)?
+ *   13   if not, plan again.
+ *
+ * GOALS. A corner is the reachable space of Utak's starting room extreme in that
+ * compass direction (his frame: north is +y). The next room is reached through a
+ * door of the room segmentation (rooms.c): the goal is the other room's centre.
+ * An object is named by its shape (shape.c), the nearest of that shape if several;
+ * going to it means standing beside it (it shows in touch). Going round it visits
+ * four points outside the corners of its rectangle, counter-clockwise, and
+ * returns. Pushing it means: go beside it, grasp, push it (Utak and object
+ * rigidly, so any side will do) along a path planned in its configuration space
+ * (cspace.c: the screen eroded by the held squares), release.
+ *
+ * All coordinates are in the world model's $floor frame unless named screen. */
+#include "utak/controller.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/cspace.h"
+#include "utak/rooms.h"
+#include "utak/shape.h"
+#include "utak/util.h"
+
+/* ---- small helpers ------------------------------------------------------------- */
+
+static Vec2 centre_of(int32_t x, int32_t y) { return vec2(x + 0.5, y + 0.5); }
+
+static double distance(Vec2 a, Vec2 b) { return hypot(a.x - b.x, a.y - b.y); }
+
+static Vec2 m_utak(const Controller *c) { return c->model.utak; }
+
+/* The touch squares in Utak's frame, in the order of Impression.touch. */
+static const int8_t touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0},	{1, -1},
+						    {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}};
+
+/* touching(c, k): touch shows an object's colour in a square of node k's rectangle
+ * (any object when k < 0). */
+static bool touching(const Controller *c, int32_t k)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	for (int i = 0; i < TOUCH_CELLS; i++) {
+		char colour = c->impression.touch[i];
+		if (colour < 'A' || colour > 'Z' || colour == 'B')
+			continue;
+		if (k < 0)
+			return true;
+		const Box *r = &c->model.node[k].rect;
+		double x = ux + touch_offset[i][0] + 0.5, y = uy + touch_offset[i][1] + 0.5;
+		if (x > r->lo.x && x < r->hi.x && y > r->lo.y && y < r->hi.y)
+			return true;
+	}
+	return false;
+}
+
+/* Screen cell of a model point; false when off the screen. */
+static bool cell_of(const Screen *s, Vec2 p, int32_t *i, int32_t *j)
+{
+	*i = (int32_t)floor(p.x) - s->x0;
+	*j = (int32_t)floor(p.y) - s->y0;
+	return *i >= 0 && *j >= 0 && *i < s->w && *j < s->h;
+}
+
+/* reach(g, si, sj, dist): breadth-first steps over g's free cells, 4-connected
+ * (the free space's topology, skeleton.h), from (si, sj); -1 where unreached. */
+static void reach(const Grid *g, int32_t si, int32_t sj, int32_t *dist)
+{
+	int64_t n = (int64_t)g->w * g->h;
+	for (int64_t k = 0; k < n; k++)
+		dist[k] = -1;
+	if (!grid_free_at(g, si, sj))
+		return;
+	int32_t *queue = util_alloc((size_t)n, sizeof *queue);
+	int64_t head = 0, tail = 0;
+	queue[tail++] = sj * g->w + si;
+	dist[sj * g->w + si] = 0;
+	while (head < tail) {
+		int32_t k = queue[head++], x = k % g->w, y = k / g->w;
+		static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+		for (int d = 0; d < 4; d++) {
+			int32_t nx = x + step[d][0], ny = y + step[d][1];
+			if (grid_free_at(g, nx, ny) && dist[ny * g->w + nx] < 0) {
+				dist[ny * g->w + nx] = dist[k] + 1;
+				queue[tail++] = ny * g->w + nx;
+			}
+		}
+	}
+	free(queue);
+}
+
+/* The rooms of the screen's fixed space (objects counted as space: moving an
+ * object does not change the rooms). The pathgraph borrows the skeleton. */
+typedef struct RoomMap {
+	Skeleton skeleton;
+	Pathgraph pathgraph;
+	Rooms rooms;
+} RoomMap;
+
+static void roommap_build(RoomMap *r, const Screen *s)
+{
+	skeleton_init(&r->skeleton);
+	pathgraph_init(&r->pathgraph);
+	rooms_init(&r->rooms);
+	skeleton_compute(&r->skeleton, &s->fixed);
+	pathgraph_build(&r->pathgraph, &r->skeleton, &s->fixed);
+	rooms_find(&r->rooms, &r->pathgraph);
+}
+
+static void roommap_free(RoomMap *r)
+{
+	rooms_free(&r->rooms);
+	pathgraph_free(&r->pathgraph);
+	skeleton_free(&r->skeleton);
+}
+
+/* ---- objects by shape ------------------------------------------------------------- */
+
+/* object_shape(m, k): the shape of object node k, from the squares believed occupied
+ * within its containing rectangle. */
+static Shape object_shape(const WorldModel *m, int32_t k)
+{
+	const ModelNode *n = &m->node[k];
+	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
+	int32_t w = (int32_t)ceil(n->rect.hi.x) - x0, h = (int32_t)ceil(n->rect.hi.y) - y0;
+	if (w <= 0 || h <= 0 || w > 256 || h > 256)
+		return SHAPE_NONE;
+	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
+	for (int32_t y = 0; y < h; y++)
+		for (int32_t x = 0; x < w; x++)
+			mask[y * w + x] = worldmodel_belief(m, x0 + x, y0 + y) == BELIEF_OCCUPIED;
+	Shape s = shape_classify(mask, w, h);
+	free(mask);
+	return s;
+}
+
+/* find_target(c): the model node of the task's object: the one it chose before if
+ * still there, else the nearest object of the task's shape; -1 when none is seen. */
+static int32_t find_target(Controller *c)
+{
+	const WorldModel *m = &c->model;
+	int32_t best = -1;
+	double best_d = INFINITY;
+	for (int32_t k = 0; k < m->node_count; k++) {
+		const ModelNode *n = &m->node[k];
+		if (n->kind != NODE_OBJECT)
+			continue;
+		/* An object is named by the shape it shows now: a coarse first look may
+		 * have shown another. The one chosen before is kept while it fits. */
+		if (object_shape(m, k) != c->task.shape)
+			continue;
+		if (c->target != 0 && n->ident == c->target)
+			return k;
+		Vec2 mid = vec2((n->rect.lo.x + n->rect.hi.x) / 2, (n->rect.lo.y + n->rect.hi.y) / 2);
+		double d = distance(mid, m->utak);
+		if (d < best_d) {
+			best_d = d;
+			best = k;
+		}
+	}
+	if (best >= 0)
+		c->target = m->node[best].ident;
+	return best;
+}
+
+/* ---- goals ------------------------------------------------------------------------ */
+
+typedef struct GoalResult {
+	bool found;
+	bool exploring;
+	Vec2 goal;		/* model frame */
+	char why[160];		/* when not found */
+} GoalResult;
+
+/* corner_score: how far a cell lies in the task's compass direction (his frame). */
+static int64_t corner_score(Corner k, int32_t x, int32_t y)
+{
+	int sx = (k == CORNER_NE || k == CORNER_SE) ? 1 : -1;
+	int sy = (k == CORNER_NE || k == CORNER_NW) ? 1 : -1;
+	return (int64_t)sx * x + (int64_t)sy * y;
+}
+
+/* frontier(c, g, dist): the nearest reachable known-floor cell beside an unknown one. */
+static bool frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t best = -1, best_d = INT32_MAX;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t k = j * s->w + i;
+			if (dist[k] <= 0 || s->label[k] != SCREEN_SPACE || dist[k] >= best_d)
+				continue;
+			Vec2 here = centre_of(s->x0 + i, s->y0 + j);
+			bool visited = false;
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = distance(here, c->visited[v]) < 1.0;
+			if (visited)
+				continue;
+			if (screen_label(s, i + 1, j) == SCREEN_UNKNOWN || screen_label(s, i - 1, j) == SCREEN_UNKNOWN ||
+			    screen_label(s, i, j + 1) == SCREEN_UNKNOWN || screen_label(s, i, j - 1) == SCREEN_UNKNOWN) {
+				best = k;
+				best_d = dist[k];
+			}
+		}
+	if (best < 0)
+		return false;
+	*goal = centre_of(s->x0 + best % s->w, s->y0 + best / s->w);
+	return true;
+}
+
+/* goal_corner(c, g, dist, room): the reachable cell of `room` extreme toward the
+ * task's corner (any room when room < 0). */
+static bool goal_corner(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
+			int32_t room, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int64_t best_score = INT64_MIN;
+	int32_t best = -1;
+	for (int32_t j = 0; j < g->h; j++)
+		for (int32_t i = 0; i < g->w; i++) {
+			int32_t k = j * g->w + i;
+			if (dist[k] < 0 || (room >= 0 && rooms_at(&rm->rooms, i, j) != room))
+				continue;
+			/* Only space seen to be floor: the unknown beyond a verge glimpsed in the
+			 * periphery would draw Utak off after corners that are not there. */
+			if (s->label[k] == SCREEN_UNKNOWN)
+				continue;
+			int64_t score = corner_score(c->task.corner, s->x0 + i, s->y0 + j);
+			if (score > best_score) {
+				best_score = score;
+				best = k;
+			}
+		}
+	if (best < 0)
+		return false;
+	*goal = centre_of(s->x0 + best % g->w, s->y0 + best / g->w);
+	return true;
+}
+
+/* goal_beside(c, k, dist): the reachable free cell beside object node k (one of the
+ * 8 around one of its squares: where touch reaches it) nearest Utak by steps. */
+static bool goal_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t best = -1, best_d = INT32_MAX;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t at = j * s->w + i;
+			if (dist[at] < 0 || dist[at] >= best_d)
+				continue;
+			bool beside = false, visited = false;
+			Vec2 here = centre_of(s->x0 + i, s->y0 + j);
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = distance(here, c->visited[v]) < 0.5;
+			if (visited)
+				continue;
+			for (int dy = -1; dy <= 1 && !beside; dy++)
+				for (int dx = -1; dx <= 1 && !beside; dx++)
+					beside = screen_label(s, i + dx, j + dy) == k;
+			if (beside) {
+				best = at;
+				best_d = dist[at];
+			}
+		}
+	if (best < 0)
+		return false;
+	*goal = centre_of(s->x0 + best % s->w, s->y0 + best / s->w);
+	return true;
+}
+
+/* goal_inspect(c, dist): beside the nearest object not yet seen whole in the fovea,
+ * where a closer look may show its shape: part of looking for an object. */
+static bool goal_inspect(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const WorldModel *m = &c->model;
+	double best_d = INFINITY;
+	bool found = false;
+	for (int32_t k = 0; k < m->node_count; k++) {
+		const ModelNode *n = &m->node[k];
+		if (n->kind != NODE_OBJECT)
+			continue;
+		bool coarse = false;
+		for (int32_t y = (int32_t)floor(n->rect.lo.y); y < (int32_t)ceil(n->rect.hi.y) && !coarse; y++)
+			for (int32_t x = (int32_t)floor(n->rect.lo.x); x < (int32_t)ceil(n->rect.hi.x) && !coarse; x++)
+				coarse = worldmodel_belief(m, x, y) == BELIEF_OCCUPIED &&
+					 worldmodel_evidence(m, x, y).res < WORLDMODEL_RES_FOVEA;
+		Vec2 beside;
+		if (!coarse || !goal_beside(c, k, dist, &beside))
+			continue;
+		double d = distance(beside, m->utak);
+		if (d < best_d) {
+			best_d = d;
+			*goal = beside;
+			found = true;
+		}
+	}
+	return found;
+}
+
+/* goal_next_room(c, g, dist, rm, from_room, footprint_ok): the reachable cell nearest
+ * the centre of a room next to from_room (through one of its doors). */
+static bool goal_next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
+			   int32_t from_room, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t doors[64], n = rooms_doors_of(&rm->rooms, from_room, doors, 64);
+	double best_d = INFINITY;
+	int32_t best = -1;
+	for (int32_t d = 0; d < n && d < 64; d++) {
+		const RoomsDoor *door = &rm->rooms.doors[doors[d]];
+		int32_t other = door->room_a == from_room ? door->room_b : door->room_a;
+		const RoomsRoom *room = &rm->rooms.rooms[other];
+		for (int32_t j = 0; j < g->h; j++)
+			for (int32_t i = 0; i < g->w; i++) {
+				int32_t k = j * g->w + i;
+				if (dist[k] < 0 || rooms_at(&rm->rooms, i, j) != other)
+					continue;
+				double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
+				if (dd < best_d) {
+					best_d = dd;
+					best = k;
+				}
+			}
+	}
+	if (best < 0)
+		return false;
+	*goal = centre_of(s->x0 + best % g->w, s->y0 + best / g->w);
+	return true;
+}
+
+/* ---- the plan -------------------------------------------------------------------- */
+
+/* space_for_push(c, g): the configuration space of Utak and the object he holds:
+ * the screen with the held squares freed, eroded by the held squares and his own. */
+static void space_for_push(Controller *c, Grid *out)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	Grid base;
+	grid_init(&base, s->w, s->h, GRID_BLOCKED);
+	memcpy(base.cells, s->free.cells, (size_t)s->w * (size_t)s->h);
+	int32_t ux, uy;
+	worldmodel_utak_square(m, &ux, &uy);
+	int32_t n = m->held_count;
+	/* The footprint: Utak's square and the held squares, as row runs. */
+	int32_t *dx = util_alloc((size_t)n + 1, sizeof *dx), *dy = util_alloc((size_t)n + 1, sizeof *dy);
+	dx[0] = dy[0] = 0;
+	for (int32_t j = 0; j < n; j++) {
+		dx[j + 1] = m->held_dx[j];
+		dy[j + 1] = m->held_dy[j];
+		int32_t i2 = ux + m->held_dx[j] - s->x0, j2 = uy + m->held_dy[j] - s->y0;
+		if (i2 >= 0 && j2 >= 0 && i2 < s->w && j2 < s->h)
+			base.cells[j2 * s->w + i2] = GRID_FREE;
+	}
+	/* Sort by (dy, dx): insertion sort, n is a few dozen. */
+	for (int32_t a = 1; a <= n; a++)
+		for (int32_t b = a; b > 0 && (dy[b] < dy[b - 1] || (dy[b] == dy[b - 1] && dx[b] < dx[b - 1])); b--) {
+			int32_t t = dx[b];
+			dx[b] = dx[b - 1];
+			dx[b - 1] = t;
+			t = dy[b];
+			dy[b] = dy[b - 1];
+			dy[b - 1] = t;
+		}
+	CSpaceFootprint fp;
+	cspace_footprint_init(&fp);
+	for (int32_t a = 0; a <= n; a++) {
+		if (a > 0 && dy[a] == dy[a - 1] && dx[a] <= fp.run[fp.count - 1].dx1 + 1) {
+			if (dx[a] > fp.run[fp.count - 1].dx1)
+				fp.run[fp.count - 1].dx1 = dx[a];
+			continue;
+		}
+		fp.run = util_grow(fp.run, &fp.cap, fp.count + 1, sizeof *fp.run);
+		fp.run[fp.count++] = (CSpaceRun){dy[a], dx[a], dx[a]};
+	}
+	grid_free(out);
+	grid_init(out, s->w, s->h, GRID_BLOCKED);
+	cspace_erode_footprint(&base, &fp, out);
+	cspace_footprint_free(&fp);
+	free(dx);
+	free(dy);
+	grid_free(&base);
+}
+
+/* build_space(c): the grid to plan on, from the current screen: its space, or
+ * when pushing the configuration space. Utak's own square is free whatever the
+ * model says of it: he stands there. */
+static void build_space(Controller *c)
+{
+	if (c->phase == PHASE_PUSH) {
+		space_for_push(c, &c->space);
+	} else {
+		grid_free(&c->space);
+		grid_init(&c->space, c->screen.w, c->screen.h, GRID_BLOCKED);
+		memcpy(c->space.cells, c->screen.free.cells, (size_t)c->screen.w * (size_t)c->screen.h);
+	}
+	int32_t i, j;
+	if (cell_of(&c->screen, c->model.utak, &i, &j))
+		c->space.cells[j * c->space.w + i] = GRID_FREE;
+}
+
+/* choose_goal(c, out): the goal of the current phase on the current screen and
+ * c->space (the screen's space, or the configuration space when pushing). */
+static void choose_goal(Controller *c, GoalResult *out)
+{
+	*out = (GoalResult){0};
+	const Screen *s = &c->screen;
+	const Grid *g = &c->space;
+	int32_t ui, uj;
+	cell_of(s, c->model.utak, &ui, &uj);
+	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
+	reach(g, ui, uj, dist);
+	RoomMap rm;
+	roommap_build(&rm, s);
+	int32_t si, sj;
+	cell_of(s, c->start, &si, &sj);
+	int32_t start_room = rooms_at(&rm.rooms, si, sj), here_room = rooms_at(&rm.rooms, ui, uj);
+	const char *shape = task_shape_name(c->task.shape);
+	bool pushing = c->phase == PHASE_PUSH;
+	switch (c->task.kind) {
+	case TASK_GO_CORNER:
+		out->found = goal_corner(c, g, dist, &rm, start_room, &out->goal);
+		if (!out->found)
+			snprintf(out->why, sizeof out->why, "no reachable space toward the %s",
+				 task_corner_name(c->task.corner));
+		break;
+	case TASK_GO_NEXT_ROOM:
+		out->found = goal_next_room(c, g, dist, &rm, start_room, &out->goal);
+		if (!out->found) {
+			out->exploring = out->found = frontier(c, dist, &out->goal);
+			if (!out->found)
+				snprintf(out->why, sizeof out->why, "no door out of this room, and nothing left unseen");
+		}
+		break;
+	default: /* an object's task (going round it first finds it) */
+		if (c->task.kind == TASK_GO_ROUND && c->round_count > 0) {
+			out->found = true;
+			out->goal = c->round[c->round_next];
+			break;
+		}
+		if (!pushing) {
+			int32_t k = find_target(c);
+			if (k >= 0 && goal_beside(c, k, dist, &out->goal)) {
+				out->found = true;
+				break;
+			}
+			/* Not seen, or not reachable: look further, at the nearer of the
+			 * unseen and the objects seen only coarsely. */
+			Vec2 unseen, coarse;
+			bool have_unseen = frontier(c, dist, &unseen);
+			bool have_coarse = k < 0 && goal_inspect(c, dist, &coarse);
+			out->exploring = out->found = have_unseen || have_coarse;
+			if (have_unseen && have_coarse)
+				out->goal = distance(unseen, m_utak(c)) <= distance(coarse, m_utak(c)) ? unseen : coarse;
+			else
+				out->goal = have_unseen ? unseen : coarse;
+			if (!out->found)
+				snprintf(out->why, sizeof out->why,
+					 k >= 0 ? "cannot reach the %s: no free square beside it can be reached"
+						: "no %s seen, and nothing left unseen or seen only coarsely",
+					 shape);
+			break;
+		}
+		/* Pushing: where the held object should go. */
+		if (c->task.kind == TASK_PUSH_CORNER) {
+			out->found = goal_corner(c, g, dist, &rm, start_room, &out->goal);
+			if (!out->found)
+				snprintf(out->why, sizeof out->why, "the %s cannot be moved anywhere", shape);
+		} else if (c->task.kind == TASK_PUSH_NEXT_ROOM || c->task.kind == TASK_PUSH_THROUGH_DOOR) {
+			out->found = goal_next_room(c, g, dist, &rm, here_room, &out->goal);
+			if (!out->found)
+				snprintf(out->why, sizeof out->why,
+					 "the %s does not fit through any door of this room without turning", shape);
+		} else { /* around the corner: the nearest place out of sight of where it was */
+			int32_t best = -1;
+			for (int32_t j = 0; j < g->h; j++)
+				for (int32_t i = 0; i < g->w; i++) {
+					int32_t k = j * g->w + i;
+					if (dist[k] < 3 || (best >= 0 && dist[k] >= dist[best]))
+						continue;
+					if (!pathgraph_segment_free(&s->fixed, centre_of(ui, uj), centre_of(i, j)))
+						best = k;
+				}
+			out->found = best >= 0;
+			if (out->found)
+				out->goal = centre_of(s->x0 + best % g->w, s->y0 + best / g->w);
+			else
+				snprintf(out->why, sizeof out->why, "no corner the %s can be pushed around", shape);
+		}
+	}
+	roommap_free(&rm);
+	free(dist);
+}
+
+/* round_points(c, k): the points outside object node k's rectangle corners,
+ * counter-clockwise from the one nearest Utak, then his starting point. */
+static void round_points(Controller *c, int32_t k)
+{
+	const ModelNode *n = &c->model.node[k];
+	double m = CONTROLLER_ROUND_MARGIN;
+	Vec2 p[4] = {vec2(n->rect.lo.x - m, n->rect.lo.y - m), vec2(n->rect.hi.x + m, n->rect.lo.y - m),
+		     vec2(n->rect.hi.x + m, n->rect.hi.y + m), vec2(n->rect.lo.x - m, n->rect.hi.y + m)};
+	int first = 0;
+	for (int i = 1; i < 4; i++)
+		if (distance(p[i], c->model.utak) < distance(p[first], c->model.utak))
+			first = i;
+	for (int i = 0; i < 4; i++) {
+		Vec2 q = p[(first + i) % 4];
+		c->round[i] = centre_of((int32_t)floor(q.x), (int32_t)floor(q.y));
+	}
+	/* Back to the first corner closes the loop round the object, then home. */
+	c->round[4] = c->round[0];
+	c->round[5] = c->start; /* "and return": to where the task began */
+	c->round_count = 6;
+	c->round_next = 0;
+}
+
+/* make_plan(c, why): step 7 / 13: a goal and a route to it. False (with why) when
+ * the task cannot be done from what Utak knows. */
+static bool make_plan(Controller *c, char *why, size_t size)
+{
+	Vec2 extra[2] = {c->start, c->goal};
+	screen_build(&c->screen, &c->model, extra, c->have_plan ? 2 : 1);
+	build_space(c);
+	GoalResult gr;
+	choose_goal(c, &gr);
+	if (!gr.found) {
+		snprintf(why, size, "%s", gr.why);
+		return false;
+	}
+	if (c->task.kind == TASK_GO_ROUND && c->round_count == 0 && !gr.exploring && c->phase == PHASE_TRAVEL) {
+		/* Beside the object is where going round starts: lay out the loop now. */
+		int32_t k = find_target(c);
+		if (k >= 0) {
+			round_points(c, k);
+			gr.goal = c->round[0];
+		}
+	}
+	c->goal = gr.goal;
+	c->exploring = gr.exploring;
+	/* The goal may lie outside the screen built before it was known. */
+	Vec2 both[2] = {c->start, c->goal};
+	screen_build(&c->screen, &c->model, both, 2);
+	build_space(c);
+	Vec2 from = screen_from_model(&c->screen, c->model.utak), to = screen_from_model(&c->screen, c->goal);
+	if (!planner_plan(&c->planner, &c->space, from, to)) {
+		snprintf(why, size, "no path to (%.1f, %.1f)", c->goal.x, c->goal.y);
+		return false;
+	}
+	Path way;
+	path_init(&way);
+	planner_waypoints(&c->space, &c->planner.found, &way);
+	path_clear(&c->route);
+	for (int i = 0; i < way.count; i++)
+		path_push(&c->route, screen_to_model(&c->screen, way.pts[i]));
+	path_free(&way);
+	c->route.pts[0] = c->model.utak;
+	c->route.pts[c->route.count - 1] = c->goal;
+	c->next = 1;
+	c->have_plan = true;
+	return true;
+}
+
+/* route_viable(c): the rest of the route is still strictly free on the new space. */
+static bool route_viable(const Controller *c)
+{
+	Vec2 prev = screen_from_model(&c->screen, c->model.utak);
+	for (int i = c->next; i < c->route.count; i++) {
+		Vec2 p = screen_from_model(&c->screen, c->route.pts[i]);
+		if (!planner_segment_strict(&c->space, prev, p))
+			return false;
+		prev = p;
+	}
+	return true;
+}
+
+/* ---- the cycle -------------------------------------------------------------------- */
+
+void controller_init(Controller *c, PlannerKind planner)
+{
+	memset(c, 0, sizeof *c);
+	c->planner_kind = planner;
+	planner_init(&c->planner, planner);
+	screen_init(&c->screen);
+	path_init(&c->route);
+	worldmodel_init(&c->model); /* step 1: the default world model */
+}
+
+void controller_free(Controller *c)
+{
+	worldmodel_free(&c->model);
+	screen_free(&c->screen);
+	grid_free(&c->space);
+	planner_free(&c->planner);
+	path_free(&c->route);
+}
+
+void controller_set_task(Controller *c, const Task *t)
+{
+	c->task = *t;
+	c->has_task = true;
+}
+
+static int32_t squares_seen(const WorldModel *m)
+{
+	int32_t n = 0, half = WORLDMODEL_SIDE / 2;
+	for (int32_t y = -half; y < half; y++)
+		for (int32_t x = -half; x < half; x++)
+			n += worldmodel_belief(m, x, y) != BELIEF_UNKNOWN;
+	return n;
+}
+
+void controller_start(Controller *c, const Impression *first)
+{
+	c->impression = *first;		/* step 2 */
+	regions_find(&c->regions, first); /* steps 3-4 */
+	worldmodel_accommodate_first(&c->model, first); /* step 5 */
+	c->seen_before = squares_seen(&c->model);
+	c->start = c->last_position = c->model.utak;
+	if (!c->has_task)
+		return;
+	c->phase = PHASE_TRAVEL; /* step 6: the task's object is looked for in the plan */
+	char why[160];
+	if (!make_plan(c, why, sizeof why)) { /* step 7 */
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why, "%s", why);
+	}
+}
+
+/* remember(c, p): a goal reached that is not to be chosen again. */
+static void remember(Controller *c, Vec2 p)
+{
+	if (c->visited_count < CONTROLLER_MAX_VISITED)
+		c->visited[c->visited_count++] = p;
+}
+
+/* arrive(c): what reaching the goal means in the current phase. */
+static void arrive(Controller *c)
+{
+	c->have_plan = false;
+	if (c->exploring) {
+		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
+		return;
+	}
+	switch (c->task.kind) {
+	case TASK_GO_CORNER:
+	case TASK_GO_NEXT_ROOM:
+		c->phase = PHASE_DONE;
+		return;
+	case TASK_GO_SHAPE:
+		if (touching(c, find_target(c)))
+			c->phase = PHASE_DONE;
+		else
+			remember(c, c->goal); /* touch says the object is not here after all */
+		return;
+	case TASK_GO_ROUND:
+		if (c->round_count > 0 && ++c->round_next == c->round_count)
+			c->phase = PHASE_DONE;
+		return;
+	default:
+		if (c->phase == PHASE_PUSH)
+			c->phase = PHASE_RELEASE;
+		else if (touching(c, find_target(c)))
+			c->phase = PHASE_GRASP;
+		else
+			remember(c, c->goal);
+	}
+}
+
+bool controller_decide(Controller *c, MotorCommand *cmd)
+{
+	*cmd = (MotorCommand){0};
+	if (!c->has_task)
+		return false;
+	c->cycle++;
+	/* Step 8 and 9, a few times over if arriving changes the phase. */
+	for (int round = 0; round < 4; round++) {
+		switch (c->phase) {
+		case PHASE_DONE:
+		case PHASE_FAILED:
+			return false;
+		case PHASE_GRASP:
+			cmd->kind = MOTOR_GRASP;
+			c->phase = PHASE_PUSH;
+			c->have_plan = false;
+			return true;
+		case PHASE_RELEASE:
+			cmd->kind = MOTOR_RELEASE;
+			c->phase = PHASE_DONE;
+			return true;
+		case PHASE_TRAVEL:
+		case PHASE_PUSH:
+			break;
+		}
+		char why[160];
+		if (!c->have_plan && !make_plan(c, why, sizeof why)) {
+			c->phase = PHASE_FAILED;
+			snprintf(c->why, sizeof c->why, "%s", why);
+			return false;
+		}
+		if (distance(c->model.utak, c->goal) <= CONTROLLER_ARRIVED) {
+			arrive(c);
+			continue;
+		}
+		while (c->next < c->route.count - 1 && distance(c->model.utak, c->route.pts[c->next]) <= CONTROLLER_ARRIVED)
+			c->next++;
+		Vec2 d = vec2_sub(c->route.pts[c->next], c->model.utak);
+		double len = hypot(d.x, d.y);
+		if (len > CONTROLLER_MAX_LEG)
+			d = vec2_scale(d, CONTROLLER_MAX_LEG / len);
+		cmd->kind = c->phase == PHASE_PUSH ? MOTOR_PUSH : MOTOR_MOVE;
+		cmd->dx = d.x;
+		cmd->dy = d.y;
+		return true;
+	}
+	/* Arrived again and again without a command to give: the goals keep landing
+	 * where Utak already is. */
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why, "no progress: every goal found is where Utak already stands");
+	return false;
+}
+
+void controller_perceive(Controller *c, const MotorCommand *cmd, const Impression *imp)
+{
+	c->impression = *imp;
+	regions_find(&c->regions, imp);		 /* step 11 */
+	worldmodel_accommodate(&c->model, cmd, imp);
+	int32_t seen = squares_seen(&c->model);
+	int n = snprintf(c->note, sizeof c->note, "model: %+d squares seen", (int)(seen - c->seen_before));
+	c->seen_before = seen;
+	if (c->model.report.corrected)
+		n += snprintf(c->note + n, sizeof c->note - (size_t)n, ", position corrected to (%.1f, %.1f)",
+			      c->model.utak.x, c->model.utak.y);
+	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
+		return;
+	/* No progress: the same believed point after a move or push, cycle after cycle. */
+	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && distance(c->model.utak, c->last_position) < 0.05) {
+		if (++c->stuck >= CONTROLLER_STUCK_CYCLES) {
+			c->phase = PHASE_FAILED;
+			snprintf(c->why, sizeof c->why, "stuck at (%.1f, %.1f): every way on is blocked", c->model.utak.x,
+				 c->model.utak.y);
+			return;
+		}
+	} else {
+		c->stuck = 0;
+	}
+	c->last_position = c->model.utak;
+	if (c->phase != PHASE_TRAVEL && c->phase != PHASE_PUSH)
+		return;
+	if (!c->have_plan)
+		return; /* the next decision plans */
+	/* Step 12: is the plan still viable? */
+	const char *reason = NULL;
+	Vec2 old_goal = c->goal;
+	Vec2 extra[2] = {c->start, c->goal};
+	screen_build(&c->screen, &c->model, extra, 2);
+	build_space(c);
+	GoalResult gr;
+	if (c->model.report.corrected)
+		reason = "Utak is not where he expected";
+	else if (!route_viable(c))
+		reason = "the path is blocked";
+	else if (c->task.kind != TASK_GO_ROUND) {
+		choose_goal(c, &gr);
+		if (!gr.found || distance(gr.goal, old_goal) > CONTROLLER_ARRIVED || gr.exploring != c->exploring)
+			reason = "the goal has moved";
+	}
+	if (!reason) {
+		snprintf(c->note + n, sizeof c->note - (size_t)n, "; plan viable");
+		return;
+	}
+	char why[160];
+	c->replans++;
+	c->have_plan = false;
+	if (!make_plan(c, why, sizeof why)) { /* step 13 */
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why, "%s", why);
+		snprintf(c->note + n, sizeof c->note - (size_t)n, "; re-plan: %s; no plan", reason);
+		return;
+	}
+	snprintf(c->note + n, sizeof c->note - (size_t)n, "; re-plan: %s; goal (%.1f, %.1f)%s, path %.2f", reason,
+		 c->goal.x, c->goal.y, c->exploring ? " (exploring)" : "", c->planner.found_length);
+}
+
+/* ---- dumps ------------------------------------------------------------------------ */
+
+void controller_dump_screen(Controller *c, FILE *f)
+{
+	if (c->screen.w == 0) {
+		Vec2 extra = c->start;
+		screen_build(&c->screen, &c->model, &extra, 1);
+	}
+	screen_dump(&c->screen, &c->model, f);
+}
+
+void controller_dump_skeleton(Controller *c, FILE *f)
+{
+	if (!c->planner.have_graph) {
+		fputs("skeleton: no plan made on the skeleton\n", f);
+		return;
+	}
+	skeleton_dump(&c->planner.skeleton, &c->planner.grid, f);
+}
+
+void controller_dump_pathgraph(Controller *c, FILE *f)
+{
+	if (!c->planner.have_graph) {
+		fputs("pathgraph: no plan made on the skeleton\n", f);
+		return;
+	}
+	pathgraph_dump(&c->planner.pathgraph, f);
+}
+
+void controller_dump_rooms(Controller *c, FILE *f)
+{
+	if (c->screen.w == 0) {
+		Vec2 extra = c->start;
+		screen_build(&c->screen, &c->model, &extra, 1);
+	}
+	RoomMap rm;
+	roommap_build(&rm, &c->screen);
+	rooms_dump(&rm.rooms, &c->screen.fixed, f);
+	roommap_free(&rm);
+}
+
+void controller_dump_path(Controller *c, FILE *f)
+{
+	planner_dump_path(&c->planner, f);
+	if (c->route.count > 0) {
+		fprintf(f, "route (model frame), %d waypoints:\n", c->route.count);
+		for (int i = 0; i < c->route.count; i++)
+			fprintf(f, "  %.2f %.2f%s\n", c->route.pts[i].x, c->route.pts[i].y, i == c->next ? " <- next" : "");
+	}
+}
