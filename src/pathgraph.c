@@ -1068,9 +1068,15 @@ static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *r
 		m = j;
 	}
 	path_clear(out);
+	out->pts = util_grow(out->pts, &out->cap, m + 2, sizeof *out->pts);
 	pathgraph_push_point(out, from);
-	for (int i = 0; i < m; i++)
-		pathgraph_push_point(out, pathgraph_cell_centre(pg, c[i]));
+	for (int i = 0; i < m; i++) {
+		Vec2 q = pathgraph_cell_centre(pg, c[i]);
+		if (i == 0 || i == m - 1)
+			pathgraph_push_point(out, q); /* may line up with S or D */
+		else
+			out->pts[out->count++] = q;   /* turns only, by the merge above */
+	}
 	pathgraph_push_point(out, to);
 }
 

@@ -58,12 +58,13 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
-void skeleton_edt(const Grid *g, int32_t *dist2)
+int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 {
 	const int32_t w = g->w, h = g->h;
 	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
+	int32_t largest = 0;
 	if (w == 0 || h == 0)
-		return;
+		return largest;
 	/* Phase 1, row by row so that the inner loop runs along memory: dist2 holds g,
 	 * the distance along the column to the nearest blocked cell (or to row -1 / h). */
 	for (int32_t x = 0; x < w; x++)
@@ -134,12 +135,15 @@ void skeleton_edt(const Grid *g, int32_t *dist2)
 					k++;
 				int32_t d = x - v[k];
 				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
+				if (row[x] > largest)
+					largest = row[x];
 			}
 			x0 = x1 + 1;
 		}
 	}
 	free(F);
 	free(v);
+	return largest;
 }
 
 /* ---------------------------------------------------------------- simple points */
@@ -417,7 +421,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	if (n == 0)
 		return;
 	struct SkeletonWork *wk = s->work;
-	skeleton_edt(g, s->dist2);
+	const int32_t maxd = skeleton_edt(g, s->dist2);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
 	t.state = wk->state;
@@ -428,13 +432,6 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	skeleton_build_simple_table(t.simple);
 
 	/* counting sort of the free cells by dist2, ties by index */
-	int32_t maxd = 0;
-	int32_t nfree = 0;
-	for (size_t i = 0; i < n; i++) {
-		if (s->dist2[i] > maxd)
-			maxd = s->dist2[i];
-		nfree += g->cells[i] == GRID_FREE;
-	}
 	if (wk->start_cap < (size_t)maxd + 2) {
 		free(wk->start);
 		wk->start_cap = (size_t)maxd + 2;
@@ -442,9 +439,12 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	}
 	int32_t *start = wk->start, *order = wk->order;
 	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
+	int32_t nfree = 0;
 	for (size_t i = 0; i < n; i++)
-		if (g->cells[i] == GRID_FREE)
+		if (g->cells[i] == GRID_FREE) {
 			start[s->dist2[i] + 1]++;
+			nfree++;
+		}
 	for (int32_t d = 0; d <= maxd; d++)
 		start[d + 1] += start[d];
 	for (int32_t y = 0; y < h; y++) {
@@ -466,11 +466,14 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			thinner_delete_from(&t, pi);
 	}
 
-	/* the cells left, for pruning */
+	/* the cells left, for pruning, in row-major order (a scan along memory) */
 	int32_t nset = 0;
-	for (int32_t k = 0; k < nfree; k++)
-		if (t.state[order[k]] & SKELETON_IN)
-			order[nset++] = order[k];
+	for (int32_t y = 0; y < h; y++) {
+		int32_t row = (y + 1) * t.pw + 1;
+		for (int32_t x = 0; x < w; x++)
+			if (t.state[row + x] & SKELETON_IN)
+				order[nset++] = row + x;
+	}
 	s->pruned = thinner_prune(&t, s->dist2, order, nset);
 	if (s->pruned > 0) {
 		/* a junction that lost a branch may be deletable now */

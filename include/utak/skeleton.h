@@ -58,8 +58,9 @@ typedef struct Skeleton {
 } Skeleton;
 
 /* skeleton_edt(g, dist2): the exact Euclidean distance transform of g into the
- * caller's array of g->w * g->h int32_t (see dist2 above). Linear time. */
-void skeleton_edt(const Grid *g, int32_t *dist2);
+ * caller's array of g->w * g->h int32_t (see dist2 above). Linear time. Returns the
+ * largest value (0 for a grid with no free cell). */
+int32_t skeleton_edt(const Grid *g, int32_t *dist2);
 
 void skeleton_init(Skeleton *s);
 void skeleton_free(Skeleton *s);

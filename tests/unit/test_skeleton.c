@@ -28,13 +28,16 @@ static int32_t brute_edt_at(const Grid *g, int x, int y)
 static bool edt_matches_brute(const Grid *g)
 {
 	int32_t *d = malloc(sizeof(int32_t) * (size_t)(g->w * g->h + 1));
-	skeleton_edt(g, d);
+	int32_t largest = skeleton_edt(g, d), brute_largest = 0;
 	bool ok = true;
 	for (int y = 0; y < g->h && ok; y++)
-		for (int x = 0; x < g->w && ok; x++)
-			ok = d[y * g->w + x] == brute_edt_at(g, x, y);
+		for (int x = 0; x < g->w && ok; x++) {
+			int32_t b = brute_edt_at(g, x, y);
+			ok = d[y * g->w + x] == b;
+			brute_largest = b > brute_largest ? b : brute_largest;
+		}
 	free(d);
-	return ok;
+	return ok && largest == brute_largest;
 }
 
 TEST_CASE(edt_equals_brute_force_on_random_grids)
