@@ -69,7 +69,7 @@ typedef struct PathgraphPiece {
 	int32_t u, v;		/* nodes: vertices, or vertex_count (S') / vertex_count + 1 (D') */
 	int32_t edge;		/* the edge it is part of, or -1 for a walk inside a vertex */
 	int32_t pos_u, pos_v;	/* its cells: edge cells at positions pos_u .. pos_v */
-	int32_t cell_u, cell_v; /* for edge -1: the grid cells it walks between */
+	int32_t cell;		/* for edge -1: the S' or D' cell, walked from to the vertex */
 	double cost;
 	int32_t min_dist2;
 } PathgraphPiece;
@@ -742,18 +742,19 @@ static void pathgraph_vertex_walk(Pathgraph *pg, int32_t c, int32_t v, IntList *
 
 /* ---------------------------------------------------------------- the search graph */
 
-/* pathgraph_add_piece(pg, u, v, edge, pos_u, pos_v, cell_u, cell_v) */
+/* pathgraph_add_piece(pg, u, v, edge, pos_u, pos_v, cell): a piece joining nodes u and
+ * v (see PathgraphPiece), with its cost and clearance. */
 static void pathgraph_add_piece(Pathgraph *pg, int32_t u, int32_t v, int32_t edge, int32_t pos_u,
-				int32_t pos_v, int32_t cell_u, int32_t cell_v)
+				int32_t pos_v, int32_t cell)
 {
 	struct PathgraphScratch *sc = pg->scratch;
 	assert(sc->piece_count < PATHGRAPH_MAX_PIECES);
 	PathgraphPiece *p = &sc->pieces[sc->piece_count++];
-	*p = (PathgraphPiece){u, v, edge, pos_u, pos_v, cell_u, cell_v, 0, INT32_MAX};
+	*p = (PathgraphPiece){u, v, edge, pos_u, pos_v, cell, 0, INT32_MAX};
 	const int32_t *d2 = pg->skeleton->dist2;
 	if (edge < 0) {
 		sc->cells.count = 0;
-		pathgraph_vertex_walk(pg, cell_u, u < pg->vertex_count ? u : v, &sc->cells);
+		pathgraph_vertex_walk(pg, cell, u < pg->vertex_count ? u : v, &sc->cells);
 		p->cost = pathgraph_run_length(pg, sc->cells.v, sc->cells.count, 1);
 		for (int k = 0; k < sc->cells.count; k++)
 			if (d2[sc->cells.v[k]] < p->min_dist2)
@@ -789,15 +790,15 @@ static void pathgraph_splice(Pathgraph *pg, int32_t s_cell, int32_t d_cell)
 	}
 	/* vertex cells: a walk inside the vertex */
 	if (edge[0] < 0)
-		pathgraph_add_piece(pg, pg->cell_ref[s_cell], S, -1, 0, 0, s_cell, -1);
+		pathgraph_add_piece(pg, pg->cell_ref[s_cell], S, -1, 0, 0, s_cell);
 	if (edge[1] < 0)
-		pathgraph_add_piece(pg, pg->cell_ref[d_cell], D, -1, 0, 0, d_cell, -1);
+		pathgraph_add_piece(pg, pg->cell_ref[d_cell], D, -1, 0, 0, d_cell);
 	if (edge[0] >= 0 && edge[0] == edge[1]) {
 		const PathgraphEdge *e = &pg->edges[edge[0]];
 		int lo = pos[0] < pos[1] ? 0 : 1, hi = 1 - lo;
-		pathgraph_add_piece(pg, e->v0, nodes[lo], edge[0], 0, pos[lo], -1, -1);
-		pathgraph_add_piece(pg, nodes[lo], nodes[hi], edge[0], pos[lo], pos[hi], -1, -1);
-		pathgraph_add_piece(pg, nodes[hi], e->v1, edge[0], pos[hi], e->count - 1, -1, -1);
+		pathgraph_add_piece(pg, e->v0, nodes[lo], edge[0], 0, pos[lo], -1);
+		pathgraph_add_piece(pg, nodes[lo], nodes[hi], edge[0], pos[lo], pos[hi], -1);
+		pathgraph_add_piece(pg, nodes[hi], e->v1, edge[0], pos[hi], e->count - 1, -1);
 		sc->skip_edge[0] = edge[0];
 		return;
 	}
@@ -805,8 +806,8 @@ static void pathgraph_splice(Pathgraph *pg, int32_t s_cell, int32_t d_cell)
 		if (edge[i] < 0)
 			continue;
 		const PathgraphEdge *e = &pg->edges[edge[i]];
-		pathgraph_add_piece(pg, e->v0, nodes[i], edge[i], 0, pos[i], -1, -1);
-		pathgraph_add_piece(pg, nodes[i], e->v1, edge[i], pos[i], e->count - 1, -1, -1);
+		pathgraph_add_piece(pg, e->v0, nodes[i], edge[i], 0, pos[i], -1);
+		pathgraph_add_piece(pg, nodes[i], e->v1, edge[i], pos[i], e->count - 1, -1);
 		sc->skip_edge[i] = edge[i];
 	}
 }
@@ -1009,7 +1010,7 @@ static void pathgraph_arc_cells(Pathgraph *pg, int32_t arc, int32_t from, IntLis
 		/* the walk runs from the S' or D' cell to the vertex's cell */
 		IntList walk = {0};
 		int32_t vertex = p->u < pg->vertex_count ? p->u : p->v;
-		pathgraph_vertex_walk(pg, p->cell_u, vertex, &walk);
+		pathgraph_vertex_walk(pg, p->cell, vertex, &walk);
 		bool from_vertex = from == vertex;
 		for (int k = 0; k < walk.count; k++)
 			pathgraph_push_cell(l, walk.v[from_vertex ? walk.count - 1 - k : k]);

@@ -5,12 +5,14 @@
  * 1. Distance transform: Meijster, Roerdink and Hesselink, "A general algorithm for
  *    computing distance transforms in linear time" (Mathematical Morphology and its
  *    Applications to Image and Signal Processing, 2000). Phase 1 scans every column
- *    for the distance g to the nearest blocked cell in that column; phase 2 takes,
- *    in every row, the lower envelope of the parabolas (x - u)^2 + g(u)^2 (found as in
- *    Felzenszwalb and Huttenlocher, "Distance transforms of sampled functions", Theory
- *    of Computing 8, 2012, with exact integer comparisons in place of divisions). The cells
- *    just outside the grid are blocked: phase 1 starts each column at distance 1 from
- *    the rows -1 and h, and phase 2 runs over columns -1 .. w with g = 0 at both ends.
+ *    for the distance g to the nearest blocked cell in that column; phase 2 takes, in
+ *    every row, the lower envelope of the parabolas (x - u)^2 + g(u)^2, found as in
+ *    Felzenszwalb and Huttenlocher ("Distance transforms of sampled functions", Theory
+ *    of Computing 8, 2012) but with exact integer comparisons in place of divisions,
+ *    and run separately on each run of free cells between two blocked ones (a blocked
+ *    cell is nearer than anything beyond it). The cells just outside the grid are
+ *    blocked: phase 1 starts each column at distance 1 from the rows -1 and h, and
+ *    phase 2 has a blocked column at -1 and at w.
  * 2. Thinning: distance-ordered homotopic thinning (Pudney, "Distance-ordered homotopic
  *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
  *    here in 2D with the (4, 8) topology. Free cells are visited in order of
@@ -19,15 +21,16 @@
  *    deleted when it is simple (deleting it changes neither the 4-components of the
  *    set nor the 8-components of its complement: a 256-entry table over the 8
  *    neighbours, built from the definition of Bertrand's topological numbers
- *    T4 = 1 and T8bar = 1) and is not an end point (exactly one 4-neighbour in the
- *    set: keeping end points keeps the branches that reach into corridors and
- *    niches). A deletion can make an already visited neighbour deletable; such
- *    neighbours go on a stack and are tried again at once, so when the scan ends no
- *    cell of the set is deletable. Visiting in distance order peels the space like
- *    Blum's grassfire, so what is left lies on the ridge of the distance map, the
- *    medial axis.
- * 3. Pruning: an end point made by a one-cell notch in a wall grows a spur to the
- *    medial axis. Every branch from an end point to a junction cell (degree >= 3) is
+ *    T4 = 1 and T8bar = 1) and is not a ridge end (exactly one 4-neighbour in the set
+ *    and no 8-neighbour in the set farther from the obstacles: the tip of a branch
+ *    where the distance map peaks, as in a dead-end corridor or a niche; Pudney keeps
+ *    the centres of maximal discs for the same purpose). A deletion can make an
+ *    already visited neighbour deletable; such neighbours go on a stack and are tried
+ *    again at once, so when the scan ends no cell of the set is deletable. Visiting in
+ *    distance order peels the space like Blum's grassfire, so what is left lies on
+ *    the ridge of the distance map, the medial axis.
+ * 3. Pruning: a small bay in a wall can still leave a branch whose tip is a ridge end,
+ *    a spur. Every branch from an end point to a junction cell (degree >= 3) is
  *    removed when it has at most SKELETON_SPUR_FACTOR * clearance(junction) +
  *    SKELETON_SPUR_SLACK cells (see skeleton.h); branches are judged all at once on
  *    the thinned set, one round, and a branch joining two end points (a component
@@ -40,9 +43,10 @@
  *    space and, in each, as many loops (8-components of its complement not joined to
  *    the outside) as the space has holes; no skeleton cell is deletable by step 2.
  *
- * MEMORY  dist2 and on (5 bytes a cell, kept), and while computing: a padded state
- *    byte per cell, the visiting order and a stack (4 bytes a cell each), and the
- *    counting-sort histogram (4 bytes per possible dist2 value, at most (side/2)^2).
+ * MEMORY  dist2 and on (5 bytes a cell), and the working space, kept in the Skeleton
+ *    for the next grid of the same size: a padded state byte per cell, the visiting
+ *    order and a stack (4 bytes a cell each), and the counting-sort histogram (4 bytes
+ *    per possible dist2 value, at most about (side / 2)^2).
  *
  * COMPLEXITY  O(w h): the transform is two passes per axis; the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8); pruning
