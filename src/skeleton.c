@@ -70,12 +70,16 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 	if (w == 0 || h == 0)
 		return largest;
 	/* Phase 1, row by row so that the inner loop runs along memory: dist2 holds g,
-	 * the distance along the column to the nearest blocked cell (or to row -1 / h). */
+	 * the distance along the column to the nearest blocked cell (or to row -1 / h).
+	 * The rows are restrict pointers into one array: they never overlap, and saying
+	 * so frees the compiler from reloading after every store (and lets it vectorise
+	 * where its options allow; -O2 with GCC 12 does not). */
 	for (int32_t x = 0; x < w; x++)
 		dist2[x] = g->cells[x] == GRID_FREE ? 1 : 0;
 	for (int32_t y = 1; y < h; y++) {
-		const uint8_t *c = g->cells + (size_t)y * w;
-		int32_t *row = dist2 + (size_t)y * w, *prev = row - w;
+		const uint8_t *restrict c = g->cells + (size_t)y * w;
+		int32_t *restrict row = dist2 + (size_t)y * w;
+		const int32_t *restrict prev = dist2 + (size_t)(y - 1) * w;
 		for (int32_t x = 0; x < w; x++)
 			row[x] = c[x] == GRID_FREE ? prev[x] + 1 : 0;
 	}
@@ -85,10 +89,12 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 			last[x] = 1;
 	}
 	for (int32_t y = h - 2; y >= 0; y--) {
-		int32_t *row = dist2 + (size_t)y * w, *next = row + w;
-		for (int32_t x = 0; x < w; x++)
-			if (next[x] + 1 < row[x])
-				row[x] = next[x] + 1;
+		int32_t *restrict row = dist2 + (size_t)y * w;
+		const int32_t *restrict next = dist2 + (size_t)(y + 1) * w;
+		for (int32_t x = 0; x < w; x++) {
+			int32_t below = next[x] + 1;
+			row[x] = below < row[x] ? below : row[x];
+		}
 	}
 	/* Phase 2, one row at a time. A blocked cell at column b (or the outside at -1 and
 	 * w) is the nearest obstacle column for every cell across it from the cells
