@@ -85,9 +85,11 @@ typedef struct Route {
 } Route;
 
 struct PathgraphScratch {
+	size_t grid_cells;		/* the grid size the next three are made for */
 	int32_t *visit, *parent, *queue; /* grid-sized, for the S' and D' searches */
 	int32_t visit_stamp;
-	int32_t node_cap;		/* vertex_count + 2 */
+	int32_t node_cap;		/* >= vertex_count + 2 */
+	int32_t arc_cap;		/* >= edge_count + PATHGRAPH_MAX_PIECES */
 	double *g;
 	int32_t *pred_arc, *pred_node, *seen, *closed, *node_ban;
 	int32_t search_stamp, ban_stamp;
@@ -428,13 +430,20 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb, int3
 
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 {
+	/* keep the query scratch, and the cell map of a grid of the same size */
+	struct PathgraphScratch *scratch = pg->scratch;
+	int32_t *cell_ref = pg->cell_ref && pg->w == s->w && pg->h == s->h ? pg->cell_ref : NULL;
+	pg->scratch = NULL;
+	if (cell_ref)
+		pg->cell_ref = NULL;
 	pathgraph_free(pg);
+	pg->scratch = scratch;
 	pg->w = s->w;
 	pg->h = s->h;
 	pg->grid = g;
 	pg->skeleton = s;
 	const size_t n = (size_t)s->w * (size_t)s->h;
-	pg->cell_ref = util_alloc(n, sizeof *pg->cell_ref);
+	pg->cell_ref = cell_ref ? cell_ref : util_alloc(n + 1, sizeof *pg->cell_ref);
 	memset(pg->cell_ref, 0xff, n * sizeof *pg->cell_ref); /* all PATHGRAPH_REF_NONE */
 	Builder b = {.pg = pg, .s = s};
 	b.toward = util_alloc(n, 1);
@@ -602,25 +611,46 @@ void pathgraph_dump(const Pathgraph *pg, FILE *out)
 
 /* ---------------------------------------------------------------- query scratch */
 
+/* pathgraph_scratch(pg): the query scratch, made or grown to the current graph. It
+ * survives pathgraph_build, so that a planner that rebuilds the pathgraph of a screen
+ * of one size touches no new memory; stamps only grow, so stale entries never match. */
 static struct PathgraphScratch *pathgraph_scratch(Pathgraph *pg)
 {
-	if (pg->scratch)
-		return pg->scratch;
-	struct PathgraphScratch *sc = util_alloc(1, sizeof *sc);
+	if (!pg->scratch)
+		pg->scratch = util_alloc(1, sizeof *pg->scratch);
+	struct PathgraphScratch *sc = pg->scratch;
 	size_t n = (size_t)pg->w * pg->h;
-	sc->visit = util_alloc(n + 1, sizeof *sc->visit);
-	sc->parent = util_alloc(n + 1, sizeof *sc->parent);
-	sc->queue = util_alloc(n + 1, sizeof *sc->queue);
-	size_t nodes = (size_t)pg->vertex_count + 2;
-	sc->node_cap = (int32_t)nodes;
-	sc->g = util_alloc(nodes, sizeof *sc->g);
-	sc->pred_arc = util_alloc(nodes, sizeof *sc->pred_arc);
-	sc->pred_node = util_alloc(nodes, sizeof *sc->pred_node);
-	sc->seen = util_alloc(nodes, sizeof *sc->seen);
-	sc->closed = util_alloc(nodes, sizeof *sc->closed);
-	sc->node_ban = util_alloc(nodes, sizeof *sc->node_ban);
-	sc->arc_ban = util_alloc((size_t)pg->edge_count + PATHGRAPH_MAX_PIECES, sizeof *sc->arc_ban);
-	pg->scratch = sc;
+	if (sc->grid_cells != n || !sc->visit) {
+		free(sc->visit);
+		free(sc->parent);
+		free(sc->queue);
+		sc->grid_cells = n;
+		sc->visit = util_alloc(n + 1, sizeof *sc->visit);
+		sc->parent = util_alloc(n + 1, sizeof *sc->parent);
+		sc->queue = util_alloc(n + 1, sizeof *sc->queue);
+		sc->visit_stamp = 0;
+	}
+	if (sc->node_cap < pg->vertex_count + 2) {
+		size_t nodes = (size_t)pg->vertex_count + 2;
+		free(sc->g);
+		free(sc->pred_arc);
+		free(sc->pred_node);
+		free(sc->seen);
+		free(sc->closed);
+		free(sc->node_ban);
+		sc->node_cap = (int32_t)nodes;
+		sc->g = util_alloc(nodes, sizeof *sc->g);
+		sc->pred_arc = util_alloc(nodes, sizeof *sc->pred_arc);
+		sc->pred_node = util_alloc(nodes, sizeof *sc->pred_node);
+		sc->seen = util_alloc(nodes, sizeof *sc->seen);
+		sc->closed = util_alloc(nodes, sizeof *sc->closed);
+		sc->node_ban = util_alloc(nodes, sizeof *sc->node_ban);
+	}
+	if (sc->arc_cap < pg->edge_count + PATHGRAPH_MAX_PIECES) {
+		free(sc->arc_ban);
+		sc->arc_cap = pg->edge_count + PATHGRAPH_MAX_PIECES;
+		sc->arc_ban = util_alloc((size_t)sc->arc_cap, sizeof *sc->arc_ban);
+	}
 	return sc;
 }
 
