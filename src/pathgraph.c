@@ -277,6 +277,7 @@ typedef struct Builder {
 	IntList vstart;		/* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
 	IntList cells;		/* edge cells */
 	int vertex_cap, edge_cap;
+	int32_t chain_cells;	/* chain cells visited so far */
 } Builder;
 
 /* builder_neighbour(b, i, x, d): the skeleton cell next to cell i (in column x) in
@@ -409,6 +410,7 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb, int3
 	int32_t prev = c, cur = nb, x = nb_x;
 	while (pg->cell_ref[cur] == PATHGRAPH_REF_NONE) {
 		pg->cell_ref[cur] = PATHGRAPH_REF_CHAIN;
+		b->chain_cells++;
 		intlist_push(&b->cells, cur);
 		int32_t next = -1, next_x = x;
 		for (int d = 0; d < 4 && next < 0; d++) {
@@ -448,19 +450,30 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	Builder b = {.pg = pg, .s = s};
 	b.toward = util_alloc(n, 1);
 
-	/* (1) vertices, in row-major order of their first cell */
-	for (size_t i = 0, x = 0; i < n; i++, x = x + 1 == (size_t)pg->w ? 0 : x + 1) {
-		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
-			continue;
-		int d = builder_degree(&b, (int32_t)i, (int32_t)x);
-		if (d == 2)
-			continue;
-		intlist_push(&b.vstart, b.vcells.count);
-		if (d >= 3) {
-			builder_junction_set(&b, (int32_t)i);
-		} else {
-			builder_add_vertex(&b, (int32_t)i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
-			intlist_push(&b.vcells, (int32_t)i);
+	/* (1) vertices, in row-major order of their first cell. Most cells are off the
+	 * skeleton: the scan skips eight at a time where they are all zero. */
+	for (int32_t y = 0; y < pg->h; y++) {
+		const uint8_t *on = s->on + (size_t)y * pg->w;
+		for (int32_t x = 0; x < pg->w;) {
+			uint64_t eight;
+			if (x + 8 <= pg->w && (memcpy(&eight, on + x, 8), eight == 0)) {
+				x += 8;
+				continue;
+			}
+			int32_t i = y * pg->w + x;
+			if (on[x] && pg->cell_ref[i] == PATHGRAPH_REF_NONE) {
+				int d = builder_degree(&b, i, x);
+				if (d != 2) {
+					intlist_push(&b.vstart, b.vcells.count);
+					if (d >= 3) {
+						builder_junction_set(&b, i);
+					} else {
+						builder_add_vertex(&b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+						intlist_push(&b.vcells, i);
+					}
+				}
+			}
+			x++;
 		}
 	}
 	intlist_push(&b.vstart, b.vcells.count);
@@ -488,8 +501,9 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 				}
 			}
 		}
-	/* (3) loops without a junction */
-	for (size_t i = 0; i < n; i++) {
+	/* (3) loops without a junction: only when some skeleton cell is still unvisited */
+	bool all_visited = b.vcells.count + b.chain_cells == s->count;
+	for (size_t i = 0; i < n && !all_visited; i++) {
 		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
 			continue;
 		int32_t v = builder_add_vertex(&b, (int32_t)i, PATHGRAPH_LOOP);
