@@ -106,10 +106,13 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g);
  * (different free components, or no edges with enough clearance). */
 bool pathgraph_find_path(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, Path *out);
 
-/* pathgraph_find_paths(pg, from, to, q, k, out): up to k topologically distinct paths,
- * shortest first, into out[0 .. k) (each cleared; caller's Paths, path_init'ed).
- * Returns how many were found. out[i].expanded counts the vertices expanded by all
- * the searches up to finding path i. */
+/* pathgraph_find_paths(pg, from, to, q, k, out): up to k topologically distinct paths
+ * into out[0 .. k) (each cleared; caller's Paths, path_init'ed), in order of their
+ * length along the pathgraph. The polyline drops the steps into and out of a junction
+ * set or S' and cuts corners where two edges meet, so path_length can be a cell or so
+ * shorter and its order differ between near-equal paths. Returns how many were found.
+ * out[i].expanded counts the vertices expanded by all the searches up to path i (Yen's
+ * method runs one search per node of each path found). */
 int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, int k,
 			 Path *out);
 

@@ -361,6 +361,63 @@ TEST_CASE(entry_is_in_sight_in_a_room)
 	grid_free(&g);
 }
 
+/* S' by brute force: the entry is in sight (dense sampling), and no skeleton cell of
+ * the component nearer to the point is in sight; when the entry is by a walk, no
+ * skeleton cell of the component is in sight at all. */
+TEST_CASE(entry_is_the_nearest_skeleton_cell_in_sight)
+{
+	oracle_seed = 31;
+	int in_sight = 0, walked = 0;
+	for (int trial = 0; trial < 150; trial++) {
+		Grid g;
+		oracle_random_grid(&g, 4 + oracle_rand_below(30), 4 + oracle_rand_below(30),
+				   oracle_rand_below(45), oracle_rand_below(6));
+		int free_cells = 0;
+		for (int i = 0; i < g.w * g.h; i++)
+			free_cells += g.cells[i] == GRID_FREE;
+		if (free_cells == 0) {
+			grid_free(&g);
+			continue;
+		}
+		int *lab = malloc(sizeof(int) * (size_t)(g.w * g.h));
+		oracle_label(g.cells, g.w, g.h, 4, lab);
+		Skeleton s;
+		Pathgraph pg;
+		skeleton_init(&s);
+		pathgraph_init(&pg);
+		skeleton_compute(&s, &g);
+		pathgraph_build(&pg, &s, &g);
+		for (int q = 0; q < 10; q++) {
+			Vec2 p = random_free_point(&g);
+			int32_t ex, ey;
+			int how = pathgraph_entry(&pg, p, &ex, &ey);
+			TEST_CHECK(how == 1 || how == 2);
+			int comp = lab[(int)p.y * g.w + (int)p.x];
+			TEST_CHECK(skeleton_on(&s, ex, ey) && lab[ey * g.w + ex] == comp);
+			double best = hypot(ex + 0.5 - p.x, ey + 0.5 - p.y);
+			if (how == 1) {
+				in_sight++;
+				TEST_CHECK(brute_segment_free(&g, p, vec2(ex + 0.5, ey + 0.5)));
+			} else {
+				walked++;
+			}
+			for (int i = 0; i < g.w * g.h; i++) {
+				if (!s.on[i] || lab[i] != comp)
+					continue;
+				Vec2 c = vec2(i % g.w + 0.5, i / g.w + 0.5);
+				if (how == 2 || hypot(c.x - p.x, c.y - p.y) < best - 1e-9)
+					TEST_CHECK(!pathgraph_segment_free(&g, p, c));
+			}
+		}
+		pathgraph_free(&pg);
+		skeleton_free(&s);
+		free(lab);
+		grid_free(&g);
+	}
+	fprintf(stderr, "  entries: %d in sight, %d by a walk\n", in_sight, walked);
+	TEST_CHECK(in_sight > 100 && walked > 0);
+}
+
 TEST_CASE(pathgraph_dump_of_a_corridor_by_hand)
 {
 	/* a corridor 3 wide: its skeleton is the middle row from x = 1 to 10, both ends
@@ -400,6 +457,7 @@ int main(void)
 	TEST_RUN(two_distinct_paths_round_a_ring);
 	TEST_RUN(minimum_clearance_avoids_the_narrow_way);
 	TEST_RUN(entry_is_in_sight_in_a_room);
+	TEST_RUN(entry_is_the_nearest_skeleton_cell_in_sight);
 	TEST_RUN(pathgraph_dump_of_a_corridor_by_hand);
 	return TEST_EXIT();
 }
