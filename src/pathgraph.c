@@ -1008,7 +1008,8 @@ static bool pathgraph_astar(Pathgraph *pg, const SearchEnds *se, int32_t src, in
 
 /* ---------------------------------------------------------------- the polyline */
 
-/* pathgraph_push_cell(l, c): appends c, dropping a repeat and undoing a step back. */
+/* pathgraph_push_cell(l, c): appends c, dropping a repeat and undoing a step back. The
+ * caller has made room (pathgraph_polyline): this runs once per cell of a path. */
 static void pathgraph_push_cell(IntList *l, int32_t c)
 {
 	if (l->count >= 1 && l->v[l->count - 1] == c)
@@ -1017,7 +1018,8 @@ static void pathgraph_push_cell(IntList *l, int32_t c)
 		l->count--;
 		return;
 	}
-	intlist_push(l, c);
+	assert(l->count < l->cap);
+	l->v[l->count++] = c;
 }
 
 /* pathgraph_push_point(out, q): appends q, dropping a repeat and merging a point that
@@ -1077,7 +1079,22 @@ static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *r
 {
 	struct PathgraphScratch *sc = pg->scratch;
 	IntList *l = &sc->cells;
+	/* room for every cell: the walks, S' and D', each arc's cells (a walk inside a
+	 * junction set has at most the set's cells) */
+	int64_t need = (int64_t)sc->walk_s.count + sc->walk_d.count + 2;
+	for (int i = 0; route && i < route->len; i++) {
+		int32_t arc = route->arcs[i];
+		if (arc < pg->edge_count) {
+			need += pg->edges[arc].count;
+		} else {
+			const PathgraphPiece *p = &sc->pieces[arc - pg->edge_count];
+			int32_t vertex = p->u < pg->vertex_count ? p->u : p->v;
+			need += p->edge < 0 ? pg->vertices[vertex].set_size : abs(p->pos_v - p->pos_u) + 1;
+		}
+	}
+	assert(need < INT32_MAX);
 	l->count = 0;
+	l->v = util_grow(l->v, &l->cap, (int)need, sizeof *l->v);
 	for (int k = 0; k < sc->walk_s.count; k++)
 		pathgraph_push_cell(l, sc->walk_s.v[k]);
 	pathgraph_push_cell(l, s_cell);

@@ -9,8 +9,10 @@
  *    order) gives every free cell of the grid its room.
  * INVARIANTS  every free cell has a room, every blocked cell -1; a door's two rooms
  *    differ; a room's cells are 4-connected.
- * MEMORY  the room map (4 bytes a cell) and a queue of as many entries while working.
- * COMPLEXITY  O(w h + cells of the pathgraph's edges). */
+ * MEMORY  the room map (4 bytes a cell); while working, a queue and a stamp map (4
+ *    bytes a cell each).
+ * COMPLEXITY  O(w h + cells of the pathgraph's edges), plus for each valley looked at
+ *    past an edge's end a search bounded by its reach (rooms.h). */
 #include "utak/rooms.h"
 
 #include <math.h>
