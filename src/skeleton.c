@@ -119,6 +119,13 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 			int32_t x1 = x0;
 			while (x1 + 1 < w && row[x1 + 1] != 0)
 				x1++;
+			if (x1 - x0 < 2) {
+				/* one or two free cells: each touches a blocked end, at 1 */
+				row[x0] = row[x1] = 1;
+				largest = largest > 1 ? largest : 1;
+				x0 = x1 + 1;
+				continue;
+			}
 			/* columns lo = x0 - 1 .. hi = x1 + 1, blocked at both ends */
 			int32_t lo = x0 - 1, hi = x1 + 1;
 			int32_t top = 0;
@@ -237,7 +244,7 @@ typedef struct Thinner {
 	bool simple[256];
 } Thinner;
 
-static unsigned thinner_mask(const Thinner *t, int32_t pi)
+static inline unsigned thinner_mask(const Thinner *t, int32_t pi)
 {
 	unsigned m = 0;
 	for (int i = 0; i < 8; i++)
@@ -259,7 +266,7 @@ static int32_t thinner_dist2(const Thinner *t, int32_t pi)
  * grow a spur; with it, a branch whose distance rises from its tip (toward a convex
  * corner of the space) burns back to its junction, as Blum's branches into corners
  * carry no choice of route. */
-static bool thinner_deletable(const Thinner *t, int32_t pi)
+static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 {
 	unsigned m = thinner_mask(t, pi);
 	if (!t->simple[m])
