@@ -29,8 +29,14 @@
  *    stamp, a parent and a queue entry: stamps spare clearing between queries).
  *
  * COMPLEXITY  build O(w h) for the scan plus O(skeleton cells); a query O(cells searched
- *    for S' and D' + V log V + length of the edges holding S' and D'); k paths
- *    O(k L) such searches for routes of L arcs. */
+ *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
+ *    path); k paths O(k L) such searches for routes of L arcs.
+ *
+ * MEASURED  by bench/skelbench.c on 1024 x 1024 (CPU time, best of 3): build 3.5-4 ms
+ *    (rooms, random rectangles), 10-12 ms (maze: 250 000 skeleton cells); a corner to
+ *    corner query 0.2 ms, 1.3-1.4 ms in the maze, whose path has 60 000 cells to
+ *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
+ *    A* expands cells on the same query. */
 #include "utak/pathgraph.h"
 
 #include <assert.h>
