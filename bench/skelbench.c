@@ -9,8 +9,8 @@
  * 1024, 2048 and 4096 cells a side. Each figure is the best of REPEATS runs (default
  * 3): the least disturbed by the rest of the machine. The first run of a size also pays
  * for first touching its memory; the later runs reuse the skeleton's working memory,
- * as a planner that recomputes the skeleton of a screen of one size would. The query runs from near one
- * corner to near the opposite one and reports the pathgraph vertices it expanded. */
+ * as a planner that recomputes the skeleton of a screen of one size would. The query runs from near
+ * one corner to near the opposite one and reports the pathgraph vertices it expanded. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -56,9 +56,11 @@ static void bench_rooms(Grid *g, int32_t side)
 	}
 	for (int32_t a = 0; a < side; a += room)
 		for (int32_t k = room; k < side; k += room) {
-			int32_t d = a + wall + 4 + (int32_t)(bench_rand() % (uint32_t)(room - wall - door - 8));
+			int32_t d = a + wall + 4 +
+			            (int32_t)(bench_rand() % (uint32_t)(room - wall - door - 8));
 			bench_fill(g, k, d, k + wall, d + door, GRID_FREE);
-			d = a + wall + 4 + (int32_t)(bench_rand() % (uint32_t)(room - wall - door - 8));
+			d = a + wall + 4 +
+			    (int32_t)(bench_rand() % (uint32_t)(room - wall - door - 8));
 			bench_fill(g, d, k, d + door, k + wall, GRID_FREE);
 		}
 }
@@ -70,7 +72,8 @@ static void bench_rects(Grid *g, int32_t side)
 	int64_t want = (int64_t)side * side / 4, blocked = 0;
 	while (blocked < want) {
 		int32_t w = 4 + (int32_t)(bench_rand() % 37), h = 4 + (int32_t)(bench_rand() % 37);
-		int32_t x = (int32_t)(bench_rand() % (uint32_t)side), y = (int32_t)(bench_rand() % (uint32_t)side);
+		int32_t x = (int32_t)(bench_rand() % (uint32_t)side),
+		        y = (int32_t)(bench_rand() % (uint32_t)side);
 		bench_fill(g, x, y, x + w, y + h, GRID_BLOCKED);
 		blocked += (int64_t)w * h;
 	}
@@ -107,7 +110,7 @@ static void bench_maze(Grid *g, int32_t side)
 		stack[top++] = ny * n + nx;
 		int32_t x0 = (cx < nx ? cx : nx) * pitch + 1, y0 = (cy < ny ? cy : ny) * pitch + 1;
 		bench_fill(g, x0, y0, x0 + (dx[k] ? 2 * pitch - 1 : pitch - 1),
-			   y0 + (dy[k] ? 2 * pitch - 1 : pitch - 1), GRID_FREE);
+		           y0 + (dy[k] ? 2 * pitch - 1 : pitch - 1), GRID_FREE);
 	}
 	free(seen);
 	free(stack);
@@ -213,13 +216,15 @@ static int64_t bench_grid_astar(const Grid *g, Vec2 from, Vec2 to, double *lengt
 				int32_t nx = cx + dx, ny = cy + dy;
 				if (!grid_free_at(g, nx, ny))
 					continue;
-				if (dx && dy && !(grid_free_at(g, cx + dx, cy) && grid_free_at(g, cx, cy + dy)))
+				if (dx && dy &&
+				    !(grid_free_at(g, cx + dx, cy) && grid_free_at(g, cx, cy + dy)))
 					continue;
 				double ng = gs[c] + (dx && dy ? sqrt(2.0) : 1.0);
 				int32_t nb = ny * w + nx;
 				if (ng < gs[nb]) {
 					gs[nb] = ng;
-					bench_heap_push(&hp, ng + bench_octile(nx, ny, tx, ty) - 1e-9 * ng, nb);
+					bench_heap_push(
+					    &hp, ng + bench_octile(nx, ny, tx, ty) - 1e-9 * ng, nb);
 				}
 			}
 	}
@@ -271,7 +276,8 @@ static void bench_one(const char *name, BenchMaker *make, int32_t side, int repe
 	       (int)s.count, (int)pg.vertex_count, (int)pg.edge_count);
 	double grid_length;
 	int64_t grid_expanded = bench_grid_astar(&g, from, to, &grid_length);
-	printf("%-6s %5d   grid A* expands %lld cells (length %.1f): %.0f times the pathgraph's %lld\n",
+	printf("%-6s %5d   grid A* expands %lld cells (length %.1f): %.0f times the pathgraph's "
+	       "%lld\n",
 	       name, (int)side, (long long)grid_expanded, grid_length,
 	       expanded ? (double)grid_expanded / expanded : 0.0, (long long)expanded);
 	path_free(&path);

@@ -72,10 +72,10 @@ static void intlist_push(IntList *l, int32_t x)
 
 /* A piece of an edge split by S' or D', or a step inside a vertex (edge -1). */
 typedef struct PathgraphPiece {
-	int32_t u, v;		/* nodes: vertices, or vertex_count (S') / vertex_count + 1 (D') */
-	int32_t edge;		/* the edge it is part of, or -1 for a walk inside a vertex */
-	int32_t pos_u, pos_v;	/* its cells: edge cells at positions pos_u .. pos_v */
-	int32_t cell;		/* for edge -1: the S' or D' cell, walked from to the vertex */
+	int32_t u, v;         /* nodes: vertices, or vertex_count (S') / vertex_count + 1 (D') */
+	int32_t edge;         /* the edge it is part of, or -1 for a walk inside a vertex */
+	int32_t pos_u, pos_v; /* its cells: edge cells at positions pos_u .. pos_v */
+	int32_t cell;         /* for edge -1: the S' or D' cell, walked from to the vertex */
 	double cost;
 	int32_t min_dist2;
 } PathgraphPiece;
@@ -84,33 +84,32 @@ enum { PATHGRAPH_MAX_PIECES = 4 };
 
 /* A route: arcs (edge ids, or edge_count + piece index) and the nodes they join. */
 typedef struct Route {
-	int len;		/* arcs */
-	int32_t *nodes;		/* len + 1 */
-	int32_t *arcs;		/* len */
+	int len;        /* arcs */
+	int32_t *nodes; /* len + 1 */
+	int32_t *arcs;  /* len */
 	double cost;
 } Route;
 
 struct PathgraphScratch {
-	size_t grid_cells;		/* the grid size the next three are made for */
+	size_t grid_cells;               /* the grid size the next three are made for */
 	int32_t *visit, *parent, *queue; /* grid-sized, for the S' and D' searches */
 	int32_t visit_stamp;
-	int32_t node_cap;		/* >= vertex_count + 2 */
-	int32_t arc_cap;		/* >= edge_count + PATHGRAPH_MAX_PIECES */
+	int32_t node_cap; /* >= vertex_count + 2 */
+	int32_t arc_cap;  /* >= edge_count + PATHGRAPH_MAX_PIECES */
 	double *g;
 	int32_t *pred_arc, *pred_node, *seen, *closed, *node_ban;
 	int32_t search_stamp, ban_stamp;
-	int32_t *arc_ban;		/* edge_count + PATHGRAPH_MAX_PIECES */
+	int32_t *arc_ban; /* edge_count + PATHGRAPH_MAX_PIECES */
 	IntList heap_node;
 	double *heap_key;
 	int heap_key_cap;
 	PathgraphPiece pieces[PATHGRAPH_MAX_PIECES];
 	int piece_count;
-	int32_t skip_edge[2];		/* the edges replaced by pieces, or -1 */
-	int32_t goal;			/* the goal node of the running search */
-	double goal_x, goal_y;		/* the goal cell's centre, for the estimate */
-	double min_d2;			/* the query's clearance, squared */
-	IntList walk_s, walk_d;		/* S to S' and D to D' walks when out of sight */
-	IntList cells;			/* the route's cells, while making the polyline */
+	int32_t skip_edge[2];   /* the edges replaced by pieces, or -1 */
+	int32_t goal;           /* the goal node of the running search */
+	double min_d2;          /* the query's clearance, squared */
+	IntList walk_s, walk_d; /* S to S' and D to D' walks when out of sight */
+	IntList cells;          /* the route's cells, while making the polyline */
 	int64_t expanded;
 };
 
@@ -134,7 +133,7 @@ static bool pathgraph_corner_ok(const Grid *g, int64_t X, int64_t Y)
  * segment a + t d for t in (t0, t1), which crosses no grid line, is free: it lies in
  * one cell, or (when the segment runs along a grid line) on one cell edge. */
 static bool pathgraph_piece_free(const Grid *g, Vec2 a, Vec2 d, bool on_x_line, bool on_y_line,
-				 double t0, double t1)
+                                 double t0, double t1)
 {
 	if (t1 - t0 <= PATHGRAPH_T_EPS)
 		return true;
@@ -195,8 +194,14 @@ bool pathgraph_segment_free(const Grid *g, Vec2 a, Vec2 b)
 
 /* ---------------------------------------------------------------- lengths */
 
-static int32_t pathgraph_cx(const Pathgraph *pg, int32_t i) { return i % pg->w; }
-static int32_t pathgraph_cy(const Pathgraph *pg, int32_t i) { return i / pg->w; }
+static int32_t pathgraph_cx(const Pathgraph *pg, int32_t i)
+{
+	return i % pg->w;
+}
+static int32_t pathgraph_cy(const Pathgraph *pg, int32_t i)
+{
+	return i / pg->w;
+}
 
 /* pathgraph_corner_cut(pg, a, b, c): the 4-adjacent steps a -> b -> c make a staircase
  * corner that a diagonal step a -> c may cut: the steps are perpendicular and both
@@ -212,13 +217,13 @@ static bool pathgraph_corner_cut(const Pathgraph *pg, int32_t a, int32_t b, int3
 /* pathgraph_run_length(pg, cells, count, step): the length of the polyline through the
  * cells cells[0], cells[step], ... (count of them; step 1 or -1), corners cut. */
 static double pathgraph_run_length(const Pathgraph *pg, const int32_t *cells, int32_t count,
-				   int step)
+                                   int step)
 {
 	double len = 0;
 	int32_t i = 1;
 	while (i < count) {
-		if (i + 1 < count &&
-		    pathgraph_corner_cut(pg, cells[(i - 1) * step], cells[i * step], cells[(i + 1) * step])) {
+		if (i + 1 < count && pathgraph_corner_cut(pg, cells[(i - 1) * step],
+		                                          cells[i * step], cells[(i + 1) * step])) {
 			len += PATHGRAPH_SQRT2;
 			i += 2;
 		} else {
@@ -231,7 +236,10 @@ static double pathgraph_run_length(const Pathgraph *pg, const int32_t *cells, in
 
 /* ---------------------------------------------------------------- build */
 
-void pathgraph_init(Pathgraph *pg) { *pg = (Pathgraph){0}; }
+void pathgraph_init(Pathgraph *pg)
+{
+	*pg = (Pathgraph){0};
+}
 
 static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 {
@@ -278,12 +286,12 @@ enum { PATHGRAPH_REF_NONE = -1, PATHGRAPH_REF_CHAIN = -2 };
 typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
-	uint8_t *toward;	/* junction-set cells: 1 + direction to the parent, 0 at the root */
-	IntList vcells;		/* cells of every vertex, vertex after vertex */
-	IntList vstart;		/* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
-	IntList cells;		/* edge cells */
+	uint8_t *toward; /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	IntList vcells;  /* cells of every vertex, vertex after vertex */
+	IntList vstart;  /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
+	IntList cells;   /* edge cells */
 	int vertex_cap, edge_cap;
-	int32_t chain_cells;	/* chain cells visited so far */
+	int32_t chain_cells; /* chain cells visited so far */
 } Builder;
 
 /* builder_neighbour(b, i, x, d): the skeleton cell next to cell i (in column x) in
@@ -310,14 +318,15 @@ static int builder_degree(const Builder *b, int32_t i, int32_t x)
 {
 	const int32_t w = b->pg->w;
 	const uint8_t *on = b->s->on;
-	return (x + 1 < w && on[i + 1]) + (x > 0 && on[i - 1]) + (i + w < w * b->pg->h && on[i + w]) +
-	       (i >= w && on[i - w]);
+	return (x + 1 < w && on[i + 1]) + (x > 0 && on[i - 1]) +
+	       (i + w < w * b->pg->h && on[i + w]) + (i >= w && on[i - w]);
 }
 
 static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 {
 	Pathgraph *pg = b->pg;
-	pg->vertices = util_grow(pg->vertices, &b->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
+	pg->vertices =
+	    util_grow(pg->vertices, &b->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
 	pg->cell_ref[cell] = v;
@@ -474,7 +483,9 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 					if (d >= 3) {
 						builder_junction_set(&b, i);
 					} else {
-						builder_add_vertex(&b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+						builder_add_vertex(&b, i,
+						                   d == 1 ? PATHGRAPH_END
+						                          : PATHGRAPH_POINT);
 						intlist_push(&b.vcells, i);
 					}
 				}
@@ -497,7 +508,8 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 				} else if (ref >= 0 && ref != v && c < nb) {
 					int first = b.cells.count;
 					builder_to_root(&b, c, &b.cells);
-					for (int i = first, j = b.cells.count - 1; i < j; i++, j--) {
+					for (int i = first, j = b.cells.count - 1; i < j;
+					     i++, j--) {
 						int32_t t = b.cells.v[i];
 						b.cells.v[i] = b.cells.v[j];
 						b.cells.v[j] = t;
@@ -573,8 +585,8 @@ bool pathgraph_validate(const Pathgraph *pg)
 	const Skeleton *s = pg->skeleton;
 	for (int32_t e = 0; e < pg->edge_count; e++) {
 		const PathgraphEdge *ed = &pg->edges[e];
-		if (ed->v0 < 0 || ed->v1 < 0 || ed->v0 >= pg->vertex_count || ed->v1 >= pg->vertex_count ||
-		    ed->count < 2)
+		if (ed->v0 < 0 || ed->v1 < 0 || ed->v0 >= pg->vertex_count ||
+		    ed->v1 >= pg->vertex_count || ed->count < 2)
 			return false;
 		const int32_t *c = pg->cells + ed->first;
 		const PathgraphVertex *a = &pg->vertices[ed->v0], *z = &pg->vertices[ed->v1];
@@ -590,7 +602,7 @@ bool pathgraph_validate(const Pathgraph *pg)
 				mind = s->dist2[c[k]];
 			int32_t ref = pg->cell_ref[c[k]];
 			bool inner_ok = ref == pg->vertex_count + ed->first + k ||
-					(ref >= 0 && ref < pg->vertex_count);
+			                (ref >= 0 && ref < pg->vertex_count);
 			if (!inner_ok)
 				return false;
 		}
@@ -616,16 +628,17 @@ static const char *const PATHGRAPH_KIND_NAME[] = {"junction", "end", "loop", "po
 
 void pathgraph_dump(const Pathgraph *pg, FILE *out)
 {
-	fprintf(out, "pathgraph: %d vertices, %d edges\n", (int)pg->vertex_count, (int)pg->edge_count);
+	fprintf(out, "pathgraph: %d vertices, %d edges\n", (int)pg->vertex_count,
+	        (int)pg->edge_count);
 	for (int32_t v = 0; v < pg->vertex_count; v++) {
 		const PathgraphVertex *p = &pg->vertices[v];
 		fprintf(out, "vertex %d %d %d %s %d %.3f\n", (int)v, (int)p->x, (int)p->y,
-			PATHGRAPH_KIND_NAME[p->kind], (int)p->set_size, sqrt((double)p->dist2));
+		        PATHGRAPH_KIND_NAME[p->kind], (int)p->set_size, sqrt((double)p->dist2));
 	}
 	for (int32_t e = 0; e < pg->edge_count; e++) {
 		const PathgraphEdge *ed = &pg->edges[e];
-		fprintf(out, "edge %d %d %d %.3f %.3f %d\n", (int)e, (int)ed->v0, (int)ed->v1, ed->length,
-			sqrt((double)ed->min_dist2), (int)ed->count);
+		fprintf(out, "edge %d %d %d %.3f %.3f %d\n", (int)e, (int)ed->v0, (int)ed->v1,
+		        ed->length, sqrt((double)ed->min_dist2), (int)ed->count);
 	}
 }
 
@@ -795,7 +808,7 @@ static void pathgraph_vertex_walk(Pathgraph *pg, int32_t c, int32_t v, IntList *
 /* pathgraph_add_piece(pg, u, v, edge, pos_u, pos_v, cell): a piece joining nodes u and
  * v (see PathgraphPiece), with its cost and clearance. */
 static void pathgraph_add_piece(Pathgraph *pg, int32_t u, int32_t v, int32_t edge, int32_t pos_u,
-				int32_t pos_v, int32_t cell)
+                                int32_t pos_v, int32_t cell)
 {
 	struct PathgraphScratch *sc = pg->scratch;
 	assert(sc->piece_count < PATHGRAPH_MAX_PIECES);
@@ -865,7 +878,8 @@ static void pathgraph_splice(Pathgraph *pg, int32_t s_cell, int32_t d_cell)
 /* Arc ids: an edge id, or edge_count + a piece index. */
 static double pathgraph_arc_cost(const Pathgraph *pg, int32_t arc)
 {
-	return arc < pg->edge_count ? pg->edges[arc].length : pg->scratch->pieces[arc - pg->edge_count].cost;
+	return arc < pg->edge_count ? pg->edges[arc].length
+	                            : pg->scratch->pieces[arc - pg->edge_count].cost;
 }
 
 /* pathgraph_node_centre(pg, node, s_cell, d_cell): where a node is, in grid units. */
@@ -879,7 +893,8 @@ static Vec2 pathgraph_cell_centre(const Pathgraph *pg, int32_t c)
 static void pathgraph_heap_push(struct PathgraphScratch *sc, double key, int32_t node)
 {
 	intlist_push(&sc->heap_node, node);
-	sc->heap_key = util_grow(sc->heap_key, &sc->heap_key_cap, sc->heap_node.count, sizeof *sc->heap_key);
+	sc->heap_key =
+	    util_grow(sc->heap_key, &sc->heap_key_cap, sc->heap_node.count, sizeof *sc->heap_key);
 	int i = sc->heap_node.count - 1;
 	while (i > 0) {
 		int up = (i - 1) / 2;
@@ -932,7 +947,7 @@ static Vec2 pathgraph_node_centre(const Pathgraph *pg, const SearchEnds *se, int
 
 /* pathgraph_relax(pg, se, node, arc, other, cost, min_dist2): one arc out of node. */
 static void pathgraph_relax(Pathgraph *pg, const SearchEnds *se, int32_t node, int32_t arc,
-			    int32_t other, double cost, int32_t min_dist2)
+                            int32_t other, double cost, int32_t min_dist2)
 {
 	struct PathgraphScratch *sc = pg->scratch;
 	if (sc->arc_ban[arc] == sc->ban_stamp || sc->node_ban[other] == sc->ban_stamp ||
@@ -946,12 +961,14 @@ static void pathgraph_relax(Pathgraph *pg, const SearchEnds *se, int32_t node, i
 	sc->pred_arc[other] = arc;
 	sc->pred_node[other] = node;
 	Vec2 a = pathgraph_node_centre(pg, se, other), b = pathgraph_node_centre(pg, se, sc->goal);
-	pathgraph_heap_push(sc, ng + sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)), other);
+	pathgraph_heap_push(sc, ng + sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)),
+	                    other);
 }
 
 /* pathgraph_astar(pg, se, src, dst, route): the shortest route from src to dst avoiding
  * banned arcs and nodes (ban_stamp) and thin edges; false when there is none. */
-static bool pathgraph_astar(Pathgraph *pg, const SearchEnds *se, int32_t src, int32_t dst, Route *route)
+static bool pathgraph_astar(Pathgraph *pg, const SearchEnds *se, int32_t src, int32_t dst,
+                            Route *route)
 {
 	struct PathgraphScratch *sc = pg->scratch;
 	const int32_t V = pg->vertex_count, E = pg->edge_count;
@@ -975,13 +992,15 @@ static bool pathgraph_astar(Pathgraph *pg, const SearchEnds *se, int32_t src, in
 			break;
 		}
 		if (node < V)
-			for (int32_t k = pg->incident_start[node]; k < pg->incident_start[node + 1]; k++) {
+			for (int32_t k = pg->incident_start[node]; k < pg->incident_start[node + 1];
+			     k++) {
 				int32_t e = pg->incident[k];
 				const PathgraphEdge *ed = &pg->edges[e];
-				if (ed->v0 == ed->v1 || e == sc->skip_edge[0] || e == sc->skip_edge[1])
+				if (ed->v0 == ed->v1 || e == sc->skip_edge[0] ||
+				    e == sc->skip_edge[1])
 					continue;
-				pathgraph_relax(pg, se, node, e, ed->v0 == node ? ed->v1 : ed->v0, ed->length,
-						ed->min_dist2);
+				pathgraph_relax(pg, se, node, e, ed->v0 == node ? ed->v1 : ed->v0,
+				                ed->length, ed->min_dist2);
 			}
 		for (int i = 0; i < sc->piece_count; i++) {
 			const PathgraphPiece *p = &sc->pieces[i];
@@ -1032,7 +1051,8 @@ static void pathgraph_push_cell(IntList *l, int32_t c)
  * lies straight between its neighbours (the polyline covers the same points). */
 static void pathgraph_push_point(Path *out, Vec2 q)
 {
-	if (out->count >= 1 && out->pts[out->count - 1].x == q.x && out->pts[out->count - 1].y == q.y)
+	if (out->count >= 1 && out->pts[out->count - 1].x == q.x &&
+	    out->pts[out->count - 1].y == q.y)
 		return;
 	if (out->count >= 2) {
 		Vec2 a = out->pts[out->count - 2], b = out->pts[out->count - 1];
@@ -1080,8 +1100,8 @@ static void pathgraph_arc_cells(Pathgraph *pg, int32_t arc, int32_t from, IntLis
 }
 
 /* pathgraph_polyline(pg, from, to, route, s_cell, d_cell, out): S, the cells, D. */
-static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *route, int32_t s_cell,
-			       int32_t d_cell, Path *out)
+static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *route,
+                               int32_t s_cell, int32_t d_cell, Path *out)
 {
 	struct PathgraphScratch *sc = pg->scratch;
 	IntList *l = &sc->cells;
@@ -1095,7 +1115,8 @@ static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *r
 		} else {
 			const PathgraphPiece *p = &sc->pieces[arc - pg->edge_count];
 			int32_t vertex = p->u < pg->vertex_count ? p->u : p->v;
-			need += p->edge < 0 ? pg->vertices[vertex].set_size : abs(p->pos_v - p->pos_u) + 1;
+			need += p->edge < 0 ? pg->vertices[vertex].set_size
+			                    : abs(p->pos_v - p->pos_u) + 1;
 		}
 	}
 	assert(need < INT32_MAX);
@@ -1143,7 +1164,7 @@ static void pathgraph_polyline(Pathgraph *pg, Vec2 from, Vec2 to, const Route *r
 		if (i == 0 || i == m - 1)
 			pathgraph_push_point(out, q); /* may line up with S or D */
 		else
-			out->pts[out->count++] = q;   /* turns only, by the merge above */
+			out->pts[out->count++] = q; /* turns only, by the merge above */
 	}
 	pathgraph_push_point(out, to);
 }
@@ -1169,7 +1190,8 @@ static bool route_same(const Route *a, const Route *b)
 
 /* pathgraph_prepare(pg, from, to, q, se): S', D' and the search graph; false when S or
  * D is not in a free cell. */
-static bool pathgraph_prepare(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, SearchEnds *se)
+static bool pathgraph_prepare(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q,
+                              SearchEnds *se)
 {
 	struct PathgraphScratch *sc = pathgraph_scratch(pg);
 	sc->expanded = 0;
@@ -1182,7 +1204,8 @@ static bool pathgraph_prepare(Pathgraph *pg, Vec2 from, Vec2 to, const Pathgraph
 	return true;
 }
 
-int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, int k, Path *out)
+int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, int k,
+                         Path *out)
 {
 	for (int i = 0; i < k; i++)
 		path_clear(&out[i]);
@@ -1219,7 +1242,8 @@ int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery
 					continue;
 				bool same_root = true;
 				for (int i = 0; i < j && same_root; i++)
-					same_root = o->arcs[i] == prev->arcs[i] && o->nodes[i] == prev->nodes[i];
+					same_root = o->arcs[i] == prev->arcs[i] &&
+					            o->nodes[i] == prev->nodes[i];
 				if (same_root)
 					sc->arc_ban[o->arcs[j]] = sc->ban_stamp;
 			}
@@ -1264,7 +1288,8 @@ int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery
 				best = r;
 		found[nfound] = cand[best];
 		cand[best] = cand[--ncand];
-		pathgraph_polyline(pg, from, to, &found[nfound], se.s_cell, se.d_cell, &out[nfound]);
+		pathgraph_polyline(pg, from, to, &found[nfound], se.s_cell, se.d_cell,
+		                   &out[nfound]);
 		out[nfound].expanded = sc->expanded;
 		nfound++;
 	}

@@ -23,7 +23,10 @@
 
 enum { ROOMS_DOOR_MARK = -2 }; /* a door cell in the room map while labelling */
 
-void rooms_init(Rooms *r) { *r = (Rooms){0}; }
+void rooms_init(Rooms *r)
+{
+	*r = (Rooms){0};
+}
 
 void rooms_free(Rooms *r)
 {
@@ -42,8 +45,8 @@ int32_t rooms_at(const Rooms *r, int32_t x, int32_t y)
 
 /* rooms_run(g, x, y, dx, dy, &x0, &y0, &x1, &y1): the run of free cells through (x, y)
  * along (dx, dy); returns its length. */
-static int32_t rooms_run(const Grid *g, int32_t x, int32_t y, int dx, int dy, int32_t *x0, int32_t *y0,
-			 int32_t *x1, int32_t *y1)
+static int32_t rooms_run(const Grid *g, int32_t x, int32_t y, int dx, int dy, int32_t *x0,
+                         int32_t *y0, int32_t *x1, int32_t *y1)
 {
 	int32_t a = 0, b = 0;
 	while (grid_free_at(g, x - (a + 1) * dx, y - (a + 1) * dy))
@@ -71,9 +74,9 @@ static int32_t rooms_cross(const Grid *g, int32_t x, int32_t y, int32_t cross[4]
 /* The search for a side's peak beyond the end of the edge (see rooms_side_peak). */
 typedef struct PeakSearch {
 	const Pathgraph *pg;
-	int32_t *stamp;		/* w * h: the search that last reached a cell */
-	int32_t current;	/* this search's stamp */
-	int32_t *queue;		/* w * h */
+	int32_t *stamp;  /* w * h: the search that last reached a cell */
+	int32_t current; /* this search's stamp */
+	int32_t *queue;  /* w * h */
 } PeakSearch;
 
 static bool rooms_door_rule(int32_t valley, int32_t peak)
@@ -90,7 +93,7 @@ static bool rooms_door_rule(int32_t valley, int32_t peak)
  * ROOMS_REACH_FACTOR * clearance + ROOMS_REACH_SLACK steps, stopping as soon as the
  * door rule is met. */
 static int32_t rooms_side_peak(PeakSearch *ps, const int32_t *c, const int32_t *d, int32_t from,
-			       int step, int32_t end, int32_t valley)
+                               int step, int32_t end, int32_t valley)
 {
 	int32_t peak = 0;
 	bool past_end = step < 0 ? from < end : from > end; /* the run reaches the edge's end */
@@ -140,7 +143,8 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 {
 	const int32_t *dist2 = pg->skeleton->dist2;
 	const size_t n = (size_t)pg->w * pg->h;
-	PeakSearch ps = {pg, util_alloc(n + 1, sizeof(int32_t)), 0, util_alloc(n + 1, sizeof(int32_t))};
+	PeakSearch ps = {pg, util_alloc(n + 1, sizeof(int32_t)), 0,
+	                 util_alloc(n + 1, sizeof(int32_t))};
 	int32_t *d = NULL;
 	int dcap = 0, door_cap = 0;
 	for (int32_t e = 0; e < pg->edge_count; e++) {
@@ -158,7 +162,8 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 			 * in a doorway; that side is then looked for past the vertex */
 			if ((i == 0 || d[i - 1] > d[i]) && (j == m - 1 || d[j + 1] > d[i]) &&
 			    rooms_door_rule(d[i], rooms_side_peak(&ps, c, d, i - 1, -1, 0, d[i])) &&
-			    rooms_door_rule(d[i], rooms_side_peak(&ps, c, d, j + 1, 1, m - 1, d[i]))) {
+			    rooms_door_rule(d[i],
+			                    rooms_side_peak(&ps, c, d, j + 1, 1, m - 1, d[i]))) {
 				/* the door is the narrowest chain cell of the run, the one nearest
 				 * its middle among equals: a run of equal clearance can follow a
 				 * wall into the room before it passes the gap */
@@ -167,9 +172,11 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 				for (int32_t k = i; k <= j; k++) {
 					if (pg->cell_ref[c[k]] < pg->vertex_count)
 						continue;
-					int32_t width = rooms_cross(pg->grid, c[k] % pg->w, c[k] / pg->w, cross);
+					int32_t width = rooms_cross(pg->grid, c[k] % pg->w,
+					                            c[k] / pg->w, cross);
 					int32_t off = abs(2 * k - (i + j));
-					if (width < best_width || (width == best_width && off < best_off)) {
+					if (width < best_width ||
+					    (width == best_width && off < best_off)) {
 						best = k;
 						best_width = width;
 						best_off = off;
@@ -181,11 +188,17 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 					continue;
 				}
 				int32_t mid = best;
-				r->doors = util_grow(r->doors, &door_cap, r->door_count + 1, sizeof *r->doors);
+				r->doors = util_grow(r->doors, &door_cap, r->door_count + 1,
+				                     sizeof *r->doors);
 				RoomsDoor *door = &r->doors[r->door_count++];
-				*door = (RoomsDoor){.x = c[mid] % pg->w, .y = c[mid] / pg->w, .edge = e,
-						    .width = best_width, .ax = best_cross[0], .ay = best_cross[1],
-						    .bx = best_cross[2], .by = best_cross[3]};
+				*door = (RoomsDoor){.x = c[mid] % pg->w,
+				                    .y = c[mid] / pg->w,
+				                    .edge = e,
+				                    .width = best_width,
+				                    .ax = best_cross[0],
+				                    .ay = best_cross[1],
+				                    .bx = best_cross[2],
+				                    .by = best_cross[3]};
 				/* where the door's neighbours along the edge are, for step (2) */
 				door->room_a = c[mid - 1];
 				door->room_b = c[mid + 1];
@@ -230,7 +243,8 @@ void rooms_find(Rooms *r, const Pathgraph *pg)
 		r->room[i] = id;
 		while (head < tail) {
 			int32_t c = queue[head++], cx = c % w, cy = c / w;
-			if (s->dist2[c] > s->dist2[best] || (s->dist2[c] == s->dist2[best] && c < best))
+			if (s->dist2[c] > s->dist2[best] ||
+			    (s->dist2[c] == s->dist2[best] && c < best))
 				best = c;
 			for (int k = 0; k < 4; k++) {
 				int32_t nx = cx + DX[k], ny = cy + DY[k];
@@ -293,7 +307,8 @@ int32_t rooms_doors_of(const Rooms *r, int32_t room, int32_t *out, int32_t cap)
 }
 
 /* The symbols of the rooms map, in room order. */
-static const char ROOMS_SYMBOLS[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+static const char ROOMS_SYMBOLS[] =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
 
 void rooms_dump(const Rooms *r, const Grid *g, FILE *out)
 {
@@ -304,7 +319,9 @@ void rooms_dump(const Rooms *r, const Grid *g, FILE *out)
 			int32_t id = rooms_at(r, x, y);
 			char c = '#';
 			if (grid_free_at(g, x, y))
-				c = id >= 0 && id < (int32_t)sizeof ROOMS_SYMBOLS - 1 ? ROOMS_SYMBOLS[id] : '?';
+				c = id >= 0 && id < (int32_t)sizeof ROOMS_SYMBOLS - 1
+				        ? ROOMS_SYMBOLS[id]
+				        : '?';
 			map[(size_t)y * w + x] = c;
 		}
 	for (int32_t k = 0; k < r->door_count; k++) {
@@ -325,11 +342,11 @@ void rooms_dump(const Rooms *r, const Grid *g, FILE *out)
 	for (int32_t k = 0; k < r->room_count; k++) {
 		const RoomsRoom *m = &r->rooms[k];
 		fprintf(out, "room %d %d %d %d %.3f\n", (int)k, (int)m->x, (int)m->y, (int)m->cells,
-			m->clearance);
+		        m->clearance);
 	}
 	for (int32_t k = 0; k < r->door_count; k++) {
 		const RoomsDoor *d = &r->doors[k];
-		fprintf(out, "door %d %d %d %d %d %d\n", (int)k, (int)d->x, (int)d->y, (int)d->width,
-			(int)d->room_a, (int)d->room_b);
+		fprintf(out, "door %d %d %d %d %d %d\n", (int)k, (int)d->x, (int)d->y,
+		        (int)d->width, (int)d->room_a, (int)d->room_b);
 	}
 }

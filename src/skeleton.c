@@ -138,7 +138,8 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 			v[0] = lo;
 			F[0] = (int64_t)lo * lo;
 			for (int32_t u = x0; u <= hi; u++) {
-				int64_t Fu = (int64_t)u * u + (u <= x1 ? (int64_t)row[u] * row[u] : 0);
+				int64_t Fu =
+				    (int64_t)u * u + (u <= x1 ? (int64_t)row[u] * row[u] : 0);
 				F[u - lo] = Fu;
 				while (top > 0) {
 					int32_t a = v[top - 1], b = v[top];
@@ -154,7 +155,7 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 			for (int32_t x = x0; x <= x1; x++) {
 				/* the lowest parabola at x moves right as x does */
 				while (k < top && F[v[k + 1] - lo] - F[v[k] - lo] <=
-							  2 * (int64_t)x * (v[k + 1] - v[k]))
+				                      2 * (int64_t)x * (v[k + 1] - v[k]))
 					k++;
 				int32_t d = x - v[k];
 				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
@@ -233,20 +234,20 @@ static void skeleton_build_simple_table(bool table[256])
 /* ---------------------------------------------------------------- thinning */
 
 enum {
-	SKELETON_IN = 1,	/* still in the set */
-	SKELETON_VISITED = 2,	/* reached in the distance order */
-	SKELETON_STACKED = 4	/* on the re-try stack */
+	SKELETON_IN = 1,      /* still in the set */
+	SKELETON_VISITED = 2, /* reached in the distance order */
+	SKELETON_STACKED = 4  /* on the re-try stack */
 };
 
 /* The thinning works on a copy of the grid padded by one background cell on every
  * side, so that a neighbourhood never needs a bounds check. */
 typedef struct Thinner {
-	int32_t w, h, pw;	/* grid size, padded width w + 2 */
-	uint8_t *state;		/* (w + 2) * (h + 2) SKELETON_* bits */
-	int32_t off[8];		/* padded index offsets of the 8 neighbours */
-	int32_t *stack;		/* padded indices to try again */
+	int32_t w, h, pw; /* grid size, padded width w + 2 */
+	uint8_t *state;   /* (w + 2) * (h + 2) SKELETON_* bits */
+	int32_t off[8];   /* padded index offsets of the 8 neighbours */
+	int32_t *stack;   /* padded indices to try again */
 	int32_t top;
-	const int32_t *dist2;	/* w * h, unpadded */
+	const int32_t *dist2; /* w * h, unpadded */
 	bool simple[256];
 } Thinner;
 
@@ -394,15 +395,18 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 /* The working space of skeleton_compute, kept between calls so that computing the
  * skeleton of a grid of the same size again touches no new memory. */
 struct SkeletonWork {
-	size_t cells;		/* the grid size it was made for, w * h */
-	uint8_t *state;		/* (w + 2) * (h + 2) */
-	int32_t *stack;		/* w * h */
-	int32_t *order;		/* w * h */
-	int32_t *start;		/* start_cap */
+	size_t cells;   /* the grid size it was made for, w * h */
+	uint8_t *state; /* (w + 2) * (h + 2) */
+	int32_t *stack; /* w * h */
+	int32_t *order; /* w * h */
+	int32_t *start; /* start_cap */
 	size_t start_cap;
 };
 
-void skeleton_init(Skeleton *s) { *s = (Skeleton){0}; }
+void skeleton_init(Skeleton *s)
+{
+	*s = (Skeleton){0};
+}
 
 static void skeleton_free_work(struct SkeletonWork *wk)
 {
@@ -555,8 +559,9 @@ bool skeleton_validate(const Skeleton *s, const Grid *g)
 			if (s->on[i] && !free_cell)
 				return false;
 			count += s->on[i] != 0;
-			if (skeleton_on(s, x, y) && skeleton_on(s, x + 1, y) && skeleton_on(s, x, y + 1) &&
-			    skeleton_on(s, x + 1, y + 1) && !skeleton_is_pinwheel(s, x, y))
+			if (skeleton_on(s, x, y) && skeleton_on(s, x + 1, y) &&
+			    skeleton_on(s, x, y + 1) && skeleton_on(s, x + 1, y + 1) &&
+			    !skeleton_is_pinwheel(s, x, y))
 				return false;
 		}
 	return count == s->count;
@@ -578,6 +583,6 @@ void skeleton_dump(const Skeleton *s, const Grid *g, FILE *out)
 		}
 		fputc('\n', out);
 	}
-	fprintf(out, "skeleton: %d cells, %d junction cells, %d end points, %d pruned\n", (int)s->count,
-		(int)junctions, (int)ends, (int)s->pruned);
+	fprintf(out, "skeleton: %d cells, %d junction cells, %d end points, %d pruned\n",
+	        (int)s->count, (int)junctions, (int)ends, (int)s->pruned);
 }

@@ -49,25 +49,25 @@
 #define ROOMS_REACH_SLACK 8.0
 
 typedef struct RoomsRoom {
-	int32_t x, y;		/* its centre: its skeleton cell of largest clearance, grid cells */
-	int32_t cells;		/* free cells in it */
-	double clearance;	/* the clearance at its centre, cells */
+	int32_t x, y;     /* its centre: its skeleton cell of largest clearance, grid cells */
+	int32_t cells;    /* free cells in it */
+	double clearance; /* the clearance at its centre, cells */
 } RoomsRoom;
 
 typedef struct RoomsDoor {
-	int32_t x, y;		/* the door's skeleton cell, grid cells */
-	int32_t width;		/* free cells across the door */
+	int32_t x, y;           /* the door's skeleton cell, grid cells */
+	int32_t width;          /* free cells across the door */
 	int32_t room_a, room_b; /* the rooms it joins, room_a < room_b */
-	int32_t edge;		/* the pathgraph edge it lies on */
+	int32_t edge;           /* the pathgraph edge it lies on */
 	int32_t ax, ay, bx, by; /* the run of free cells across it, from (ax, ay) to (bx, by) */
 } RoomsDoor;
 
 typedef struct Rooms {
 	int32_t w, h;
-	int32_t *room;		/* w * h, row-major: the room of a free cell, -1 if blocked */
+	int32_t *room; /* w * h, row-major: the room of a free cell, -1 if blocked */
 	int32_t room_count, door_count;
 	RoomsRoom *rooms;
-	RoomsDoor *doors;	/* ordered by pathgraph edge, then along the edge */
+	RoomsDoor *doors; /* ordered by pathgraph edge, then along the edge */
 } Rooms;
 
 void rooms_init(Rooms *r);

@@ -103,8 +103,8 @@ static bool topology_matches(const Grid *g, const Skeleton *s)
 			one[i] = slab[i] == owner[k];
 		int sh = oracle_holes(one, g->w, g->h);
 		if (fh != sh)
-			fprintf(stderr, "  component %d: %d holes in space, %d loops in skeleton\n", k,
-				fh, sh);
+			fprintf(stderr, "  component %d: %d holes in space, %d loops in skeleton\n",
+			        k, fh, sh);
 		ok = ok && fh == sh;
 	}
 	free(owner);
@@ -179,8 +179,8 @@ static int count_blocks(const Skeleton *s, int *pinwheels)
 	*pinwheels = 0;
 	for (int y = 0; y + 1 < s->h; y++)
 		for (int x = 0; x + 1 < s->w; x++) {
-			if (!(skeleton_on(s, x, y) && skeleton_on(s, x + 1, y) && skeleton_on(s, x, y + 1) &&
-			      skeleton_on(s, x + 1, y + 1)))
+			if (!(skeleton_on(s, x, y) && skeleton_on(s, x + 1, y) &&
+			      skeleton_on(s, x, y + 1) && skeleton_on(s, x + 1, y + 1)))
 				continue;
 			blocks++;
 			int arms = 0;
@@ -206,7 +206,7 @@ TEST_CASE(skeleton_2x2_blocks_only_pinwheels)
 		Grid g;
 		bool clutter = trial % 2 == 0;
 		oracle_random_grid(&g, 48, 40, clutter ? oracle_rand_below(30) : 0,
-				   1 + oracle_rand_below(8));
+		                   1 + oracle_rand_below(8));
 		Skeleton s;
 		skeleton_init(&s);
 		skeleton_compute(&s, &g);
@@ -224,6 +224,8 @@ TEST_CASE(skeleton_2x2_blocks_only_pinwheels)
 
 TEST_CASE(skeleton_ring_has_one_loop_and_clearance)
 {
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "...............",
 	    "...............",
@@ -235,6 +237,7 @@ TEST_CASE(skeleton_ring_has_one_loop_and_clearance)
 	    "...............",
 	    "...............",
 	};
+	/* clang-format on */
 	Grid g;
 	oracle_grid_from(&g, rows, 9);
 	Skeleton s;
@@ -255,6 +258,8 @@ TEST_CASE(skeleton_of_diagonal_pinch_is_two_components)
 {
 	/* two rooms that touch only at the corner of two diagonally touching blocked
 	 * cells: not connected (skeleton.h), so two skeleton components */
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "....#....",
 	    "....#....",
@@ -264,6 +269,7 @@ TEST_CASE(skeleton_of_diagonal_pinch_is_two_components)
 	    "....#....",
 	    "....#....",
 	};
+	/* clang-format on */
 	Grid g;
 	oracle_grid_from(&g, rows, 7);
 	Skeleton s;
@@ -329,9 +335,9 @@ TEST_CASE(skeleton_dump_of_a_corridor_by_hand)
 	skeleton_compute(&s, &g);
 	char *text = dump_to_string(&s, &g);
 	const char *want = ".....#......\n"
-			   ".*oooooooo*.\n"
-			   "............\n"
-			   "skeleton: 10 cells, 0 junction cells, 2 end points, 0 pruned\n";
+	                   ".*oooooooo*.\n"
+	                   "............\n"
+	                   "skeleton: 10 cells, 0 junction cells, 2 end points, 0 pruned\n";
 	if (strcmp(text, want) != 0)
 		fprintf(stderr, "%s", text);
 	TEST_CHECK(strcmp(text, want) == 0);
