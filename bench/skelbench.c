@@ -1,7 +1,10 @@
 /* skelbench.c - times the distance transform, the skeleton, the pathgraph and a query
  * (paper 4.2, 4.3) on synthetic grids, to show the figures of issue 4 and linear growth.
  *
- *   make build/rel/bench/skelbench && build/rel/bench/skelbench [REPEATS [LARGEST]]
+ *   make build/rel/bench/skelbench && build/rel/bench/skelbench [REPEATS [LARGEST [MAP...]]]
+ *
+ * LARGEST (default 4096) limits the synthetic grids' side; MAP are Moving AI .map files
+ * to time as well (say LARGEST 0 for these alone).
  *
  * Grids, all from a fixed seed: "rooms" (a lattice of rooms 64 cells wide whose walls
  * have doors), "rects" (random rectangles covering about a quarter of the grid), "maze"
@@ -116,14 +119,49 @@ static void bench_maze(Grid *g, int32_t side)
 	free(stack);
 }
 
-/* bench_free_near(g, x, y): the free cell nearest (x, y) along a diagonal walk */
-static Vec2 bench_free_near(const Grid *g, int32_t x, int32_t y, int32_t step)
+/* bench_ends(g, &from, &to): the query's ends: the free cell nearest the corner (2, 2),
+ * and the cell of its 4-connected free component nearest the opposite corner. */
+static void bench_ends(const Grid *g, Vec2 *from, Vec2 *to)
 {
-	while (!grid_free_at(g, x, y)) {
-		x += step;
-		y += step;
+	const size_t n = (size_t)g->w * g->h;
+	int64_t start = -1;
+	double best = HUGE_VAL;
+	for (size_t i = 0; i < n; i++) {
+		double dx = (double)(i % g->w) - 2, dy = (double)(i / g->w) - 2;
+		if (g->cells[i] == GRID_FREE && dx * dx + dy * dy < best) {
+			best = dx * dx + dy * dy;
+			start = (int64_t)i;
+		}
 	}
-	return vec2(x + 0.5, y + 0.5);
+	*from = *to = vec2(0.5, 0.5);
+	if (start < 0)
+		return;
+	int32_t *queue = malloc(sizeof *queue * n);
+	uint8_t *seen = calloc(n, 1);
+	int64_t head = 0, tail = 0, goal = start;
+	queue[tail++] = (int32_t)start;
+	seen[start] = 1;
+	best = HUGE_VAL;
+	while (head < tail) {
+		int32_t c = queue[head++], x = c % g->w, y = c / g->w;
+		double dx = x - (g->w - 3.0), dy = y - (g->h - 3.0);
+		if (dx * dx + dy * dy < best) {
+			best = dx * dx + dy * dy;
+			goal = c;
+		}
+		static const int DX[4] = {1, 0, -1, 0}, DY[4] = {0, 1, 0, -1};
+		for (int k = 0; k < 4; k++) {
+			int32_t nx = x + DX[k], ny = y + DY[k];
+			if (grid_free_at(g, nx, ny) && !seen[(size_t)ny * g->w + nx]) {
+				seen[(size_t)ny * g->w + nx] = 1;
+				queue[tail++] = ny * g->w + nx;
+			}
+		}
+	}
+	free(queue);
+	free(seen);
+	*from = vec2(start % g->w + 0.5, start / g->w + 0.5);
+	*to = vec2(goal % g->w + 0.5, goal / g->w + 0.5);
 }
 
 /* A reference grid A*, here only to count the cells it expands on the same problem as
@@ -235,13 +273,10 @@ static int64_t bench_grid_astar(const Grid *g, Vec2 from, Vec2 to, double *lengt
 	return expanded;
 }
 
-typedef void BenchMaker(Grid *g, int32_t side);
-
-static void bench_one(const char *name, BenchMaker *make, int32_t side, int repeats)
+static void bench_one(const char *name, Grid g, int repeats)
 {
-	Grid g;
-	make(&g, side);
-	double cells = (double)side * side;
+	const int32_t side = g.w > g.h ? g.w : g.h;
+	double cells = (double)g.w * g.h;
 	double t_edt = 1e30, t_skel = 1e30, t_graph = 1e30, t_query = 1e30;
 	int32_t *d2 = malloc(sizeof(int32_t) * (size_t)cells);
 	Skeleton s;
@@ -250,7 +285,8 @@ static void bench_one(const char *name, BenchMaker *make, int32_t side, int repe
 	skeleton_init(&s);
 	pathgraph_init(&pg);
 	path_init(&path);
-	Vec2 from = bench_free_near(&g, 2, 2, 1), to = bench_free_near(&g, side - 3, side - 3, -1);
+	Vec2 from, to;
+	bench_ends(&g, &from, &to);
 	int64_t expanded = 0;
 	for (int r = 0; r < repeats; r++) {
 		double t0 = bench_now_ms();
@@ -287,6 +323,34 @@ static void bench_one(const char *name, BenchMaker *make, int32_t side, int repe
 	grid_free(&g);
 }
 
+/* bench_load_map(path, g): a Moving AI .map file (../shared/data/movingai/README.md):
+ * '.', 'G' and 'S' free, anything else blocked; the file's rows in order as y. */
+static bool bench_load_map(const char *path, Grid *g)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return false;
+	char line[1 << 16];
+	int w = -1, h = -1;
+	while (fgets(line, sizeof line, f)) {
+		if (sscanf(line, "height %d", &h) == 1 || sscanf(line, "width %d", &w) == 1)
+			continue;
+		if (strncmp(line, "map", 3) == 0)
+			break;
+	}
+	if (w <= 0 || h <= 0 || w > SKELETON_MAX_SIDE || h > SKELETON_MAX_SIDE) {
+		fclose(f);
+		return false;
+	}
+	grid_init(g, w, h, GRID_BLOCKED);
+	for (int y = 0; y < h && fgets(line, sizeof line, f); y++)
+		for (int x = 0; x < w && line[x] && line[x] != '\n' && line[x] != '\r'; x++)
+			if (line[x] == '.' || line[x] == 'G' || line[x] == 'S')
+				g->cells[(size_t)y * w + x] = GRID_FREE;
+	fclose(f);
+	return true;
+}
+
 int main(int argc, char **argv)
 {
 	int repeats = argc > 1 ? atoi(argv[1]) : 3;
@@ -299,12 +363,25 @@ int main(int argc, char **argv)
 	       "expand", "length", "skcells", "verts", "edges");
 	static const int32_t sides[] = {1024, 2048, 4096};
 	for (int k = 0; k < 3 && sides[k] <= largest; k++) {
+		Grid g;
 		bench_seed = 2026;
-		bench_one("rooms", bench_rooms, sides[k], repeats);
+		bench_rooms(&g, sides[k]);
+		bench_one("rooms", g, repeats);
 		bench_seed = 2026;
-		bench_one("rects", bench_rects, sides[k], repeats);
+		bench_rects(&g, sides[k]);
+		bench_one("rects", g, repeats);
 		bench_seed = 2026;
-		bench_one("maze", bench_maze, sides[k], repeats);
+		bench_maze(&g, sides[k]);
+		bench_one("maze", g, repeats);
+	}
+	for (int k = 3; k < argc; k++) {
+		Grid g;
+		if (!bench_load_map(argv[k], &g)) {
+			fprintf(stderr, "skelbench: %s: not a readable .map file\n", argv[k]);
+			return 2;
+		}
+		const char *base = strrchr(argv[k], '/');
+		bench_one(base ? base + 1 : argv[k], g, repeats);
 	}
 	return 0;
 }
