@@ -9,8 +9,10 @@
  *    order) gives every free cell of the grid its room.
  * INVARIANTS  every free cell has a room, every blocked cell -1; a door's two rooms
  *    differ; a room's cells are 4-connected.
- * MEMORY  the room map (4 bytes a cell) and a queue of as many entries while working.
- * COMPLEXITY  O(w h + cells of the pathgraph's edges). */
+ * MEMORY  the room map (4 bytes a cell); while working, a queue and a stamp map (4
+ *    bytes a cell each).
+ * COMPLEXITY  O(w h + cells of the pathgraph's edges), plus for each valley looked at
+ *    past an edge's end a search bounded by its reach (rooms.h). */
 #include "utak/rooms.h"
 
 #include <math.h>
@@ -21,7 +23,10 @@
 
 enum { ROOMS_DOOR_MARK = -2 }; /* a door cell in the room map while labelling */
 
-void rooms_init(Rooms *r) { *r = (Rooms){0}; }
+void rooms_init(Rooms *r)
+{
+	*r = (Rooms){0};
+}
 
 void rooms_free(Rooms *r)
 {
@@ -40,8 +45,8 @@ int32_t rooms_at(const Rooms *r, int32_t x, int32_t y)
 
 /* rooms_run(g, x, y, dx, dy, &x0, &y0, &x1, &y1): the run of free cells through (x, y)
  * along (dx, dy); returns its length. */
-static int32_t rooms_run(const Grid *g, int32_t x, int32_t y, int dx, int dy, int32_t *x0, int32_t *y0,
-			 int32_t *x1, int32_t *y1)
+static int32_t rooms_run(const Grid *g, int32_t x, int32_t y, int dx, int dy, int32_t *x0,
+                         int32_t *y0, int32_t *x1, int32_t *y1)
 {
 	int32_t a = 0, b = 0;
 	while (grid_free_at(g, x - (a + 1) * dx, y - (a + 1) * dy))
@@ -55,30 +60,91 @@ static int32_t rooms_run(const Grid *g, int32_t x, int32_t y, int dx, int dy, in
 	return a + b + 1;
 }
 
-/* rooms_peak(d, from, step, end, floor_d2): the largest dist2 going from index from by
- * step until the profile comes down to floor_d2 or below, or index end is passed. */
-static int32_t rooms_peak(const int32_t *d, int32_t from, int step, int32_t end, int32_t floor_d2)
+/* rooms_cross(g, x, y, cross): the width across (x, y), the shorter of its runs of free
+ * cells along x and along y, whose ends go into cross = {ax, ay, bx, by}. */
+static int32_t rooms_cross(const Grid *g, int32_t x, int32_t y, int32_t cross[4])
 {
-	int32_t peak = 0;
-	for (int32_t k = from; step > 0 ? k <= end : k >= end; k += step) {
-		if (d[k] <= floor_d2)
-			break;
-		if (d[k] > peak)
-			peak = d[k];
-	}
-	return peak;
+	int32_t h[4], v[4];
+	int32_t hw = rooms_run(g, x, y, 1, 0, &h[0], &h[1], &h[2], &h[3]);
+	int32_t vw = rooms_run(g, x, y, 0, 1, &v[0], &v[1], &v[2], &v[3]);
+	memcpy(cross, hw <= vw ? h : v, 4 * sizeof *cross);
+	return hw <= vw ? hw : vw;
 }
 
-static bool rooms_door_rule(int32_t valley, int32_t left, int32_t right)
+/* The search for a side's peak beyond the end of the edge (see rooms_side_peak). */
+typedef struct PeakSearch {
+	const Pathgraph *pg;
+	int32_t *stamp;  /* w * h: the search that last reached a cell */
+	int32_t current; /* this search's stamp */
+	int32_t *queue;  /* w * h */
+} PeakSearch;
+
+static bool rooms_door_rule(int32_t valley, int32_t peak)
 {
-	double r = sqrt((double)valley), p = sqrt((double)(left < right ? left : right));
+	double r = sqrt((double)valley), p = sqrt((double)peak);
 	return p >= ROOMS_DOOR_RATIO * r && p - r >= ROOMS_DOOR_RISE;
+}
+
+/* rooms_side_peak(ps, c, d, from, step, end, valley): the peak of one side of a
+ * valley: the largest dist2 going along the edge's cells c (dist2 d) from index from
+ * by step until the profile comes down to valley or below. When the walk reaches the
+ * edge's end first, the side goes on past the vertex: a breadth-first search along
+ * the skeleton from the end cell, through cells above the valley, at most
+ * ROOMS_REACH_FACTOR * clearance + ROOMS_REACH_SLACK steps, stopping as soon as the
+ * door rule is met. */
+static int32_t rooms_side_peak(PeakSearch *ps, const int32_t *c, const int32_t *d, int32_t from,
+                               int step, int32_t end, int32_t valley)
+{
+	int32_t peak = 0;
+	bool past_end = step < 0 ? from < end : from > end; /* the run reaches the edge's end */
+	for (int32_t k = from; !past_end; k += step) {
+		if (d[k] <= valley)
+			return peak;
+		if (d[k] > peak)
+			peak = d[k];
+		if (k == end)
+			break;
+	}
+	if (rooms_door_rule(valley, peak))
+		return peak;
+	const Skeleton *s = ps->pg->skeleton;
+	const int32_t w = s->w;
+	int32_t reach = (int32_t)(ROOMS_REACH_FACTOR * sqrt((double)valley) + ROOMS_REACH_SLACK);
+	int32_t stamp = ++ps->current;
+	int32_t head = 0, tail = 0;
+	ps->queue[tail++] = c[end];
+	ps->stamp[c[end]] = stamp;
+	for (int32_t depth = 0; head < tail && depth < reach; depth++) {
+		for (int32_t layer_end = tail; head < layer_end;) {
+			int32_t q = ps->queue[head++], qx = q % w, qy = q / w;
+			static const int DX[4] = {1, 0, -1, 0}, DY[4] = {0, 1, 0, -1};
+			for (int k = 0; k < 4; k++) {
+				int32_t nx = qx + DX[k], ny = qy + DY[k];
+				if (!skeleton_on(s, nx, ny))
+					continue;
+				int32_t nb = ny * w + nx;
+				if (ps->stamp[nb] == stamp || s->dist2[nb] <= valley)
+					continue;
+				ps->stamp[nb] = stamp;
+				ps->queue[tail++] = nb;
+				if (s->dist2[nb] > peak) {
+					peak = s->dist2[nb];
+					if (rooms_door_rule(valley, peak))
+						return peak;
+				}
+			}
+		}
+	}
+	return peak;
 }
 
 /* rooms_find_doors(r, pg): step (1); the doors' rooms are filled in later. */
 static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 {
 	const int32_t *dist2 = pg->skeleton->dist2;
+	const size_t n = (size_t)pg->w * pg->h;
+	PeakSearch ps = {pg, util_alloc(n + 1, sizeof(int32_t)), 0,
+	                 util_alloc(n + 1, sizeof(int32_t))};
 	int32_t *d = NULL;
 	int dcap = 0, door_cap = 0;
 	for (int32_t e = 0; e < pg->edge_count; e++) {
@@ -88,29 +154,51 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 		d = util_grow(d, &dcap, m, sizeof *d);
 		for (int32_t k = 0; k < m; k++)
 			d[k] = dist2[c[k]];
-		for (int32_t i = 1; i <= m - 2;) {
+		for (int32_t i = 0; i < m;) {
 			int32_t j = i;
-			while (j + 1 <= m - 2 && d[j + 1] == d[i])
+			while (j + 1 < m && d[j + 1] == d[i])
 				j++;
-			int32_t mid = (i + j) / 2;
-			bool chain = pg->cell_ref[c[mid]] >= pg->vertex_count;
-			if (chain && d[i - 1] > d[i] && d[j + 1] > d[i] &&
-			    rooms_door_rule(d[i], rooms_peak(d, i - 1, -1, 0, d[i]),
-					    rooms_peak(d, j + 1, 1, m - 1, d[i]))) {
-				r->doors = util_grow(r->doors, &door_cap, r->door_count + 1, sizeof *r->doors);
-				RoomsDoor *door = &r->doors[r->door_count++];
-				*door = (RoomsDoor){.x = c[mid] % pg->w, .y = c[mid] / pg->w, .edge = e,
-						    .room_a = -1, .room_b = -1};
-				int32_t hx0, hy0, hx1, hy1, vx0, vy0, vx1, vy1;
-				int32_t hw = rooms_run(pg->grid, door->x, door->y, 1, 0, &hx0, &hy0, &hx1, &hy1);
-				int32_t vw = rooms_run(pg->grid, door->x, door->y, 0, 1, &vx0, &vy0, &vx1, &vy1);
-				if (hw <= vw) {
-					door->width = hw;
-					door->ax = hx0, door->ay = hy0, door->bx = hx1, door->by = hy1;
-				} else {
-					door->width = vw;
-					door->ax = vx0, door->ay = vy0, door->bx = vx1, door->by = vy1;
+			/* a run may take in a vertex at an end of the edge: a junction can sit
+			 * in a doorway; that side is then looked for past the vertex */
+			if ((i == 0 || d[i - 1] > d[i]) && (j == m - 1 || d[j + 1] > d[i]) &&
+			    rooms_door_rule(d[i], rooms_side_peak(&ps, c, d, i - 1, -1, 0, d[i])) &&
+			    rooms_door_rule(d[i],
+			                    rooms_side_peak(&ps, c, d, j + 1, 1, m - 1, d[i]))) {
+				/* the door is the narrowest chain cell of the run, the one nearest
+				 * its middle among equals: a run of equal clearance can follow a
+				 * wall into the room before it passes the gap */
+				int32_t best = -1, best_width = INT32_MAX, best_off = INT32_MAX;
+				int32_t cross[4] = {0, 0, 0, 0}, best_cross[4] = {0, 0, 0, 0};
+				for (int32_t k = i; k <= j; k++) {
+					if (pg->cell_ref[c[k]] < pg->vertex_count)
+						continue;
+					int32_t width = rooms_cross(pg->grid, c[k] % pg->w,
+					                            c[k] / pg->w, cross);
+					int32_t off = abs(2 * k - (i + j));
+					if (width < best_width ||
+					    (width == best_width && off < best_off)) {
+						best = k;
+						best_width = width;
+						best_off = off;
+						memcpy(best_cross, cross, sizeof cross);
+					}
 				}
+				if (best < 0) {
+					i = j + 1;
+					continue;
+				}
+				int32_t mid = best;
+				r->doors = util_grow(r->doors, &door_cap, r->door_count + 1,
+				                     sizeof *r->doors);
+				RoomsDoor *door = &r->doors[r->door_count++];
+				*door = (RoomsDoor){.x = c[mid] % pg->w,
+				                    .y = c[mid] / pg->w,
+				                    .edge = e,
+				                    .width = best_width,
+				                    .ax = best_cross[0],
+				                    .ay = best_cross[1],
+				                    .bx = best_cross[2],
+				                    .by = best_cross[3]};
 				/* where the door's neighbours along the edge are, for step (2) */
 				door->room_a = c[mid - 1];
 				door->room_b = c[mid + 1];
@@ -119,6 +207,8 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 		}
 	}
 	free(d);
+	free(ps.stamp);
+	free(ps.queue);
 }
 
 void rooms_find(Rooms *r, const Pathgraph *pg)
@@ -153,7 +243,8 @@ void rooms_find(Rooms *r, const Pathgraph *pg)
 		r->room[i] = id;
 		while (head < tail) {
 			int32_t c = queue[head++], cx = c % w, cy = c / w;
-			if (s->dist2[c] > s->dist2[best] || (s->dist2[c] == s->dist2[best] && c < best))
+			if (s->dist2[c] > s->dist2[best] ||
+			    (s->dist2[c] == s->dist2[best] && c < best))
 				best = c;
 			for (int k = 0; k < 4; k++) {
 				int32_t nx = cx + DX[k], ny = cy + DY[k];
@@ -216,7 +307,8 @@ int32_t rooms_doors_of(const Rooms *r, int32_t room, int32_t *out, int32_t cap)
 }
 
 /* The symbols of the rooms map, in room order. */
-static const char ROOMS_SYMBOLS[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+static const char ROOMS_SYMBOLS[] =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
 
 void rooms_dump(const Rooms *r, const Grid *g, FILE *out)
 {
@@ -227,7 +319,9 @@ void rooms_dump(const Rooms *r, const Grid *g, FILE *out)
 			int32_t id = rooms_at(r, x, y);
 			char c = '#';
 			if (grid_free_at(g, x, y))
-				c = id >= 0 && id < (int32_t)sizeof ROOMS_SYMBOLS - 1 ? ROOMS_SYMBOLS[id] : '?';
+				c = id >= 0 && id < (int32_t)sizeof ROOMS_SYMBOLS - 1
+				        ? ROOMS_SYMBOLS[id]
+				        : '?';
 			map[(size_t)y * w + x] = c;
 		}
 	for (int32_t k = 0; k < r->door_count; k++) {
@@ -248,11 +342,11 @@ void rooms_dump(const Rooms *r, const Grid *g, FILE *out)
 	for (int32_t k = 0; k < r->room_count; k++) {
 		const RoomsRoom *m = &r->rooms[k];
 		fprintf(out, "room %d %d %d %d %.3f\n", (int)k, (int)m->x, (int)m->y, (int)m->cells,
-			m->clearance);
+		        m->clearance);
 	}
 	for (int32_t k = 0; k < r->door_count; k++) {
 		const RoomsDoor *d = &r->doors[k];
-		fprintf(out, "door %d %d %d %d %d %d\n", (int)k, (int)d->x, (int)d->y, (int)d->width,
-			(int)d->room_a, (int)d->room_b);
+		fprintf(out, "door %d %d %d %d %d %d\n", (int)k, (int)d->x, (int)d->y,
+		        (int)d->width, (int)d->room_a, (int)d->room_b);
 	}
 }

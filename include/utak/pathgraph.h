@@ -57,34 +57,34 @@ typedef enum PathgraphKind {
 } PathgraphKind;
 
 typedef struct PathgraphVertex {
-	int32_t x, y;	    /* its cell, in grid cells */
+	int32_t x, y; /* its cell, in grid cells */
 	PathgraphKind kind;
-	int32_t set_size;   /* cells in the junction set; 1 for other kinds */
-	int32_t dist2;	    /* skeleton dist2 of its cell */
+	int32_t set_size; /* cells in the junction set; 1 for other kinds */
+	int32_t dist2;    /* skeleton dist2 of its cell */
 } PathgraphVertex;
 
 typedef struct PathgraphEdge {
-	int32_t v0, v1;	    /* its vertices (v0 == v1 for a loop) */
-	int32_t first;	    /* its cells are Pathgraph.cells[first .. first + count) */
-	int32_t count;	    /* >= 2: the cells of v0 and v1 and the chain between */
-	double length;	    /* in cells, corners cut as above */
-	int32_t min_dist2;  /* smallest dist2 of its cells: clearance^2 */
+	int32_t v0, v1;    /* its vertices (v0 == v1 for a loop) */
+	int32_t first;     /* its cells are Pathgraph.cells[first .. first + count) */
+	int32_t count;     /* >= 2: the cells of v0 and v1 and the chain between */
+	double length;     /* in cells, corners cut as above */
+	int32_t min_dist2; /* smallest dist2 of its cells: clearance^2 */
 } PathgraphEdge;
 
 typedef struct Pathgraph {
-	int32_t w, h;			/* the grid's size */
-	const Grid *grid;		/* borrowed */
-	const Skeleton *skeleton;	/* borrowed */
+	int32_t w, h;             /* the grid's size */
+	const Grid *grid;         /* borrowed */
+	const Skeleton *skeleton; /* borrowed */
 	int32_t vertex_count, edge_count;
 	PathgraphVertex *vertices;
 	PathgraphEdge *edges;
-	int32_t cell_count;		/* cells of all edges */
-	int32_t *cells;			/* grid indices y * w + x, edge after edge */
-	int32_t *incident_start;	/* vertex_count + 1: edges of v are */
-	int32_t *incident;		/* incident[incident_start[v] .. incident_start[v + 1]) */
-	int32_t *cell_ref;		/* w * h: -1 off the skeleton, v < vertex_count for a
-					 * cell of vertex v, vertex_count + k for cells[k] */
-	int32_t *cell_edge;		/* cell_count: the edge each entry of cells belongs to */
+	int32_t cell_count;               /* cells of all edges */
+	int32_t *cells;                   /* grid indices y * w + x, edge after edge */
+	int32_t *incident_start;          /* vertex_count + 1: edges of v are */
+	int32_t *incident;                /* incident[incident_start[v] .. incident_start[v + 1]) */
+	int32_t *cell_ref;                /* w * h: -1 off the skeleton, v < vertex_count for a
+	                                   * cell of vertex v, vertex_count + k for cells[k] */
+	int32_t *cell_edge;               /* cell_count: the edge each entry of cells belongs to */
 	struct PathgraphScratch *scratch; /* the queries' working space (pathgraph.c) */
 } Pathgraph;
 
@@ -93,7 +93,10 @@ typedef struct PathgraphQuery {
 	double min_clearance; /* skip edges whose clearance is below this (cells); 0: none */
 } PathgraphQuery;
 
-static inline PathgraphQuery pathgraph_query_default(void) { return (PathgraphQuery){0.0}; }
+static inline PathgraphQuery pathgraph_query_default(void)
+{
+	return (PathgraphQuery){0.0};
+}
 
 void pathgraph_init(Pathgraph *pg);
 void pathgraph_free(Pathgraph *pg);
@@ -106,12 +109,15 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g);
  * (different free components, or no edges with enough clearance). */
 bool pathgraph_find_path(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, Path *out);
 
-/* pathgraph_find_paths(pg, from, to, q, k, out): up to k topologically distinct paths,
- * shortest first, into out[0 .. k) (each cleared; caller's Paths, path_init'ed).
- * Returns how many were found. out[i].expanded counts the vertices expanded by all
- * the searches up to finding path i. */
+/* pathgraph_find_paths(pg, from, to, q, k, out): up to k topologically distinct paths
+ * into out[0 .. k) (each cleared; caller's Paths, path_init'ed), in order of their
+ * length along the pathgraph. The polyline drops the steps into and out of a junction
+ * set or S' and cuts corners where two edges meet, so path_length can be a cell or so
+ * shorter and its order differ between near-equal paths. Returns how many were found.
+ * out[i].expanded counts the vertices expanded by all the searches up to path i (Yen's
+ * method runs one search per node of each path found). */
 int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, int k,
-			 Path *out);
+                         Path *out);
 
 /* pathgraph_entry(pg, p, &x, &y): S' for the point p: the cell (x, y) where a path from
  * p joins the skeleton. Returns 0 when p is not in a free cell, 1 when (x, y) is in a

@@ -5,11 +5,17 @@
  *
  * THE DOOR RULE. Along every pathgraph edge (pathgraph.h) the clearance of the cells is
  * a profile. A door is a valley of that profile: a run of cells of equal clearance r,
- * inside the edge (not at its vertices), with higher clearance just before and just
- * after it, such that on EACH side, going away from the run until the profile comes
- * back down to r or below (or the edge ends), the clearance rises to a peak p with
+ * holding at least one chain cell (not a vertex's), with higher clearance just before
+ * and just after it (or the end of the edge), such that on EACH side, going away from
+ * the run until the profile comes back down to r or below, the clearance rises to a
+ * peak p with
  *     p >= ROOMS_DOOR_RATIO * r   and   p - r >= ROOMS_DOOR_RISE.
- * The door is the middle cell of the run. A narrowing into a space that is hardly
+ * A side that reaches the end of the edge first goes on past the vertex, along the
+ * skeleton through cells of clearance above r, for at most ROOMS_REACH_FACTOR * r +
+ * ROOMS_REACH_SLACK steps: a door often opens straight onto a junction near the wall.
+ * The door is the run's chain cell of least width (below), the one nearest the middle
+ * of the run among equals: a run of equal clearance can follow a wall into the room
+ * before it passes the gap. A narrowing into a space that is hardly
  * wider is no door; a long corridor of even width between two wide rooms is one door
  * (one valley); a door on a loop whose two sides turn out to be the same room (the
  * space goes round) is dropped.
@@ -37,27 +43,31 @@
 /* ...and the space widens by at least this much (cells of clearance): a digitisation
  * wobble of the clearance (1 to 1.41, say) is no door. */
 #define ROOMS_DOOR_RISE 1.0
+/* How far past the end of an edge a side's peak is looked for, in skeleton steps: a few
+ * door widths, so that the room behind a door counts but not the whole building. */
+#define ROOMS_REACH_FACTOR 4.0
+#define ROOMS_REACH_SLACK 8.0
 
 typedef struct RoomsRoom {
-	int32_t x, y;		/* its centre: its skeleton cell of largest clearance, grid cells */
-	int32_t cells;		/* free cells in it */
-	double clearance;	/* the clearance at its centre, cells */
+	int32_t x, y;     /* its centre: its skeleton cell of largest clearance, grid cells */
+	int32_t cells;    /* free cells in it */
+	double clearance; /* the clearance at its centre, cells */
 } RoomsRoom;
 
 typedef struct RoomsDoor {
-	int32_t x, y;		/* the door's skeleton cell, grid cells */
-	int32_t width;		/* free cells across the door */
+	int32_t x, y;           /* the door's skeleton cell, grid cells */
+	int32_t width;          /* free cells across the door */
 	int32_t room_a, room_b; /* the rooms it joins, room_a < room_b */
-	int32_t edge;		/* the pathgraph edge it lies on */
+	int32_t edge;           /* the pathgraph edge it lies on */
 	int32_t ax, ay, bx, by; /* the run of free cells across it, from (ax, ay) to (bx, by) */
 } RoomsDoor;
 
 typedef struct Rooms {
 	int32_t w, h;
-	int32_t *room;		/* w * h, row-major: the room of a free cell, -1 if blocked */
+	int32_t *room; /* w * h, row-major: the room of a free cell, -1 if blocked */
 	int32_t room_count, door_count;
 	RoomsRoom *rooms;
-	RoomsDoor *doors;	/* ordered by pathgraph edge, then along the edge */
+	RoomsDoor *doors; /* ordered by pathgraph edge, then along the edge */
 } Rooms;
 
 void rooms_init(Rooms *r);

@@ -49,17 +49,18 @@
 #define SKELETON_SPUR_SLACK 2.0
 
 typedef struct Skeleton {
-	int32_t w, h;	/* size in cells, as the grid it was computed on */
+	int32_t w, h;   /* size in cells, as the grid it was computed on */
 	int32_t *dist2; /* w * h, row-major: squared distance to the nearest blocked centre */
-	uint8_t *on;	/* w * h, row-major: 1 for a skeleton cell, else 0 */
-	int32_t count;	/* number of skeleton cells */
+	uint8_t *on;    /* w * h, row-major: 1 for a skeleton cell, else 0 */
+	int32_t count;  /* number of skeleton cells */
 	int32_t pruned; /* number of cells removed as spurs (for the bench and tests) */
 	struct SkeletonWork *work; /* working space, kept for the next grid of this size */
 } Skeleton;
 
 /* skeleton_edt(g, dist2): the exact Euclidean distance transform of g into the
- * caller's array of g->w * g->h int32_t (see dist2 above). Linear time. */
-void skeleton_edt(const Grid *g, int32_t *dist2);
+ * caller's array of g->w * g->h int32_t (see dist2 above). Linear time. Returns the
+ * largest value (0 for a grid with no free cell). */
+int32_t skeleton_edt(const Grid *g, int32_t *dist2);
 
 void skeleton_init(Skeleton *s);
 void skeleton_free(Skeleton *s);

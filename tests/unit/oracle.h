@@ -21,7 +21,10 @@ static inline uint32_t oracle_rand(void)
 	oracle_seed = oracle_seed * 6364136223846793005ULL + 1442695040888963407ULL;
 	return (uint32_t)(oracle_seed >> 33);
 }
-static inline int oracle_rand_below(int n) { return (int)(oracle_rand() % (uint32_t)n); }
+static inline int oracle_rand_below(int n)
+{
+	return (int)(oracle_rand() % (uint32_t)n);
+}
 
 /* oracle_random_grid(g, w, h, percent): each cell blocked with the given probability;
  * with rects > 0, that many random rectangles are blocked on top. */
@@ -70,7 +73,8 @@ static inline int oracle_label(const uint8_t *in, int w, int h, int conn, int *l
 			int c = stack[--top], cx = c % w, cy = c / w;
 			for (int dy = -1; dy <= 1; dy++)
 				for (int dx = -1; dx <= 1; dx++) {
-					if ((dx == 0 && dy == 0) || (conn == 4 && dx != 0 && dy != 0))
+					if ((dx == 0 && dy == 0) ||
+					    (conn == 4 && dx != 0 && dy != 0))
 						continue;
 					int nx = cx + dx, ny = cy + dy;
 					if (nx < 0 || ny < 0 || nx >= w || ny >= h)

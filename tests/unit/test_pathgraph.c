@@ -38,20 +38,23 @@ static bool path_in_free_space(const Grid *g, const Path *p)
 
 TEST_CASE(line_test_by_hand)
 {
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    ".....",
 	    "..#..",
 	    ".#...",
 	    ".....",
 	};
+	/* clang-format on */
 	Grid g;
 	oracle_grid_from(&g, rows, 4);
 	/* blocked: (2, 2) and (1, 1); they touch at the corner (2, 2) */
-	TEST_CHECK(!pathgraph_segment_free(&g, vec2(1.5, 2.5), vec2(2.5, 1.5)));  /* the pinch */
-	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 3.5), vec2(3.5, 0.5)));  /* through it */
-	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(4.5, 0.5)));   /* row 0 */
-	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 1.5), vec2(4.5, 1.5)));  /* crosses (1,1) */
-	TEST_CHECK(pathgraph_segment_free(&g, vec2(2.5, 0.5), vec2(4.5, 2.5)));   /* corner (3,1) */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(1.5, 2.5), vec2(2.5, 1.5))); /* the pinch */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 3.5), vec2(3.5, 0.5))); /* through it */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(4.5, 0.5)));  /* row 0 */
+	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 1.5), vec2(4.5, 1.5))); /* crosses (1,1) */
+	TEST_CHECK(pathgraph_segment_free(&g, vec2(2.5, 0.5), vec2(4.5, 2.5)));  /* corner (3,1) */
 	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(1.5, 0.5)));
 	/* touching one blocked cell at its corner is allowed: corner (3,3) of (2,2) */
 	TEST_CHECK(pathgraph_segment_free(&g, vec2(2.5, 3.5), vec2(3.5, 2.5)));
@@ -63,12 +66,15 @@ TEST_CASE(line_test_by_hand)
 	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(-0.5, 0.5)));
 	grid_free(&g);
 	/* along the edge between two blocked cells */
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const wall[] = {
 	    "...",
 	    "###",
 	    "###",
 	    "...",
 	};
+	/* clang-format on */
 	oracle_grid_from(&g, wall, 4);
 	TEST_CHECK(!pathgraph_segment_free(&g, vec2(0.2, 2.0), vec2(2.8, 2.0)));
 	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.2, 3.0), vec2(2.8, 3.0)));
@@ -83,9 +89,12 @@ TEST_CASE(line_test_agrees_with_dense_sampling)
 		Grid g;
 		oracle_random_grid(&g, 24, 20, 15, 2);
 		for (int k = 0; k < 200; k++) {
-			Vec2 a = vec2(oracle_rand_below(24000) / 1000.0, oracle_rand_below(20000) / 1000.0);
-			Vec2 b = vec2(oracle_rand_below(24000) / 1000.0, oracle_rand_below(20000) / 1000.0);
-			bool fast = pathgraph_segment_free(&g, a, b), brute = brute_segment_free(&g, a, b);
+			Vec2 a = vec2(oracle_rand_below(24000) / 1000.0,
+			              oracle_rand_below(20000) / 1000.0);
+			Vec2 b = vec2(oracle_rand_below(24000) / 1000.0,
+			              oracle_rand_below(20000) / 1000.0);
+			bool fast = pathgraph_segment_free(&g, a, b),
+			     brute = brute_segment_free(&g, a, b);
 			/* the sampling can miss a sliver of a blocked cell, never the reverse */
 			TEST_CHECK(!(fast && !brute));
 			disagree += fast != brute;
@@ -139,7 +148,7 @@ TEST_CASE(pathgraph_edges_on_random_grids)
 	for (int trial = 0; trial < 150; trial++) {
 		Grid g;
 		oracle_random_grid(&g, 2 + oracle_rand_below(40), 2 + oracle_rand_below(40),
-				   oracle_rand_below(35), oracle_rand_below(6));
+		                   oracle_rand_below(35), oracle_rand_below(6));
 		Skeleton s;
 		Pathgraph pg;
 		skeleton_init(&s);
@@ -159,7 +168,8 @@ static Vec2 random_free_point(const Grid *g)
 	for (;;) {
 		int x = oracle_rand_below(g->w), y = oracle_rand_below(g->h);
 		if (grid_free_at(g, x, y))
-			return vec2(x + oracle_rand_below(1000) / 1000.0, y + oracle_rand_below(1000) / 1000.0);
+			return vec2(x + oracle_rand_below(1000) / 1000.0,
+			            y + oracle_rand_below(1000) / 1000.0);
 	}
 }
 
@@ -170,7 +180,7 @@ TEST_CASE(paths_exist_iff_connected_and_lie_in_free_space)
 	for (int trial = 0; trial < 120; trial++) {
 		Grid g;
 		oracle_random_grid(&g, 4 + oracle_rand_below(40), 4 + oracle_rand_below(40),
-				   oracle_rand_below(40), oracle_rand_below(6));
+		                   oracle_rand_below(40), oracle_rand_below(6));
 		int free_cells = 0;
 		for (int i = 0; i < g.w * g.h; i++)
 			free_cells += g.cells[i] == GRID_FREE;
@@ -190,7 +200,8 @@ TEST_CASE(paths_exist_iff_connected_and_lie_in_free_space)
 		pathgraph_build(&pg, &s, &g);
 		for (int q = 0; q < 20; q++) {
 			Vec2 a = random_free_point(&g), b = random_free_point(&g);
-			bool joined = lab[(int)a.y * g.w + (int)a.x] == lab[(int)b.y * g.w + (int)b.x];
+			bool joined =
+			    lab[(int)a.y * g.w + (int)a.x] == lab[(int)b.y * g.w + (int)b.x];
 			PathgraphQuery opt = pathgraph_query_default();
 			bool ok = pathgraph_find_path(&pg, a, b, &opt, &p);
 			TEST_CHECK(ok == joined);
@@ -219,6 +230,8 @@ TEST_CASE(paths_exist_iff_connected_and_lie_in_free_space)
 	TEST_CHECK(found > 100 && none > 10);
 }
 
+/* the rows are a picture of the grid, north on top */
+/* clang-format off */
 static const char *const RING[] = {
     "....................",
     "....................",
@@ -232,6 +245,7 @@ static const char *const RING[] = {
     "....................",
     "....................",
 };
+/* clang-format on */
 
 TEST_CASE(two_distinct_paths_round_a_ring)
 {
@@ -256,7 +270,8 @@ TEST_CASE(two_distinct_paths_round_a_ring)
 		for (int i = 1; i < p[k].count; i++)
 			for (int j = 0; j <= 100; j++) {
 				Vec2 a = p[k].pts[i - 1], b = p[k].pts[i];
-				double x = a.x + (b.x - a.x) * j / 100, y = a.y + (b.y - a.y) * j / 100;
+				double x = a.x + (b.x - a.x) * j / 100,
+				       y = a.y + (b.y - a.y) * j / 100;
 				if (x > 8 && x < 12) {
 					above = above || y > 7;
 					below = below || y < 4;
@@ -275,6 +290,8 @@ TEST_CASE(two_distinct_paths_round_a_ring)
 TEST_CASE(minimum_clearance_avoids_the_narrow_way)
 {
 	/* a wide way over the top and a gap one cell wide through the middle wall */
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "......................",
 	    "......................",
@@ -288,6 +305,7 @@ TEST_CASE(minimum_clearance_avoids_the_narrow_way)
 	    "......................",
 	    "......................",
 	};
+	/* clang-format on */
 	Grid g;
 	oracle_grid_from(&g, rows, 11);
 	/* close the top way except at the right end */
@@ -311,6 +329,8 @@ TEST_CASE(minimum_clearance_avoids_the_narrow_way)
 	grid_free(&g);
 
 	/* now with a second, wide way round the right end of the wall */
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows2[] = {
 	    "......................",
 	    "......................",
@@ -324,6 +344,7 @@ TEST_CASE(minimum_clearance_avoids_the_narrow_way)
 	    "......................",
 	    "......................",
 	};
+	/* clang-format on */
 	oracle_grid_from(&g, rows2, 11);
 	skeleton_compute(&s, &g);
 	pathgraph_build(&pg, &s, &g);
@@ -355,10 +376,67 @@ TEST_CASE(entry_is_in_sight_in_a_room)
 	TEST_CHECK(skeleton_on(&s, x, y));
 	TEST_CHECK(pathgraph_segment_free(&g, vec2(0.5, 0.5), vec2(x + 0.5, y + 0.5)));
 	TEST_CHECK(pathgraph_entry(&pg, vec2(9.5, 5.5), &x, &y) == 0); /* in the obstacle */
-	TEST_CHECK(pathgraph_entry(&pg, vec2(-3, 5.5), &x, &y) == 0);	/* off the grid */
+	TEST_CHECK(pathgraph_entry(&pg, vec2(-3, 5.5), &x, &y) == 0);  /* off the grid */
 	pathgraph_free(&pg);
 	skeleton_free(&s);
 	grid_free(&g);
+}
+
+/* S' by brute force: the entry is in sight (dense sampling), and no skeleton cell of
+ * the component nearer to the point is in sight; when the entry is by a walk, no
+ * skeleton cell of the component is in sight at all. */
+TEST_CASE(entry_is_the_nearest_skeleton_cell_in_sight)
+{
+	oracle_seed = 31;
+	int in_sight = 0, walked = 0;
+	for (int trial = 0; trial < 150; trial++) {
+		Grid g;
+		oracle_random_grid(&g, 4 + oracle_rand_below(30), 4 + oracle_rand_below(30),
+		                   oracle_rand_below(45), oracle_rand_below(6));
+		int free_cells = 0;
+		for (int i = 0; i < g.w * g.h; i++)
+			free_cells += g.cells[i] == GRID_FREE;
+		if (free_cells == 0) {
+			grid_free(&g);
+			continue;
+		}
+		int *lab = malloc(sizeof(int) * (size_t)(g.w * g.h));
+		oracle_label(g.cells, g.w, g.h, 4, lab);
+		Skeleton s;
+		Pathgraph pg;
+		skeleton_init(&s);
+		pathgraph_init(&pg);
+		skeleton_compute(&s, &g);
+		pathgraph_build(&pg, &s, &g);
+		for (int q = 0; q < 10; q++) {
+			Vec2 p = random_free_point(&g);
+			int32_t ex, ey;
+			int how = pathgraph_entry(&pg, p, &ex, &ey);
+			TEST_CHECK(how == 1 || how == 2);
+			int comp = lab[(int)p.y * g.w + (int)p.x];
+			TEST_CHECK(skeleton_on(&s, ex, ey) && lab[ey * g.w + ex] == comp);
+			double best = hypot(ex + 0.5 - p.x, ey + 0.5 - p.y);
+			if (how == 1) {
+				in_sight++;
+				TEST_CHECK(brute_segment_free(&g, p, vec2(ex + 0.5, ey + 0.5)));
+			} else {
+				walked++;
+			}
+			for (int i = 0; i < g.w * g.h; i++) {
+				if (!s.on[i] || lab[i] != comp)
+					continue;
+				Vec2 c = vec2(i % g.w + 0.5, i / g.w + 0.5);
+				if (how == 2 || hypot(c.x - p.x, c.y - p.y) < best - 1e-9)
+					TEST_CHECK(!pathgraph_segment_free(&g, p, c));
+			}
+		}
+		pathgraph_free(&pg);
+		skeleton_free(&s);
+		free(lab);
+		grid_free(&g);
+	}
+	fprintf(stderr, "  entries: %d in sight, %d by a walk\n", in_sight, walked);
+	TEST_CHECK(in_sight > 100 && walked > 0);
 }
 
 TEST_CASE(pathgraph_dump_of_a_corridor_by_hand)
@@ -379,9 +457,9 @@ TEST_CASE(pathgraph_dump_of_a_corridor_by_hand)
 	pathgraph_dump(&pg, f);
 	fclose(f);
 	const char *want = "pathgraph: 2 vertices, 1 edges\n"
-			   "vertex 0 1 1 end 1 2.000\n"
-			   "vertex 1 10 1 end 1 2.000\n"
-			   "edge 0 0 1 9.000 2.000 10\n";
+	                   "vertex 0 1 1 end 1 2.000\n"
+	                   "vertex 1 10 1 end 1 2.000\n"
+	                   "edge 0 0 1 9.000 2.000 10\n";
 	if (strcmp(text, want) != 0)
 		fprintf(stderr, "%s", text);
 	TEST_CHECK(strcmp(text, want) == 0);
@@ -400,6 +478,7 @@ int main(void)
 	TEST_RUN(two_distinct_paths_round_a_ring);
 	TEST_RUN(minimum_clearance_avoids_the_narrow_way);
 	TEST_RUN(entry_is_in_sight_in_a_room);
+	TEST_RUN(entry_is_the_nearest_skeleton_cell_in_sight);
 	TEST_RUN(pathgraph_dump_of_a_corridor_by_hand);
 	return TEST_EXIT();
 }

@@ -58,6 +58,8 @@ static bool rooms_consistent(const Rooms *r, const Grid *g)
 
 TEST_CASE(two_rooms_one_door)
 {
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "..........#..........",
 	    "..........#..........",
@@ -70,6 +72,7 @@ TEST_CASE(two_rooms_one_door)
 	    "..........#..........",
 	    "..........#..........",
 	};
+	/* clang-format on */
 	World w;
 	world_make(&w, rows, 10);
 	if (w.r.room_count != 2 || w.r.door_count != 1)
@@ -90,6 +93,8 @@ TEST_CASE(two_rooms_one_door)
 
 TEST_CASE(one_open_room_no_door)
 {
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "..............",
 	    "..............",
@@ -99,6 +104,7 @@ TEST_CASE(one_open_room_no_door)
 	    "..............",
 	    "..............",
 	};
+	/* clang-format on */
 	World w;
 	world_make(&w, rows, 7);
 	TEST_CHECK(w.r.room_count == 1);
@@ -110,6 +116,8 @@ TEST_CASE(one_open_room_no_door)
 
 TEST_CASE(three_rooms_in_a_row)
 {
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "#########################",
 	    "#.......#.......#.......#",
@@ -122,6 +130,7 @@ TEST_CASE(three_rooms_in_a_row)
 	    "#.......#.......#.......#",
 	    "#########################",
 	};
+	/* clang-format on */
 	World w;
 	world_make(&w, rows, 10);
 	if (w.r.room_count != 3 || w.r.door_count != 2)
@@ -142,7 +151,7 @@ TEST_CASE(rooms_consistent_on_random_grids)
 	for (int trial = 0; trial < 100; trial++) {
 		World w;
 		oracle_random_grid(&w.g, 4 + oracle_rand_below(40), 4 + oracle_rand_below(40),
-				   oracle_rand_below(30), oracle_rand_below(8));
+		                   oracle_rand_below(30), oracle_rand_below(8));
 		skeleton_init(&w.s);
 		pathgraph_init(&w.pg);
 		rooms_init(&w.r);
@@ -159,6 +168,8 @@ TEST_CASE(rooms_consistent_on_random_grids)
 
 TEST_CASE(rooms_dump_by_hand)
 {
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
 	static const char *const rows[] = {
 	    "#######",
 	    "#..#..#",
@@ -166,6 +177,7 @@ TEST_CASE(rooms_dump_by_hand)
 	    "#..#..#",
 	    "#######",
 	};
+	/* clang-format on */
 	World w;
 	world_make(&w, rows, 5);
 	char *text = NULL;
@@ -176,12 +188,12 @@ TEST_CASE(rooms_dump_by_hand)
 	/* the gap at (3, 2) is narrower (clearance 1) than the rooms either side, but
 	 * they are hardly wider (clearance sqrt 2 < 1.5): no door, one room */
 	const char *want = "#######\n"
-			   "#AA#AA#\n"
-			   "#AAAAA#\n"
-			   "#AA#AA#\n"
-			   "#######\n"
-			   "rooms: 1 rooms, 0 doors\n"
-			   "room 0 2 2 13 1.414\n";
+	                   "#AA#AA#\n"
+	                   "#AAAAA#\n"
+	                   "#AA#AA#\n"
+	                   "#######\n"
+	                   "rooms: 1 rooms, 0 doors\n"
+	                   "room 0 2 2 13 1.414\n";
 	if (strcmp(text, want) != 0)
 		fprintf(stderr, "%s", text);
 	TEST_CHECK(strcmp(text, want) == 0);
