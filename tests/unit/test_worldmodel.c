@@ -373,8 +373,12 @@ TEST_CASE(worldmodel_held_object_follows)
 	sim_free(&s);
 }
 
-/* A long move that halts against a wall seen only in the periphery: the belief
- * ends within one square. */
+/* A long move that halts against a wall seen only in the periphery. The only
+ * evidence of the wall is one 4 x 4 cell of the first impression at level 4: two
+ * of its four rows occupied, which two it cannot say. Halting one square before
+ * the wall at any of three places fits that evidence equally, so the belief can
+ * be two squares out; within that it must be. (Where the fovea or intermediate
+ * zone has seen the wall, worldmodel_halted_move_found asks for the square.) */
 TEST_CASE(worldmodel_halted_at_coarse_wall)
 {
 	Sim s;
@@ -391,7 +395,7 @@ TEST_CASE(worldmodel_halted_at_coarse_wall)
 	worldmodel_utak_square(&m, &bx, &by);
 	table_square_of(s.w.utak, &tx, &ty);
 	Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
-	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 1 && fabs(b.y - (ty + 0.5)) <= 1);
+	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 2 && fabs(b.y - (ty + 0.5)) <= 2);
 	worldmodel_free(&m);
 	sim_free(&s);
 }
