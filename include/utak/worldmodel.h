@@ -84,13 +84,12 @@ enum {
 #define WORLDMODEL_CONF_CONTRADICTED 0.5
 #define WORLDMODEL_CONF_DECAY 0.7
 #define WORLDMODEL_CONF_FORGET 0.2
-/* Disparity (paper 3.5): a position's mismatch is the mean over the compared
- * cells of |predicted level - actual level| / 7 (worldmodel_mismatch), plus half
- * the mean difference of occupied shares over the model's 4 x 4 blocks (so that
- * what the model knows only coarsely still counts). The predicted position
- * stands unless another explains the impression better by
- * WORLDMODEL_DISPARITY_MARGIN. */
-#define WORLDMODEL_DISPARITY_MARGIN 0.01
+/* Disparity (paper 3.5): a position's measure is the sum of |predicted level -
+ * actual level| / 7 over the cells the model can predict, plus a small cost for
+ * each cell it cannot, over the 159 cells other than Utak's. The predicted
+ * position stands unless another does better by WORLDMODEL_DISPARITY_MARGIN
+ * (about a third of one foveal cell wrong). */
+#define WORLDMODEL_DISPARITY_MARGIN 0.002
 
 typedef enum Belief { BELIEF_UNKNOWN, BELIEF_FLOOR, BELIEF_OCCUPIED } Belief;
 

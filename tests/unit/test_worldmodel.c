@@ -373,8 +373,12 @@ TEST_CASE(worldmodel_held_object_follows)
 	sim_free(&s);
 }
 
-/* A long move that halts against a wall seen only in the periphery: the belief
- * ends within one square. */
+/* A long move that halts against a wall seen only in the periphery. The only
+ * evidence of the wall is one 4 x 4 cell of the first impression at level 4: two
+ * of its four rows occupied, which two it cannot say. Halting one square before
+ * the wall at any of three places fits that evidence equally, so the belief can
+ * be two squares out; within that it must be. (Where the fovea or intermediate
+ * zone has seen the wall, worldmodel_halted_move_found asks for the square.) */
 TEST_CASE(worldmodel_halted_at_coarse_wall)
 {
 	Sim s;
@@ -391,9 +395,60 @@ TEST_CASE(worldmodel_halted_at_coarse_wall)
 	worldmodel_utak_square(&m, &bx, &by);
 	table_square_of(s.w.utak, &tx, &ty);
 	Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
-	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 1 && fabs(b.y - (ty + 0.5)) <= 1);
+	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 2 && fabs(b.y - (ty + 0.5)) <= 2);
 	worldmodel_free(&m);
 	sim_free(&s);
+}
+
+/* A property over random walks (a fixed little generator, so the same walks on
+ * every machine): moves of up to 8 squares each way, many of them halting against
+ * objects and walls, in every world of this test. After every move the believed
+ * square is never more than one square from the true one, and exactly right most
+ * of the time (along a straight wall the eye cannot tell where it is). */
+TEST_CASE(worldmodel_random_walks_stay_close)
+{
+	static const char *const worlds[] = {"worlds/room.w", "worlds/tworooms.w",
+	                                     "worlds/nearcorner.w"};
+	int steps = 0, exact = 0;
+	for (int wi = 0; wi < 3; wi++)
+		for (uint32_t seed = 1; seed <= 8; seed++) {
+			Sim s;
+			const char *text = read_file(worlds[wi]);
+			TEST_CHECK(text != NULL);
+			sim_load(&s, text);
+			WorldModel m;
+			worldmodel_init(&m);
+			Impression imp;
+			retina_sense(&s.w, &s.t, &imp);
+			worldmodel_accommodate_first(&m, &imp);
+			uint32_t state = seed * 2654435761u;
+			for (int i = 0; i < 20; i++) {
+				char cmd[64];
+				state = state * 1664525u + 1013904223u;
+				int dx = (int)((state >> 16) % 17) - 8;
+				state = state * 1664525u + 1013904223u;
+				int dy = (int)((state >> 16) % 17) - 8;
+				snprintf(cmd, sizeof cmd, "move %d %d", dx, dy);
+				sim_step(&s, &m, cmd);
+				int32_t bx, by, tx, ty;
+				worldmodel_utak_square(&m, &bx, &by);
+				table_square_of(s.w.utak, &tx, &ty);
+				Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
+				double ex = fabs(b.x - (tx + 0.5)), ey = fabs(b.y - (ty + 0.5));
+				if (ex > 1 || ey > 1)
+					fprintf(stderr,
+					        "  %s seed %u move %d: off by (%.0f, %.0f)\n",
+					        worlds[wi], (unsigned)seed, i, ex, ey);
+				TEST_CHECK(ex <= 1 && ey <= 1);
+				exact += ex == 0 && ey == 0;
+				steps++;
+			}
+			worldmodel_free(&m);
+			sim_free(&s);
+		}
+	printf("  random walks: %d of %d moves end with the belief on the true square\n", exact,
+	       steps);
+	TEST_CHECK(exact * 10 >= steps * 8);
 }
 
 int main(void)
@@ -405,5 +460,6 @@ int main(void)
 	TEST_RUN(worldmodel_halted_move_found);
 	TEST_RUN(worldmodel_held_object_follows);
 	TEST_RUN(worldmodel_halted_at_coarse_wall);
+	TEST_RUN(worldmodel_random_walks_stay_close);
 	return TEST_EXIT();
 }
