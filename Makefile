@@ -124,12 +124,36 @@ build/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h tests/fuzz/invariants.h
 build/fuzz/lib:
 	mkdir -p $@
 
+# Order-only: the check runs on every `make fuzz` but never forces a rebuild.
+$(FUZZOBJ) $(FUZZBIN): | fuzz-deps
+
+fuzz-deps:
+	@sh tests/fuzz/need.sh clang libclang-rt-14-dev
+
 fuzz: $(FUZZBIN)
 
 fuzz-run: fuzz
 	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tests/fuzz/run.sh $(FUZZBIN)
 
-.PHONY: fuzz fuzz-run
+# The cross-check is C++ (Box2D's API is); -pedantic is left out because geom.h's
+# one-line inline helpers use C99 compound literals, which g++ accepts as an
+# extension and -pedantic would report.
+CXX     ?= g++
+XCHECKFLAGS = -std=c++17 -O2 -g -Wall -Wextra -Wshadow -ffp-contract=off -Iinclude
+
+build/xcheck/xcheck: tests/xcheck/xcheck.cpp build/rel/libutak.a $(wildcard include/utak/*.h) | xcheck-deps build/xcheck
+	$(CXX) $(XCHECKFLAGS) -o $@ tests/xcheck/xcheck.cpp build/rel/libutak.a -lbox2d -lm
+
+build/xcheck:
+	mkdir -p $@
+
+xcheck-deps:
+	@sh tests/fuzz/need.sh g++ libbox2d-dev
+
+xcheck: build/xcheck/xcheck
+	build/xcheck/xcheck
+
+.PHONY: fuzz fuzz-run fuzz-deps xcheck xcheck-deps
 
 # Every harness is also built without libFuzzer, by $(CC) under ASan + UBSan, and
 # `make check` replays its seeds and every input that ever crashed it
