@@ -344,6 +344,37 @@ static bool goal_next_room(const Controller *c, const Grid *g, const int32_t *di
 
 /* ---- the plan -------------------------------------------------------------------- */
 
+/* mark_bumped(c, g): the squares bumped into are blocked on g (screen cells). */
+static void mark_bumped(const Controller *c, Grid *g)
+{
+	for (int b = 0; b < c->bumped_count; b++) {
+		int32_t i = c->bumped_x[b] - c->screen.x0, j = c->bumped_y[b] - c->screen.y0;
+		if (i >= 0 && j >= 0 && i < g->w && j < g->h)
+			g->cells[j * g->w + i] = GRID_BLOCKED;
+	}
+}
+
+/* bump(c, cmd): a move or push made no headway: remember the squares its shapes
+ * would have entered, one square on in the commanded direction. */
+static void bump(Controller *c, const MotorCommand *cmd)
+{
+	double len = hypot(cmd->dx, cmd->dy);
+	int32_t ux, uy, sx = (int32_t)lround(cmd->dx / len), sy = (int32_t)lround(cmd->dy / len);
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	int32_t n = cmd->kind == MOTOR_PUSH && c->model.holding ? c->model.held_count : 0;
+	for (int32_t k = -1; k < n; k++) {
+		int32_t dx = k < 0 ? 0 : c->model.held_dx[k], dy = k < 0 ? 0 : c->model.held_dy[k];
+		int32_t tx = dx + sx, ty = dy + sy;
+		bool inside = tx == 0 && ty == 0;
+		for (int32_t j = 0; j < n && !inside; j++)
+			inside = c->model.held_dx[j] == tx && c->model.held_dy[j] == ty;
+		if (!inside && c->bumped_count < CONTROLLER_MAX_BUMPED) {
+			c->bumped_x[c->bumped_count] = ux + tx;
+			c->bumped_y[c->bumped_count++] = uy + ty;
+		}
+	}
+}
+
 /* space_for_push(c, g): the configuration space of Utak and the object he holds:
  * the screen with the held squares freed, eroded by the held squares and his own. */
 static void space_for_push(Controller *c, Grid *out)
@@ -366,6 +397,7 @@ static void space_for_push(Controller *c, Grid *out)
 		if (i2 >= 0 && j2 >= 0 && i2 < s->w && j2 < s->h)
 			base.cells[j2 * s->w + i2] = GRID_FREE;
 	}
+	mark_bumped(c, &base);
 	/* Sort by (dy, dx): insertion sort, n is a few dozen. */
 	for (int32_t a = 1; a <= n; a++)
 		for (int32_t b = a; b > 0 && (dy[b] < dy[b - 1] || (dy[b] == dy[b - 1] && dx[b] < dx[b - 1])); b--) {
@@ -407,6 +439,7 @@ static void build_space(Controller *c)
 		grid_free(&c->space);
 		grid_init(&c->space, c->screen.w, c->screen.h, GRID_BLOCKED);
 		memcpy(c->space.cells, c->screen.free.cells, (size_t)c->screen.w * (size_t)c->screen.h);
+		mark_bumped(c, &c->space);
 	}
 	int32_t i, j;
 	if (cell_of(&c->screen, c->model.utak, &i, &j))
@@ -720,8 +753,17 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			c->next++;
 		Vec2 d = vec2_sub(c->route.pts[c->next], c->model.utak);
 		double len = hypot(d.x, d.y);
-		if (len > CONTROLLER_MAX_LEG)
-			d = vec2_scale(d, CONTROLLER_MAX_LEG / len);
+		if (len > CONTROLLER_MAX_LEG) {
+			/* A shorter leg ends on a square's centre, like every waypoint, so
+			 * that moves are whole squares: shapes then keep their digital form
+			 * as they move, and the eye's next impression is predictable. */
+			Vec2 to = vec2_add(c->model.utak, vec2_scale(d, CONTROLLER_MAX_LEG / len));
+			Vec2 snapped = centre_of((int32_t)floor(to.x), (int32_t)floor(to.y));
+			if (distance(snapped, c->model.utak) > CONTROLLER_ARRIVED)
+				d = vec2_sub(snapped, c->model.utak);
+			else
+				d = vec2_scale(d, CONTROLLER_MAX_LEG / len);
+		}
 		cmd->kind = c->phase == PHASE_PUSH ? MOTOR_PUSH : MOTOR_MOVE;
 		cmd->dx = d.x;
 		cmd->dy = d.y;
@@ -748,6 +790,9 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
 	/* No progress: the same believed point after a move or push, cycle after cycle. */
+	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && hypot(cmd->dx, cmd->dy) > 0 &&
+	    distance(c->model.utak, c->last_position) < 0.5 * hypot(cmd->dx, cmd->dy))
+		bump(c, cmd);
 	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && distance(c->model.utak, c->last_position) < 0.05) {
 		if (++c->stuck >= CONTROLLER_STUCK_CYCLES) {
 			c->phase = PHASE_FAILED;

@@ -34,6 +34,8 @@
 #define CONTROLLER_ROUND_MARGIN 1.5
 /* Frontier goals remembered as reached (older ones are forgotten first). */
 #define CONTROLLER_MAX_VISITED 256
+/* Squares remembered as bumped into (later ones are dropped). */
+#define CONTROLLER_MAX_BUMPED 1024
 /* Cycles without progress (the believed position unchanged) before giving up. */
 #define CONTROLLER_STUCK_CYCLES 4
 
@@ -70,6 +72,11 @@ typedef struct Controller {
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];
 	int visited_count;
+	/* Squares found blocked by bumping into them: where a move or push halted,
+	 * the squares its shapes would have entered next. Touch of a kind: the eye
+	 * may have read them as floor (a verge glimpsed coarsely). */
+	int32_t bumped_x[CONTROLLER_MAX_BUMPED], bumped_y[CONTROLLER_MAX_BUMPED];
+	int bumped_count;
 	/* Going round: the points still to visit. */
 	Vec2 round[6];
 	int round_count, round_next;
