@@ -466,28 +466,33 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	b.toward = util_alloc(n, 1);
 
 	/* (1) vertices, in row-major order of their first cell. Most cells are off the
-	 * skeleton: the scan skips eight at a time where they are all zero. */
+	 * skeleton: the scan skips eight at a time where they are all zero; and most
+	 * skeleton cells are chain cells, told by their degree from the rows around. */
 	for (int32_t y = 0; y < pg->h; y++) {
 		const uint8_t *on = s->on + (size_t)y * pg->w;
+		const uint8_t *below = y > 0 ? on - pg->w : NULL;
+		const uint8_t *above = y + 1 < pg->h ? on + pg->w : NULL;
 		for (int32_t x = 0; x < pg->w;) {
 			uint64_t eight;
 			if (x + 8 <= pg->w && (memcpy(&eight, on + x, 8), eight == 0)) {
 				x += 8;
 				continue;
 			}
+			if (!on[x]) {
+				x++;
+				continue;
+			}
+			int d = (x > 0 && on[x - 1]) + (x + 1 < pg->w && on[x + 1]) +
+			        (below && below[x]) + (above && above[x]);
 			int32_t i = y * pg->w + x;
-			if (on[x] && pg->cell_ref[i] == PATHGRAPH_REF_NONE) {
-				int d = builder_degree(&b, i, x);
-				if (d != 2) {
-					intlist_push(&b.vstart, b.vcells.count);
-					if (d >= 3) {
-						builder_junction_set(&b, i);
-					} else {
-						builder_add_vertex(&b, i,
-						                   d == 1 ? PATHGRAPH_END
-						                          : PATHGRAPH_POINT);
-						intlist_push(&b.vcells, i);
-					}
+			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE) {
+				intlist_push(&b.vstart, b.vcells.count);
+				if (d >= 3) {
+					builder_junction_set(&b, i);
+				} else {
+					builder_add_vertex(
+					    &b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+					intlist_push(&b.vcells, i);
 				}
 			}
 			x++;
