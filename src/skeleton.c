@@ -46,7 +46,7 @@
  * MEMORY  dist2 and on (5 bytes a cell), and the working space, kept in the Skeleton
  *    for the next grid of the same size: a padded state byte per cell, the visiting
  *    order and a stack (4 bytes a cell each), and the counting-sort histogram (4 bytes
- *    per possible dist2 value, at most about (side / 2)^2).
+ *    per possible dist2 value: about (shorter side / 2)^2, a quarter of the cells).
  *
  * COMPLEXITY  O(w h): the transform is two passes per axis; the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
@@ -68,7 +68,10 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
-int32_t skeleton_edt(const Grid *g, int32_t *dist2)
+/* skeleton_edt_count(g, dist2, count): skeleton_edt, also counting the free cells of
+ * each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
+ * histogram, gathered while the values are made rather than in a pass of its own). */
+static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 {
 	const int32_t w = g->w, h = g->h;
 	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
@@ -129,6 +132,8 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 				/* one or two free cells: each touches a blocked end, at 1 */
 				row[x0] = row[x1] = 1;
 				largest = largest > 1 ? largest : 1;
+				if (count)
+					count[2] += x1 - x0 + 1;
 				x0 = x1 + 1;
 				continue;
 			}
@@ -161,6 +166,8 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
 				if (row[x] > largest)
 					largest = row[x];
+				if (count)
+					count[row[x] + 1]++;
 			}
 			x0 = x1 + 1;
 		}
@@ -168,6 +175,17 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 	free(F);
 	free(v);
 	return largest;
+}
+
+int32_t skeleton_edt(const Grid *g, int32_t *dist2) { return skeleton_edt_count(g, dist2, NULL); }
+
+/* skeleton_dist2_bound(w, h): no free cell is farther than this (squared) from the
+ * nearest blocked cell, as the ring outside the grid is blocked: in the shorter axis
+ * some border is at most (side + 1) / 2 away. */
+static size_t skeleton_dist2_bound(int32_t w, int32_t h)
+{
+	size_t half = (size_t)((w < h ? w : h) + 2) / 2;
+	return half * half;
 }
 
 /* ---------------------------------------------------------------- simple points */
@@ -493,7 +511,14 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	if (n == 0)
 		return;
 	struct SkeletonWork *wk = s->work;
-	const int32_t maxd = skeleton_edt(g, s->dist2);
+	/* the histogram is all zero between calls: set up zeroed, cleared after use */
+	if (!wk->start) {
+		wk->start_cap = skeleton_dist2_bound(w, h) + 2;
+		wk->start = util_alloc(wk->start_cap, sizeof *wk->start);
+	}
+	int32_t *start = wk->start, *order = wk->order;
+	const int32_t maxd = skeleton_edt_count(g, s->dist2, start);
+	assert((size_t)maxd + 2 <= wk->start_cap);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
 	t.state = wk->state;
@@ -503,22 +528,11 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
 	skeleton_build_simple_table(t.simple);
 
-	/* counting sort of the free cells by dist2, ties by index */
-	if (wk->start_cap < (size_t)maxd + 2) {
-		free(wk->start);
-		wk->start_cap = (size_t)maxd + 2;
-		wk->start = util_alloc(wk->start_cap, sizeof *wk->start);
-	}
-	int32_t *start = wk->start, *order = wk->order;
-	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
-	int32_t nfree = 0;
-	for (size_t i = 0; i < n; i++)
-		if (g->cells[i] == GRID_FREE) {
-			start[s->dist2[i] + 1]++;
-			nfree++;
-		}
+	/* counting sort of the free cells by dist2, ties by index (the histogram came
+	 * with the distance transform) */
 	for (int32_t d = 0; d <= maxd; d++)
 		start[d + 1] += start[d];
+	const int32_t nfree = start[maxd + 1];
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *c = g->cells + (size_t)y * w;
 		const int32_t *d2 = s->dist2 + (size_t)y * w;
@@ -530,6 +544,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			order[start[d2[x]]++] = (y + 1) * t.pw + x + 1;
 		}
 	}
+	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 
 	for (int32_t k = 0; k < nfree; k++)
 		thinner_visit(&t, order[k]);
