@@ -32,9 +32,9 @@
  *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
  *    path); k paths O(k L) such searches for routes of L arcs.
  *
- * MEASURED  by bench/skelbench.c on 1024 x 1024 (CPU time, best of 3): build 3.5-4 ms
- *    (rooms, random rectangles), 10-12 ms (maze: 250 000 skeleton cells); a corner to
- *    corner query 0.2 ms, 1.3-1.4 ms in the maze, whose path has 60 000 cells to
+ * MEASURED  by bench/skelbench.c on 1024 x 1024 (CPU time, best of 3): build 2.8-3.8
+ *    ms (rooms, random rectangles), 10.6 ms (maze: 250 000 skeleton cells); a corner
+ *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
  *    A* expands cells on the same query. */
 #include "utak/pathgraph.h"

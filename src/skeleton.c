@@ -54,8 +54,8 @@
  *
  * MEASURED  by bench/skelbench.c (CPU time, best of 3, on a 2-core Xeon shared with
  *    other jobs): on 1024 x 1024 rooms, random rectangles and a maze, the transform
- *    9-11 ms and the skeleton with it 31-34 ms; 30-36 ns a cell from 1024 to 4096 a
- *    side (52 on the rectangles at 4096, where the visits' jumps miss the cache). The
+ *    9-10 ms and the skeleton with it 28-29 ms; 27-31 ns a cell from 1024 to 4096 a
+ *    side (39 on the rectangles at 4096, where the visits' jumps miss the cache). The
  *    thinning is bound by those jumps: a bit-set state and early loads did not help. */
 #include "utak/skeleton.h"
 
