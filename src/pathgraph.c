@@ -11,7 +11,8 @@
  *    joined by an edge without chain cells. (3) Chain cells still unvisited lie on loops
  *    without a junction: the first of each in row-major order becomes a loop vertex
  *    and the loop an edge from it to itself. Vertices are numbered by their first cell
- *    in row-major order, edges as found: the result does not depend on anything else.
+ *    in row-major order (loop vertices after the others), edges as found: the result
+ *    depends on nothing else.
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
