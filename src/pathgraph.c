@@ -11,7 +11,8 @@
  *    joined by an edge without chain cells. (3) Chain cells still unvisited lie on loops
  *    without a junction: the first of each in row-major order becomes a loop vertex
  *    and the loop an edge from it to itself. Vertices are numbered by their first cell
- *    in row-major order, edges as found: the result does not depend on anything else.
+ *    in row-major order (loop vertices after the others), edges as found: the result
+ *    depends on nothing else.
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
@@ -32,9 +33,9 @@
  *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
  *    path); k paths O(k L) such searches for routes of L arcs.
  *
- * MEASURED  by bench/skelbench.c on 1024 x 1024 (CPU time, best of 3): build 3.5-4 ms
- *    (rooms, random rectangles), 10-12 ms (maze: 250 000 skeleton cells); a corner to
- *    corner query 0.2 ms, 1.3-1.4 ms in the maze, whose path has 60 000 cells to
+ * MEASURED  by bench/skelbench.c on 1024 x 1024 (CPU time, best of 3): build 2.8-3.8
+ *    ms (rooms, random rectangles), 10.6 ms (maze: 250 000 skeleton cells); a corner
+ *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
  *    A* expands cells on the same query. */
 #include "utak/pathgraph.h"
@@ -466,28 +467,33 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	b.toward = util_alloc(n, 1);
 
 	/* (1) vertices, in row-major order of their first cell. Most cells are off the
-	 * skeleton: the scan skips eight at a time where they are all zero. */
+	 * skeleton: the scan skips eight at a time where they are all zero; and most
+	 * skeleton cells are chain cells, told by their degree from the rows around. */
 	for (int32_t y = 0; y < pg->h; y++) {
 		const uint8_t *on = s->on + (size_t)y * pg->w;
+		const uint8_t *below = y > 0 ? on - pg->w : NULL;
+		const uint8_t *above = y + 1 < pg->h ? on + pg->w : NULL;
 		for (int32_t x = 0; x < pg->w;) {
 			uint64_t eight;
 			if (x + 8 <= pg->w && (memcpy(&eight, on + x, 8), eight == 0)) {
 				x += 8;
 				continue;
 			}
+			if (!on[x]) {
+				x++;
+				continue;
+			}
+			int d = (x > 0 && on[x - 1]) + (x + 1 < pg->w && on[x + 1]) +
+			        (below && below[x]) + (above && above[x]);
 			int32_t i = y * pg->w + x;
-			if (on[x] && pg->cell_ref[i] == PATHGRAPH_REF_NONE) {
-				int d = builder_degree(&b, i, x);
-				if (d != 2) {
-					intlist_push(&b.vstart, b.vcells.count);
-					if (d >= 3) {
-						builder_junction_set(&b, i);
-					} else {
-						builder_add_vertex(&b, i,
-						                   d == 1 ? PATHGRAPH_END
-						                          : PATHGRAPH_POINT);
-						intlist_push(&b.vcells, i);
-					}
+			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE) {
+				intlist_push(&b.vstart, b.vcells.count);
+				if (d >= 3) {
+					builder_junction_set(&b, i);
+				} else {
+					builder_add_vertex(
+					    &b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+					intlist_push(&b.vcells, i);
 				}
 			}
 			x++;

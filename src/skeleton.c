@@ -46,7 +46,7 @@
  * MEMORY  dist2 and on (5 bytes a cell), and the working space, kept in the Skeleton
  *    for the next grid of the same size: a padded state byte per cell, the visiting
  *    order and a stack (4 bytes a cell each), and the counting-sort histogram (4 bytes
- *    per possible dist2 value, at most about (side / 2)^2).
+ *    per possible dist2 value: about (shorter side / 2)^2, a quarter of the cells).
  *
  * COMPLEXITY  O(w h): the transform is two passes per axis; the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
@@ -54,8 +54,8 @@
  *
  * MEASURED  by bench/skelbench.c (CPU time, best of 3, on a 2-core Xeon shared with
  *    other jobs): on 1024 x 1024 rooms, random rectangles and a maze, the transform
- *    9-11 ms and the skeleton with it 31-34 ms; 30-36 ns a cell from 1024 to 4096 a
- *    side (52 on the rectangles at 4096, where the visits' jumps miss the cache). The
+ *    9-10 ms and the skeleton with it 28-29 ms; 27-31 ns a cell from 1024 to 4096 a
+ *    side (39 on the rectangles at 4096, where the visits' jumps miss the cache). The
  *    thinning is bound by those jumps: a bit-set state and early loads did not help. */
 #include "utak/skeleton.h"
 
@@ -68,7 +68,10 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
-int32_t skeleton_edt(const Grid *g, int32_t *dist2)
+/* skeleton_edt_count(g, dist2, count): skeleton_edt, also counting the free cells of
+ * each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
+ * histogram, gathered while the values are made rather than in a pass of its own). */
+static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 {
 	const int32_t w = g->w, h = g->h;
 	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
@@ -129,6 +132,8 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 				/* one or two free cells: each touches a blocked end, at 1 */
 				row[x0] = row[x1] = 1;
 				largest = largest > 1 ? largest : 1;
+				if (count)
+					count[2] += x1 - x0 + 1;
 				x0 = x1 + 1;
 				continue;
 			}
@@ -161,6 +166,8 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
 				if (row[x] > largest)
 					largest = row[x];
+				if (count)
+					count[row[x] + 1]++;
 			}
 			x0 = x1 + 1;
 		}
@@ -168,6 +175,17 @@ int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 	free(F);
 	free(v);
 	return largest;
+}
+
+int32_t skeleton_edt(const Grid *g, int32_t *dist2) { return skeleton_edt_count(g, dist2, NULL); }
+
+/* skeleton_dist2_bound(w, h): no free cell is farther than this (squared) from the
+ * nearest blocked cell, as the ring outside the grid is blocked: in the shorter axis
+ * some border is at most (side + 1) / 2 away. */
+static size_t skeleton_dist2_bound(int32_t w, int32_t h)
+{
+	size_t half = (size_t)((w < h ? w : h) + 2) / 2;
+	return half * half;
 }
 
 /* ---------------------------------------------------------------- simple points */
@@ -288,12 +306,13 @@ static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 	return false;
 }
 
-/* thinner_delete_from(t, pi): deletes pi, then every visited cell that its deletion
- * (or a later one) makes deletable. */
-static void thinner_delete_from(Thinner *t, int32_t pi)
+/* thinner_delete_more(t, pi, top): deletes pi, then every visited cell that its
+ * deletion (or a later one) makes deletable, with the re-try stack holding top cells
+ * already. */
+static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 {
 	t->state[pi] &= (uint8_t)~SKELETON_IN;
-	t->top = 0;
+	t->top = top;
 	for (;;) {
 		for (int i = 0; i < 8; i++) {
 			int32_t qi = pi + t->off[i];
@@ -314,6 +333,50 @@ static void thinner_delete_from(Thinner *t, int32_t pi)
 				break;
 		}
 		t->state[pi] &= (uint8_t)~SKELETON_IN;
+	}
+}
+
+/* thinner_delete_from(t, pi): deletes pi and whatever that makes deletable. */
+static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t, pi, 0); }
+
+/* thinner_visit(t, pi): the visit of pi in the distance order: marks it visited and,
+ * when deletable, deletes it (thinner_delete_from). The same as those two calls, with
+ * the 8 neighbours loaded once for the deletion test and for the re-try stack: this
+ * runs for every free cell. */
+static void thinner_visit(Thinner *t, int32_t pi)
+{
+	uint8_t nb[8];
+	unsigned m = 0;
+	for (int i = 0; i < 8; i++) {
+		nb[i] = t->state[pi + t->off[i]];
+		m |= (unsigned)(nb[i] & SKELETON_IN) << i;
+	}
+	t->state[pi] = (uint8_t)(t->state[pi] | SKELETON_VISITED);
+	if (!t->simple[m])
+		return;
+	int edge = (int)((m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1));
+	if (edge == 1 && !thinner_deletable(t, pi))
+		return; /* a ridge end */
+	t->state[pi] &= (uint8_t)~SKELETON_IN;
+	t->top = 0;
+	for (int i = 0; i < 8; i++)
+		if ((nb[i] & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
+		    (SKELETON_IN | SKELETON_VISITED)) {
+			int32_t qi = pi + t->off[i];
+			t->state[qi] = (uint8_t)(nb[i] | SKELETON_STACKED);
+			t->stack[t->top++] = qi;
+		}
+	for (;;) {
+		if (t->top == 0)
+			return;
+		int32_t qi = t->stack[--t->top];
+		t->state[qi] &= (uint8_t)~SKELETON_STACKED;
+		if (thinner_deletable(t, qi)) {
+			/* rare: a cascade; the stack as it is now is taken over */
+			int32_t saved = t->top;
+			thinner_delete_more(t, qi, saved);
+			return;
+		}
 	}
 }
 
@@ -448,7 +511,14 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	if (n == 0)
 		return;
 	struct SkeletonWork *wk = s->work;
-	const int32_t maxd = skeleton_edt(g, s->dist2);
+	/* the histogram is all zero between calls: set up zeroed, cleared after use */
+	if (!wk->start) {
+		wk->start_cap = skeleton_dist2_bound(w, h) + 2;
+		wk->start = util_alloc(wk->start_cap, sizeof *wk->start);
+	}
+	int32_t *start = wk->start, *order = wk->order;
+	const int32_t maxd = skeleton_edt_count(g, s->dist2, start);
+	assert((size_t)maxd + 2 <= wk->start_cap);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
 	t.state = wk->state;
@@ -458,22 +528,11 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
 	skeleton_build_simple_table(t.simple);
 
-	/* counting sort of the free cells by dist2, ties by index */
-	if (wk->start_cap < (size_t)maxd + 2) {
-		free(wk->start);
-		wk->start_cap = (size_t)maxd + 2;
-		wk->start = util_alloc(wk->start_cap, sizeof *wk->start);
-	}
-	int32_t *start = wk->start, *order = wk->order;
-	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
-	int32_t nfree = 0;
-	for (size_t i = 0; i < n; i++)
-		if (g->cells[i] == GRID_FREE) {
-			start[s->dist2[i] + 1]++;
-			nfree++;
-		}
+	/* counting sort of the free cells by dist2, ties by index (the histogram came
+	 * with the distance transform) */
 	for (int32_t d = 0; d <= maxd; d++)
 		start[d + 1] += start[d];
+	const int32_t nfree = start[maxd + 1];
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *c = g->cells + (size_t)y * w;
 		const int32_t *d2 = s->dist2 + (size_t)y * w;
@@ -485,13 +544,10 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			order[start[d2[x]]++] = (y + 1) * t.pw + x + 1;
 		}
 	}
+	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 
-	for (int32_t k = 0; k < nfree; k++) {
-		int32_t pi = order[k];
-		t.state[pi] |= SKELETON_VISITED;
-		if (thinner_deletable(&t, pi))
-			thinner_delete_from(&t, pi);
-	}
+	for (int32_t k = 0; k < nfree; k++)
+		thinner_visit(&t, order[k]);
 
 	/* the cells left, for pruning, in row-major order (a scan along memory) */
 	int32_t nset = 0;

@@ -104,7 +104,8 @@ void pathgraph_free(Pathgraph *pg);
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g);
 
 /* pathgraph_find_path(pg, from, to, q, out): the shortest path from S = from to D = to
- * (points in grid units) along the pathgraph, into out (cleared first). Returns false,
+ * (points in grid units) along the pathgraph, into out (cleared first); q NULL means
+ * pathgraph_query_default(). Returns false,
  * with out empty, when S or D is not in a free cell of the grid, or no path exists
  * (different free components, or no edges with enough clearance). */
 bool pathgraph_find_path(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery *q, Path *out);
@@ -141,7 +142,8 @@ bool pathgraph_validate(const Pathgraph *pg);
  *   vertex ID X Y KIND SETSIZE CLEARANCE      (KIND junction|end|loop|point)
  *   edge ID V0 V1 LENGTH MINCLEARANCE CELLS
  * lengths and clearances in cells with 3 decimals, ids in order of construction
- * (vertices by their first cell in row-major order). */
+ * (junction, end and point vertices by their first cell in row-major order, then the
+ * loop vertices likewise; edges as the build walks them). */
 void pathgraph_dump(const Pathgraph *pg, FILE *out);
 
 #endif

@@ -25,8 +25,9 @@
  * Distances are between cell centres, in cells: dist2 of a free cell is the squared
  * Euclidean distance from its centre to the centre of the nearest blocked cell, where
  * the cells just outside the grid count as blocked; dist2 of a blocked cell is 0. The
- * clearance of a cell is sqrt(dist2): a disc of radius clearance - sqrt(2)/2 about the
- * cell centre touches no blocked square, and one of radius clearance - 1/2 does. */
+ * clearance of a cell is sqrt(dist2): the open disc of radius clearance - sqrt(2)/2
+ * about the cell centre meets no blocked square, and the closed disc of radius
+ * clearance - 1/2 meets one. */
 #ifndef UTAK_SKELETON_H
 #define UTAK_SKELETON_H
 
@@ -44,7 +45,7 @@
  * a digitisation spur, and removed, when it has at most
  * SKELETON_SPUR_FACTOR * clearance(junction) + SKELETON_SPUR_SLACK cells. A real
  * branch (a dead-end corridor, a niche) reaches beyond the junction's clearance disc;
- * a spur made by a one-cell notch in a wall does not. */
+ * a spur into a small bay of a wall does not. */
 #define SKELETON_SPUR_FACTOR 1.5
 #define SKELETON_SPUR_SLACK 2.0
 

@@ -287,6 +287,67 @@ TEST_CASE(two_distinct_paths_round_a_ring)
 	grid_free(&g);
 }
 
+TEST_CASE(four_distinct_paths_round_two_obstacles)
+{
+	/* above or below each of two obstacles: 2 x 2 loopless ways, and no more */
+	/* the rows are a picture of the grid, north on top */
+	/* clang-format off */
+	static const char *const rows[] = {
+	    "..............................",
+	    "..............................",
+	    "..............................",
+	    "..............................",
+	    "........###........###........",
+	    "........###........###........",
+	    "........###........###........",
+	    "..............................",
+	    "..............................",
+	    "..............................",
+	    "..............................",
+	};
+	/* clang-format on */
+	Grid g;
+	oracle_grid_from(&g, rows, 11);
+	Skeleton s;
+	Pathgraph pg;
+	skeleton_init(&s);
+	pathgraph_init(&pg);
+	skeleton_compute(&s, &g);
+	pathgraph_build(&pg, &s, &g);
+	Path p[6];
+	for (int i = 0; i < 6; i++)
+		path_init(&p[i]);
+	int n = pathgraph_find_paths(&pg, vec2(1.5, 5.5), vec2(28.5, 5.5), NULL, 6, p);
+	TEST_CHECK(n == 4);
+	/* each passes each obstacle on one side: which side, sampled at its middle */
+	int seen = 0;
+	for (int k = 0; k < n; k++) {
+		TEST_CHECK(path_in_free_space(&g, &p[k]));
+		int code = 0;
+		for (int i = 1; i < p[k].count; i++)
+			for (int j = 0; j <= 100; j++) {
+				Vec2 a = p[k].pts[i - 1], b = p[k].pts[i];
+				double x = a.x + (b.x - a.x) * j / 100,
+				       y = a.y + (b.y - a.y) * j / 100;
+				if (x > 9 && x < 10)
+					code |= y > 7 ? 1 : 2;
+				if (x > 20 && x < 21)
+					code |= y > 7 ? 4 : 8;
+			}
+		/* one side per obstacle: 1 or 2, and 4 or 8 */
+		TEST_CHECK((code & 3) == 1 || (code & 3) == 2);
+		TEST_CHECK((code & 12) == 4 || (code & 12) == 8);
+		seen |= 1 << code;
+	}
+	/* all four combinations */
+	TEST_CHECK(seen == ((1 << 5) | (1 << 6) | (1 << 9) | (1 << 10)));
+	for (int i = 0; i < 6; i++)
+		path_free(&p[i]);
+	pathgraph_free(&pg);
+	skeleton_free(&s);
+	grid_free(&g);
+}
+
 TEST_CASE(minimum_clearance_avoids_the_narrow_way)
 {
 	/* a wide way over the top and a gap one cell wide through the middle wall */
@@ -476,6 +537,7 @@ int main(void)
 	TEST_RUN(pathgraph_edges_on_random_grids);
 	TEST_RUN(paths_exist_iff_connected_and_lie_in_free_space);
 	TEST_RUN(two_distinct_paths_round_a_ring);
+	TEST_RUN(four_distinct_paths_round_two_obstacles);
 	TEST_RUN(minimum_clearance_avoids_the_narrow_way);
 	TEST_RUN(entry_is_in_sight_in_a_room);
 	TEST_RUN(entry_is_the_nearest_skeleton_cell_in_sight);
