@@ -23,11 +23,12 @@
  * so every step of a grid A* path (gridpath.h) is free by this test. A segment of
  * zero length is free when one of the cells whose closed square holds the point is
  * free. The end points must be where the caller wants them; the test does not look
- * at them otherwise. A POLYLINE is free when every segment is free and no interior
- * vertex is a pinch point (bending there could squeeze through it). Coordinates are grid units
- * (cell (x, y) is [x, x+1) x [y, y+1)). The test is exact for coordinates that are multiples of 1/2
- * (cell centres and lattice points, all utak uses) up to 2^20; for other values it follows the
- * double arithmetic.
+ * at them otherwise. A POLYLINE is free when every segment is free and no
+ * interior vertex is a pinch point (bending there could squeeze through it).
+ * Coordinates are grid units (cell (x, y) is [x, x+1) x [y, y+1)). The test is
+ * exact for coordinates that are multiples of 1/2 (cell centres and lattice
+ * points, all utak uses) up to 2^20; for other values it follows the double
+ * arithmetic.
  *
  * FEASIBILITY: the graph is built in full by a sweep from each corner over the
  * area it sees (visibility.c), so the build costs about the total area the corners
