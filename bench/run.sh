@@ -4,13 +4,14 @@
 #
 # Prints three tables: (1) per scenario file, grid A* against the published optima
 # (a check: any miss makes this script fail), the visibility-graph any-angle optimum
-# (on the maps with at most VISIBILITY_MAX_VERTICES corners; the build is quadratic)
+# (on every map with at most VISIBILITY_MAX_VERTICES corners: all of them here)
 # and the rope-tightened A* path, with times and expansions; (2) grid A* corner to
 # corner on the 1024 x 1024 maps (Boston, and the three 512 x 512 maps enlarged
 # twice), the figure the issue compares with libtcod; (3) configuration-space
 # erosion times. PATHBENCH_SAMPLE scenarios of each file, evenly spaced, are run,
-# so the whole takes about two minutes of CPU (most of it building the visibility
-# graphs of Boston and 8room_000).
+# so the whole takes about a minute of CPU, two of wall time on the shared 2-core
+# machine (most of it building the visibility graphs of Boston_0_1024 and
+# random512-10-0).
 set -u
 data=${MOVINGAI:-../shared/data/movingai}
 bin=${PATHBENCH:-build/rel/bench/pathbench}

@@ -12,7 +12,7 @@
  * path from S to D: that may go round an obstacle on the other side
  * (visibility_find gives that one).
  *
- * METHOD (rope.c): the free space is cut into ROWS RUNS, maximal horizontal runs of
+ * METHOD (rope.c): the free space is cut into ROW RUNS, maximal horizontal runs of
  * free cells, joined by PORTALS, the stretches of grid line two runs in adjacent rows
  * share; every portal ends on an obstacle, so it is a chord of the free space. The
  * input's sequence of runs, with immediate back-and-forth crossings of a portal

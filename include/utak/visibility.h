@@ -23,22 +23,24 @@
  * so every step of a grid A* path (gridpath.h) is free by this test. A segment of
  * zero length is free when one of the cells whose closed square holds the point is
  * free. The end points must be where the caller wants them; the test does not look
- * at them otherwise. A POLYLINE is free when every segment is free and no interior
- * vertex is a pinch point (bending there could squeeze through it). Coordinates are grid units
- * (cell (x, y) is [x, x+1) x [y, y+1)). The test is exact for coordinates that are multiples of 1/2
- * (cell centres and lattice points, all utak uses) up to 2^20; for other values it follows the
- * double arithmetic.
+ * at them otherwise. A POLYLINE is free when every segment is free and no
+ * interior vertex is a pinch point (bending there could squeeze through it).
+ * Coordinates are grid units (cell (x, y) is [x, x+1) x [y, y+1)). The test is
+ * exact for coordinates that are multiples of 1/2 (cell centres and lattice
+ * points, all utak uses) up to 2^20; for other values it follows the double
+ * arithmetic.
  *
- * FEASIBILITY: the graph is built in full, V (V - 1) / 2 candidate pairs for V
- * corners, each pair a line test walking until its first blocked cell, so the
- * build is quadratic in the corners. visibility_init refuses (VISIBILITY_TOO_LARGE)
+ * FEASIBILITY: the graph is built in full by a sweep from each corner over the
+ * area it sees (visibility.c), so the build costs about the total area the corners
+ * see, plus one line test per edge. visibility_init refuses (VISIBILITY_TOO_LARGE)
  * a grid with more corners than the caller's limit, before building anything.
- * Measured here (CPU seconds, one thread): the Moving AI maps of 32x32 to 256x257
- * have 64 to 1305 corners and build in 0.3 to 100 ms; 8room_000 (512x512, 22340
- * corners) in 12-18 s; Boston_0_1024 (1024x1024, 16440 corners, long open
- * streets) in 33 s; maze512-1-0 (49154) and random512-10-0 (76173) would take
- * several minutes each and are refused at VISIBILITY_MAX_VERTICES. A query adds S
- * and D with 2 V line tests (0.001 ms on arena, 5 ms on 8room, 30 ms on Boston) and
+ * Measured here (wall seconds on the shared 2-core machine, one thread): the Moving
+ * AI maps of 32x32 to 256x257 (64 to 1305 corners) build in 2 to 250 ms;
+ * maze512-1-0 (49154 corners, 95694 edges) 1.7 s; 8room_000 (22340, 84998) 2 s;
+ * random512-10-0 (76173, 2.9 million edges) 26 s; Boston_0_1024 (16440 corners,
+ * 0.9 million edges: long open streets, each corner sees far) 40 s. Every map
+ * there is within VISIBILITY_MAX_VERTICES. A query joins S and D to the corners
+ * with 2 V line tests (0.001 ms on arena, 5 ms on 8room_000, 30 ms on Boston) and
  * runs A* with the straight-line heuristic (admissible and consistent). */
 #ifndef UTAK_VISIBILITY_H
 #define UTAK_VISIBILITY_H
@@ -51,10 +53,10 @@
 #include "utak/path.h"
 
 /* The most corners visibility_init accepts in the benchmark (see FEASIBILITY):
- * 25 000 corners is 3.1e8 candidate pairs, at most about a minute to build here;
- * it admits every map of ../shared/data/movingai but maze512-1-0 and
- * random512-10-0. */
-#define VISIBILITY_MAX_VERTICES 25000
+ * 100 000 admits every map of ../shared/data/movingai (the most is random512-10-0,
+ * 76173) and bounds the edge list (at most a few tens of millions of int32_t in
+ * practice; more than an int32_t index holds is refused too). */
+#define VISIBILITY_MAX_VERTICES 100000
 
 typedef enum VisibilityStatus {
 	VISIBILITY_FOUND = 0,    /* a shortest path was found (or the graph built) */

@@ -293,11 +293,59 @@ TEST_CASE(visibility_between_bounds_and_equal_to_brute_force)
 	path_free(&ap);
 }
 
+/* The graph's edges are exactly the pairs of corners whose segment is free and
+ * tangent at both ends (visibility.h), found here by testing every pair: the
+ * oracle for the sweep that builds the graph. */
+TEST_CASE(visibility_edges_equal_all_pairs)
+{
+	int64_t total = 0;
+	for (int trial = 0; trial < 120; trial++) {
+		Grid g;
+		int w = 2 + (int)(rng_next() % 30), h = 2 + (int)(rng_next() % 30);
+		random_grid(&g, w, h, 2 + (int)(rng_next() % 40));
+		VisibilityGraph vg;
+		TEST_CHECK(visibility_init(&vg, &g, VISIBILITY_MAX_VERTICES) == VISIBILITY_FOUND);
+		int64_t want = 0;
+		for (int32_t i = 0; i < vg.count; i++) {
+			int32_t k = vg.first[i];
+			for (int32_t j = 0; j < vg.count; j++) {
+				if (j == i)
+					continue;
+				double dx = vg.x[j] - vg.x[i], dy = vg.y[j] - vg.y[i];
+				bool into_j = dx * vg.qx[j] > 0 && dy * vg.qy[j] > 0;
+				bool into_i = -dx * vg.qx[i] > 0 && -dy * vg.qy[i] > 0;
+				bool edge = !into_j && !into_i &&
+				            visibility_segment_free(&g, vec2(vg.x[i], vg.y[i]),
+				                                    vec2(vg.x[j], vg.y[j]));
+				/* Rows are sorted: the next neighbour of i is j exactly when edge.
+				 */
+				bool listed = k < vg.first[i + 1] && vg.adj[k] == j;
+				if (edge != listed)
+					fprintf(stderr,
+					        "  %dx%d: corners (%d,%d)-(%d,%d): pair test %d, "
+					        "graph %d\n",
+					        w, h, (int)vg.x[i], (int)vg.y[i], (int)vg.x[j],
+					        (int)vg.y[j], edge, listed);
+				TEST_CHECK(edge == listed);
+				k += listed;
+				want += edge;
+			}
+			TEST_CHECK(k == vg.first[i + 1]);
+		}
+		TEST_CHECK(want == 2 * vg.edges);
+		total += want;
+		visibility_free(&vg);
+		grid_free(&g);
+	}
+	TEST_CHECK(total > 10000);
+}
+
 int main(void)
 {
 	TEST_RUN(segment_test_agrees_with_sampling);
 	TEST_RUN(segment_test_by_hand);
 	TEST_RUN(visibility_around_one_block_by_hand);
 	TEST_RUN(visibility_between_bounds_and_equal_to_brute_force);
+	TEST_RUN(visibility_edges_equal_all_pairs);
 	return TEST_EXIT();
 }
