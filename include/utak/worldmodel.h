@@ -80,8 +80,6 @@ enum {
 	WORLDMODEL_RES_FOVEA = 3
 };
 
-/* The largest occupancy estimate still believed floor: a level-0 cell gives 0, any
- * non-zero level more (BELIEF above). */
 #define WORLDMODEL_FLOOR_P 0.1
 #define WORLDMODEL_CONF_FOVEA 0.9
 #define WORLDMODEL_CONF_INTERMEDIATE 0.6
