@@ -106,7 +106,7 @@ Belief worldmodel_belief(const WorldModel *m, int32_t x, int32_t y)
 	Evidence e = worldmodel_evidence(m, x, y);
 	if (e.res == WORLDMODEL_UNSEEN)
 		return BELIEF_UNKNOWN;
-	return e.p > 0.1f ? BELIEF_OCCUPIED : BELIEF_FLOOR;
+	return e.p >= 0.5f ? BELIEF_OCCUPIED : BELIEF_FLOOR;
 }
 
 void worldmodel_set_position(WorldModel *m, Vec2 p)

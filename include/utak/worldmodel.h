@@ -26,12 +26,9 @@
  *    relation. An object Utak holds hangs under $org instead of $floor, so
  *    pushing it moves it with him, again by one relation.
  *
- * BELIEF per square: unknown (never seen), floor (p <= WORLDMODEL_FLOOR_P) or
- * occupied. So a square under a cell of non-zero level is occupied until finer
- * evidence clears it: the reading of paper 3.4.2 (non-zero regions are objects or
- * verge), and the safe side for a planner. Utak's own square is floor (he stands
- * on it). The object nodes of the first model are therefore those of the
- * isolated-object regions of the first impression (regions.h).
+ * BELIEF per square: unknown (never seen), occupied (p >= 1/2: mixed evidence is
+ * read as occupied, which is the safe side for a planner), or floor. Utak's own
+ * square is floor (he stands on it).
  *
  * CONFIDENCE RULES (all in [0, 1]):
  * - An observation of a square in a cell of resolution r with estimate q has
@@ -80,7 +77,6 @@ enum {
 	WORLDMODEL_RES_FOVEA = 3
 };
 
-#define WORLDMODEL_FLOOR_P 0.1
 #define WORLDMODEL_CONF_FOVEA 0.9
 #define WORLDMODEL_CONF_INTERMEDIATE 0.6
 #define WORLDMODEL_CONF_PERIPHERAL 0.3

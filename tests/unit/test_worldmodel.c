@@ -9,7 +9,6 @@
 #include "utak/act.h"
 #include "utak/eye.h"
 #include "utak/motion.h"
-#include "utak/regions.h"
 #include "utak/retina.h"
 #include "utak/worldmodel.h"
 
@@ -452,54 +451,10 @@ TEST_CASE(worldmodel_random_walks_stay_close)
 	TEST_CHECK(exact * 10 >= steps * 8);
 }
 
-/* Paper 3.4.3: the first model has a node for every isolated-object region of the
- * first impression, and the regions no rule decides stay undecided in the model:
- * node for region, square for square. */
-TEST_CASE(worldmodel_first_nodes_are_the_regions)
-{
-	static const char *const worlds[] = {"worlds/room.w", "worlds/tworooms.w",
-	                                     "worlds/nearcorner.w"};
-	for (int wi = 0; wi < 3; wi++) {
-		Sim s;
-		const char *text = read_file(worlds[wi]);
-		TEST_CHECK(text != NULL);
-		sim_load(&s, text);
-		Impression imp;
-		retina_sense(&s.w, &s.t, &imp);
-		Regions r;
-		regions_find(&r, &imp);
-		WorldModel m;
-		worldmodel_init(&m);
-		worldmodel_accommodate_first(&m, &imp);
-		int objects = 0, others = 0;
-		for (int32_t g = 0; g < r.count; g++) {
-			const Region *reg = &r.region[g];
-			if (!reg->nonzero || reg->reading == REGION_UTAK)
-				continue;
-			NodeKind want =
-			    reg->reading == REGION_OBJECT ? NODE_OBJECT : NODE_UNCERTAIN;
-			objects += want == NODE_OBJECT;
-			others += want == NODE_UNCERTAIN;
-			int found = 0;
-			for (int32_t id = 0; id < m.node_count; id++)
-				found +=
-				    m.node[id].kind == want && m.node[id].squares == reg->squares;
-			TEST_CHECK(found >= 1);
-		}
-		int nodes[4] = {0, 0, 0, 0};
-		for (int32_t id = 0; id < m.node_count; id++)
-			nodes[m.node[id].kind]++;
-		TEST_CHECK(nodes[NODE_OBJECT] == objects && nodes[NODE_UNCERTAIN] == others);
-		worldmodel_free(&m);
-		sim_free(&s);
-	}
-}
-
 int main(void)
 {
 	TEST_RUN(worldmodel_default_model);
 	TEST_RUN(worldmodel_same_field_same_model);
-	TEST_RUN(worldmodel_first_nodes_are_the_regions);
 	TEST_RUN(worldmodel_room_walk_outlines);
 	TEST_RUN(worldmodel_disparity_corrects_wrong_belief);
 	TEST_RUN(worldmodel_halted_move_found);
