@@ -24,7 +24,7 @@ is_simulator() {
 
 # includes FILE: the utak headers FILE names, one per line, without directory.
 includes() {
-	sed -n 's/^[ 	]*#[ 	]*include[ 	]*"utak\/\([a-z_]*\)\.h".*/\1/p' "$1"
+	sed -n 's/^[ 	]*#[ 	]*include[ 	]*["<]utak\/\([a-z_0-9]*\)\.h[">].*/\1/p' "$1"
 }
 
 # closure FILE: every utak header reached from FILE, transitively.

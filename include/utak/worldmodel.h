@@ -26,9 +26,13 @@
  *    relation. An object Utak holds hangs under $org instead of $floor, so
  *    pushing it moves it with him, again by one relation.
  *
- * BELIEF per square: unknown (never seen), occupied (p >= 1/2: mixed evidence is
- * read as occupied, which is the safe side for a planner), or floor. Utak's own
- * square is floor (he stands on it).
+ * BELIEF per square: unknown (never seen), occupied (p >= 1/2: a square under a
+ * cell at least half occupied), or floor. A coarse cell with only a little in it
+ * (a 4 x 4 cell at level 1 or 2) therefore reads as floor until it is seen finer;
+ * a planner that must not cut through thin things seen far away can look at
+ * worldmodel_evidence (p, res, conf). Utak's own square is floor (he stands on
+ * it). The first model's objects need not be the first impression's object
+ * regions: a region joined to the verge by a faint cell may be an object here.
  *
  * CONFIDENCE RULES (all in [0, 1]):
  * - An observation of a square in a cell of resolution r with estimate q has
