@@ -1,6 +1,6 @@
-/* test_invariants.c - the simulator's invariants under random commands, and the
- * regressions the fuzzers found (paper 2.1: objects never overlap and never leave
- * the verge; issue 6).
+/* test_invariants.c - the simulator's invariants under random commands, the
+ * regressions the fuzzers found, and the limits at their boundaries (paper 2.1:
+ * objects never overlap and never leave the verge; issue 6).
  *
  * The property test drives 10,000 random command sequences on random worlds
  * (fixed seed: the same run every time) with walls, concave objects, a given
