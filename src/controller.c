@@ -375,30 +375,29 @@ static void bump(Controller *c, const MotorCommand *cmd)
 	}
 }
 
-/* space_for_push(c, g): the configuration space of Utak and the object he holds:
- * the screen with the held squares freed, eroded by the held squares and his own. */
-static void space_for_push(Controller *c, Grid *out)
+/* cspace_of(c, rx, ry, ox, oy, n, out): the configuration space of Utak on model
+ * square (rx, ry) holding the n squares at offsets (ox, oy) from his: the screen's
+ * space with those squares freed (they move with him) and the squares bumped into
+ * blocked, eroded by the footprint of his square and theirs (cspace.c). */
+static void cspace_of(const Controller *c, int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, int32_t n,
+		      Grid *out)
 {
 	const Screen *s = &c->screen;
-	const WorldModel *m = &c->model;
 	Grid base;
 	grid_init(&base, s->w, s->h, GRID_BLOCKED);
 	memcpy(base.cells, s->free.cells, (size_t)s->w * (size_t)s->h);
-	int32_t ux, uy;
-	worldmodel_utak_square(m, &ux, &uy);
-	int32_t n = m->held_count;
-	/* The footprint: Utak's square and the held squares, as row runs. */
 	int32_t *dx = util_alloc((size_t)n + 1, sizeof *dx), *dy = util_alloc((size_t)n + 1, sizeof *dy);
 	dx[0] = dy[0] = 0;
 	for (int32_t j = 0; j < n; j++) {
-		dx[j + 1] = m->held_dx[j];
-		dy[j + 1] = m->held_dy[j];
-		int32_t i2 = ux + m->held_dx[j] - s->x0, j2 = uy + m->held_dy[j] - s->y0;
+		dx[j + 1] = ox[j];
+		dy[j + 1] = oy[j];
+		int32_t i2 = rx + ox[j] - s->x0, j2 = ry + oy[j] - s->y0;
 		if (i2 >= 0 && j2 >= 0 && i2 < s->w && j2 < s->h)
 			base.cells[j2 * s->w + i2] = GRID_FREE;
 	}
 	mark_bumped(c, &base);
-	/* Sort by (dy, dx): insertion sort, n is a few dozen. */
+	/* The footprint as row runs: sort by (dy, dx) (insertion sort: n is a few
+	 * dozen), then join neighbours in a row. */
 	for (int32_t a = 1; a <= n; a++)
 		for (int32_t b = a; b > 0 && (dy[b] < dy[b - 1] || (dy[b] == dy[b - 1] && dx[b] < dx[b - 1])); b--) {
 			int32_t t = dx[b];
@@ -428,6 +427,14 @@ static void space_for_push(Controller *c, Grid *out)
 	grid_free(&base);
 }
 
+/* space_for_push(c, out): the configuration space of Utak and what he holds. */
+static void space_for_push(Controller *c, Grid *out)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	cspace_of(c, ux, uy, c->model.held_dx, c->model.held_dy, c->model.held_count, out);
+}
+
 /* build_space(c): the grid to plan on, from the current screen: its space, or
  * when pushing the configuration space. Utak's own square is free whatever the
  * model says of it: he stands there. */
@@ -444,6 +451,118 @@ static void build_space(Controller *c)
 	int32_t i, j;
 	if (cell_of(&c->screen, c->model.utak, &i, &j))
 		c->space.cells[j * c->space.w + i] = GRID_FREE;
+}
+
+/* push_goal(c, g, dist, rm, start_room, here_room, ui, uj, goal): where Utak
+ * should take the object he holds (or would hold), on its configuration space g,
+ * dist being the steps from his cell (ui, uj) on g: the corner of the starting
+ * room, a cell near the centre of a room next to the one he is in, or the nearest
+ * place out of sight of where the object was. */
+static bool push_goal(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t start_room,
+		      int32_t here_room, int32_t ui, int32_t uj, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	if (c->task.kind == TASK_PUSH_CORNER)
+		return goal_corner(c, g, dist, rm, start_room, goal);
+	if (c->task.kind == TASK_PUSH_NEXT_ROOM || c->task.kind == TASK_PUSH_THROUGH_DOOR)
+		return goal_next_room(c, g, dist, rm, here_room, goal);
+	int32_t best = -1;
+	for (int32_t j = 0; j < g->h; j++)
+		for (int32_t i = 0; i < g->w; i++) {
+			int32_t k = j * g->w + i;
+			if (dist[k] < 3 || (best >= 0 && dist[k] >= dist[best]))
+				continue;
+			if (!pathgraph_segment_free(&s->fixed, centre_of(ui, uj), centre_of(i, j)))
+				best = k;
+		}
+	if (best >= 0)
+		*goal = centre_of(s->x0 + best % g->w, s->y0 + best / g->w);
+	return best >= 0;
+}
+
+/* grasp_side(c, k, dist, rm, start_room, goal): for a push task, the cell beside
+ * object node k to grasp it from: the nearest (by steps, dist) from which Utak and
+ * the object together, as one rigid footprint, can reach a push goal. A square
+ * pushed into the north-east corner must be held from the south-west, a brick
+ * pushed through a door from its end. False when no side works. */
+static bool grasp_side(const Controller *c, int32_t k, const int32_t *dist, const RoomMap *rm, int32_t start_room,
+		       Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	const ModelNode *n = &m->node[k];
+	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
+	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
+	int32_t cap = (x1 - x0) * (y1 - y0), count = 0;
+	if (cap <= 0 || cap > WORLDMODEL_HELD_MAX)
+		return false;
+	int32_t *sx = util_alloc((size_t)cap, sizeof *sx), *sy = util_alloc((size_t)cap, sizeof *sy);
+	int32_t *ox = util_alloc((size_t)cap, sizeof *ox), *oy = util_alloc((size_t)cap, sizeof *oy);
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++)
+			if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED) {
+				sx[count] = x;
+				sy[count++] = y;
+			}
+	int32_t *cdist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *cdist);
+	bool found = false;
+	Grid cs = {0};
+	/* Candidates in order of steps from Utak: repeatedly the nearest untried. */
+	for (int32_t d = 0, tried = 0; !found && tried < 64;) {
+		int32_t best = -1;
+		for (int32_t at = 0; at < s->w * s->h; at++) {
+			if (dist[at] < d || (best >= 0 && dist[at] >= dist[best]))
+				continue;
+			int32_t i = at % s->w, j = at / s->w;
+			bool beside = false;
+			for (int dy = -1; dy <= 1 && !beside; dy++)
+				for (int dx = -1; dx <= 1 && !beside; dx++)
+					beside = (dx || dy) && screen_label(s, i + dx, j + dy) == k;
+			if (beside)
+				best = at;
+		}
+		if (best < 0)
+			break;
+		d = dist[best];
+		/* Every candidate at this distance, in row order. */
+		for (int32_t at = best; at < s->w * s->h && !found; at++) {
+			if (dist[at] != d)
+				continue;
+			int32_t i = at % s->w, j = at / s->w, rx = s->x0 + i, ry = s->y0 + j;
+			bool beside = false;
+			for (int dy = -1; dy <= 1 && !beside; dy++)
+				for (int dx = -1; dx <= 1 && !beside; dx++)
+					beside = (dx || dy) && screen_label(s, i + dx, j + dy) == k;
+			bool visited = false;
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = distance(centre_of(rx, ry), c->visited[v]) < 0.5;
+			if (!beside || visited)
+				continue;
+			tried++;
+			for (int32_t q = 0; q < count; q++) {
+				ox[q] = sx[q] - rx;
+				oy[q] = sy[q] - ry;
+			}
+			cspace_of(c, rx, ry, ox, oy, count, &cs);
+			if (!grid_free_at(&cs, i, j))
+				continue;
+			reach(&cs, i, j, cdist);
+			Vec2 to;
+			if (push_goal(c, &cs, cdist, rm, start_room, rooms_at(&rm->rooms, i, j), i, j, &to) &&
+			    distance(to, centre_of(rx, ry)) > CONTROLLER_ARRIVED) {
+				*goal = centre_of(rx, ry);
+				found = true;
+			}
+		}
+		d++;
+	}
+	grid_free(&cs);
+	free(cdist);
+	free(sx);
+	free(sy);
+	free(ox);
+	free(oy);
+	return found;
 }
 
 /* choose_goal(c, out): the goal of the current phase on the current screen and
@@ -487,6 +606,11 @@ static void choose_goal(Controller *c, GoalResult *out)
 		}
 		if (!pushing) {
 			int32_t k = find_target(c);
+			bool push_task = c->task.kind != TASK_GO_SHAPE && c->task.kind != TASK_GO_ROUND;
+			if (k >= 0 && push_task && grasp_side(c, k, dist, &rm, start_room, &out->goal)) {
+				out->found = true;
+				break;
+			}
 			if (k >= 0 && goal_beside(c, k, dist, &out->goal)) {
 				out->found = true;
 				break;
@@ -509,31 +633,14 @@ static void choose_goal(Controller *c, GoalResult *out)
 			break;
 		}
 		/* Pushing: where the held object should go. */
-		if (c->task.kind == TASK_PUSH_CORNER) {
-			out->found = goal_corner(c, g, dist, &rm, start_room, &out->goal);
-			if (!out->found)
-				snprintf(out->why, sizeof out->why, "the %s cannot be moved anywhere", shape);
-		} else if (c->task.kind == TASK_PUSH_NEXT_ROOM || c->task.kind == TASK_PUSH_THROUGH_DOOR) {
-			out->found = goal_next_room(c, g, dist, &rm, here_room, &out->goal);
-			if (!out->found)
-				snprintf(out->why, sizeof out->why,
-					 "the %s does not fit through any door of this room without turning", shape);
-		} else { /* around the corner: the nearest place out of sight of where it was */
-			int32_t best = -1;
-			for (int32_t j = 0; j < g->h; j++)
-				for (int32_t i = 0; i < g->w; i++) {
-					int32_t k = j * g->w + i;
-					if (dist[k] < 3 || (best >= 0 && dist[k] >= dist[best]))
-						continue;
-					if (!pathgraph_segment_free(&s->fixed, centre_of(ui, uj), centre_of(i, j)))
-						best = k;
-				}
-			out->found = best >= 0;
-			if (out->found)
-				out->goal = centre_of(s->x0 + best % g->w, s->y0 + best / g->w);
-			else
-				snprintf(out->why, sizeof out->why, "no corner the %s can be pushed around", shape);
-		}
+		out->found = push_goal(c, g, dist, &rm, start_room, here_room, ui, uj, &out->goal);
+		if (!out->found)
+			snprintf(out->why, sizeof out->why,
+				 c->task.kind == TASK_PUSH_CORNER ? "the %s cannot be moved toward the corner"
+				 : c->task.kind == TASK_PUSH_AROUND_CORNER
+				     ? "no corner the %s can be pushed around"
+				     : "the %s does not fit through any door of this room without turning",
+				 shape);
 	}
 	roommap_free(&rm);
 	free(dist);
