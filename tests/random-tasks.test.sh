@@ -1,0 +1,47 @@
+#!/bin/sh
+# random-tasks.test.sh - the controller on 200 random worlds (fixed seeds): every
+# task of the paper's (i)-(v), in turn, must end in a verdict, "task: achieved" or
+# "task: failed: REASON", with exit status 0 or 1 to match, within the cycle limit:
+# never a crash, a sanitizer report, a hang, or a malformed verdict. Worlds the
+# reader refuses (the generator does not avoid every overlap) are skipped and
+# counted; at least 200 must run.
+set -u
+tmp=${TMPDIR:-/tmp}/utak-random.$$
+mkdir -p "$tmp"; trap 'rm -rf "$tmp"' EXIT
+ran=0 skipped=0 achieved=0 seed=1
+tasks="go ne-corner|go square|go round square|push square ne-corner|go sw-corner"
+while [ "$ran" -lt 200 ]; do
+	# A room with a wall stub or none, a 4 x 4 square and two other boxes.
+	awk -v seed="$seed" 'BEGIN {
+		srand(seed); w = 30 + int(rand() * 12); h = 26 + int(rand() * 10)
+		printf "table %d %d\n", w, h
+		if (rand() < 0.5) { x = 8 + int(rand() * (w - 16)); printf "wall %d 1 %d 1 %d %d %d %d\n", x, x + 1, x + 1, int(h / 2), x, int(h / 2) }
+		x = 3 + int(rand() * (w - 10)); y = 3 + int(rand() * (h - 10))
+		printf "object square A %d %d %d %d %d %d %d %d\n", x, y, x + 4, y, x + 4, y + 4, x, y + 4
+		for (k = 0; k < 2; k++) {
+			bw = 2 + int(rand() * 5); bh = 2 + int(rand() * 4)
+			x = 3 + int(rand() * (w - bw - 6)); y = 3 + int(rand() * (h - bh - 6))
+			printf "object box%d C %d %d %d %d %d %d %d %d\n", k, x, y, x + bw, y, x + bw, y + bh, x, y + bh
+		}
+		split("north east south west", hd, " ")
+		printf "utak %d.5 %d.5 %s\n", 2 + int(rand() * (w - 4)), 2 + int(rand() * (h - 4)), hd[1 + int(rand() * 4)]
+	}' >"$tmp/w.w"
+	task=$(echo "$tasks" | cut -d'|' -f$((seed % 5 + 1)))
+	seed=$((seed + 1))
+	"$UTAK" -q --max-cycles 80 "$tmp/w.w" "$task" >"$tmp/out" 2>"$tmp/err"
+	st=$?
+	if [ "$st" = 2 ] && grep -q '^utak: .*w.w:' "$tmp/err"; then
+		skipped=$((skipped + 1)); continue # the generator's overlap: refused cleanly
+	fi
+	ran=$((ran + 1))
+	last=$(tail -n 1 "$tmp/out")
+	case "$st:$last" in
+	"0:task: achieved"*) achieved=$((achieved + 1)) ;;
+	"1:task: failed: "*) ;;
+	*) echo "seed $((seed - 1)), task '$task': exit $st, last line '$last'"; cat "$tmp/w.w"; head -n 5 "$tmp/err"; exit 1 ;;
+	esac
+	if [ -s "$tmp/err" ]; then
+		echo "seed $((seed - 1)), task '$task': wrote to stderr"; head -n 5 "$tmp/err"; exit 1
+	fi
+done
+echo "$ran worlds ran ($achieved achieved), $skipped refused by the reader"
