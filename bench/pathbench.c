@@ -1,7 +1,7 @@
 /* pathbench.c - the path-finding benchmark on Moving AI maps (paper 4.1 and 5: the
  * paper's planners compared on real maps).
  *
- *   pathbench [--sample N] [--vis-limit N] FILE.map FILE.scen
+ *   pathbench [--sample N] [--vis-limit N] [--skel-paths K] FILE.map FILE.scen
  *	One line per scenario: index in the file, bucket, published optimum, grid A*
  *	length, any-angle (visibility-graph) length, the A* path rope-tightened, then
  *	the skeleton path and its tightened length; "-" where not computed, and
@@ -11,7 +11,7 @@
  *	grid A* misses a published optimum (tolerance 1e-3 + 1e-5 x length) or the rope
  *	fails its checks (free, not longer than the A* path, not shorter than the
  *	any-angle optimum), 2 on a bad file or usage (one line on stderr).
- *   pathbench --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]
+ *   pathbench --table [--sample N] [--vis-limit N] [--skel-paths K] MAP SCEN [MAP SCEN ...]
  *	One row per scenario file, then a row over all scenarios run; same exit status.
  *	Columns (medians over the scenarios unless .mx = maximum):
  *	  size, cells (free), run (scenarios run), A*ok ("all" when every A* length
@@ -41,7 +41,9 @@
  *	free cells left and best ms of 3 runs.
  *
  * --sample N runs at most N scenarios of each file, evenly spaced (always the first),
- * so that `make bench` takes minutes. Times are milliseconds on one thread; every
+ * so that `make bench` takes minutes. --skel-paths K (1 to 16, default 1) makes the
+ * skeleton columns tighten the pathgraph's K best topologically distinct paths and
+ * keep the shortest rope, instead of the planner's one best path. Times are milliseconds on one thread; every
  * other printed number is deterministic. */
 #include <math.h>
 #include <stdbool.h>
@@ -106,6 +108,12 @@ typedef struct BenchMap {
 /* The corner limit for the visibility graph (--vis-limit). */
 static int32_t bench_vis_limit = VISIBILITY_MAX_VERTICES;
 
+/* --skel-paths K: how many of the pathgraph's best paths the skeleton planner's
+ * figures tighten (1, the default, is what the planner does); at most
+ * PATHBENCH_MAX_SKEL_PATHS, as Yen's method costs a search per node of each path. */
+#define PATHBENCH_MAX_SKEL_PATHS 16
+static int bench_skel_paths = 1;
+
 static double bench_now_ms(void)
 {
 	struct timespec t;
@@ -126,9 +134,9 @@ static double bench_cpu_ms(void)
 static void bench_die_usage(void)
 {
 	fprintf(stderr,
-	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] FILE.map FILE.scen\n"
+	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] [--skel-paths K] FILE.map FILE.scen\n"
 	        "       " PATHBENCH_NAME
-	        " --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]\n"
+	        " --table [--sample N] [--vis-limit N] [--skel-paths K] MAP SCEN [MAP SCEN ...]\n"
 	        "       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n"
 	        "       " PATHBENCH_NAME " --cspace MAP [MAP ...]\n");
 	exit(2);
@@ -242,6 +250,7 @@ static int bench_selected(int i, int count, int sample)
 typedef struct BenchPaths {
 	Path path, tight;              /* grid A*, then its rope; the any-angle path */
 	Path skeleton, skeleton_tight; /* the skeleton planner's path and its rope */
+	Path alt[PATHBENCH_MAX_SKEL_PATHS]; /* --skel-paths: the pathgraph's K best */
 } BenchPaths;
 
 static void bench_paths_init(BenchPaths *bp)
@@ -250,6 +259,8 @@ static void bench_paths_init(BenchPaths *bp)
 	path_init(&bp->tight);
 	path_init(&bp->skeleton);
 	path_init(&bp->skeleton_tight);
+	for (int k = 0; k < PATHBENCH_MAX_SKEL_PATHS; k++)
+		path_init(&bp->alt[k]);
 }
 
 static void bench_paths_free(BenchPaths *bp)
@@ -258,6 +269,52 @@ static void bench_paths_free(BenchPaths *bp)
 	path_free(&bp->tight);
 	path_free(&bp->skeleton);
 	path_free(&bp->skeleton_tight);
+	for (int k = 0; k < PATHBENCH_MAX_SKEL_PATHS; k++)
+		path_free(&bp->alt[k]);
+}
+
+static void bench_check_skeleton_rope(const BenchMap *bm, const BenchPaths *bp,
+                                      BenchResult *r);
+
+/* bench_run_skeleton_k: --skel-paths K > 1: the K best topologically distinct paths
+ * of the pathgraph (pathgraph_find_paths), each rope-tightened, the shortest rope
+ * kept (and the path it came from). Not what the planner does (it tightens its one
+ * best path); a measure of how many of the bench's long ropes come from the pathgraph
+ * choosing the wrong way round an obstacle. q.ms and q.exp count the K searches, not
+ * the ropes. */
+static void bench_run_skeleton_k(BenchMap *bm, Vec2 s, Vec2 d, BenchPaths *bp, BenchResult *r)
+{
+	double t0 = bench_now_ms();
+	int n = pathgraph_find_paths(&bm->pathgraph, s, d, NULL, bench_skel_paths, bp->alt);
+	r->skeleton_ms = bench_now_ms() - t0;
+	if (n == 0) {
+		r->skeleton_expanded = 0;
+		r->skeleton_status = SKEL_NO_PATH;
+		return;
+	}
+	r->skeleton_expanded = bp->alt[n - 1].expanded;
+	int best = -1;
+	for (int k = 0; k < n; k++) {
+		/* A refused path is reported even when another path's rope is kept. */
+		if (rope_tighten(&bm->grid, &bp->alt[k], &bp->skeleton_tight) != ROPE_OK) {
+			r->skeleton_status = SKEL_ROPE_BAD_INPUT;
+			continue;
+		}
+		double len = path_length(&bp->skeleton_tight);
+		if (best < 0 || len < r->skeleton_rope) {
+			best = k;
+			r->skeleton_rope = len;
+		}
+	}
+	if (best < 0)
+		return;
+	/* Tighten the kept one again, so that the checks see its rope and its path. */
+	path_clear(&bp->skeleton);
+	for (int i = 0; i < bp->alt[best].count; i++)
+		path_push(&bp->skeleton, bp->alt[best].pts[i]);
+	rope_tighten(&bm->grid, &bp->skeleton, &bp->skeleton_tight);
+	r->skeleton = path_length(&bp->skeleton);
+	bench_check_skeleton_rope(bm, bp, r);
 }
 
 /* bench_run_skeleton: the skeleton planner on problem pr: the pathgraph path from the
@@ -268,6 +325,10 @@ static void bench_run_skeleton(BenchMap *bm, const MovingAiProblem *pr, BenchPat
                                BenchResult *r)
 {
 	Vec2 s = vec2(pr->sx + 0.5, pr->sy + 0.5), d = vec2(pr->gx + 0.5, pr->gy + 0.5);
+	if (bench_skel_paths > 1) {
+		bench_run_skeleton_k(bm, s, d, bp, r);
+		return;
+	}
 	double t0 = bench_now_ms();
 	bool found = pathgraph_find_path(&bm->pathgraph, s, d, NULL, &bp->skeleton);
 	r->skeleton_ms = bench_now_ms() - t0;
@@ -282,6 +343,14 @@ static void bench_run_skeleton(BenchMap *bm, const MovingAiProblem *pr, BenchPat
 		return;
 	}
 	r->skeleton_rope = path_length(&bp->skeleton_tight);
+	bench_check_skeleton_rope(bm, bp, r);
+}
+
+/* bench_check_skeleton_rope: the checks on the rope in bp->skeleton_tight of the path
+ * bp->skeleton, whose lengths are in r. */
+static void bench_check_skeleton_rope(const BenchMap *bm, const BenchPaths *bp,
+                                      BenchResult *r)
+{
 	/* The same checks as for the A* path's rope: free, not longer than its input. */
 	r->skeleton_rope_ok = r->skeleton_rope <= r->skeleton + PATHBENCH_LENGTH_EPS &&
 	                      visibility_path_free(&bm->grid, &bp->skeleton_tight);
@@ -866,7 +935,8 @@ int main(int argc, char **argv)
 		else if (strcmp(argv[a], "--cspace") == 0)
 			cspace = 1;
 		else if ((strcmp(argv[a], "--sample") == 0 || strcmp(argv[a], "--scale") == 0 ||
-		          strcmp(argv[a], "--vis-limit") == 0) &&
+		          strcmp(argv[a], "--vis-limit") == 0 ||
+		          strcmp(argv[a], "--skel-paths") == 0) &&
 		         a + 1 < argc) {
 			char *end;
 			long v = strtol(argv[a + 1], &end, 10);
@@ -879,6 +949,11 @@ int main(int argc, char **argv)
 				sample = (int)v;
 			else if (strcmp(argv[a], "--scale") == 0)
 				scale = (int)v;
+			else if (strcmp(argv[a], "--skel-paths") == 0) {
+				if (v > PATHBENCH_MAX_SKEL_PATHS)
+					bench_die_usage();
+				bench_skel_paths = (int)v;
+			}
 			else
 				bench_vis_limit = (int32_t)v;
 			a++;
