@@ -3,6 +3,8 @@
 #   make            ./utak, optimised, with the warning list below and no warnings
 #   make check      everything again with AddressSanitizer + UBSan, then every test
 #   make bench      the path-finding benchmark on ../shared/data/movingai
+#   make bench-compare  the distance transform and skeleton against OpenCV and
+#                   scikit-image, in one run (the block at the end)
 #   make golden     regenerate golden files (a deliberate act: read the diff)
 #
 # Sources are found by wildcard: a new module is a new src/NAME.c and
@@ -183,3 +185,29 @@ build/gen/.done: tests/bad/gen.sh
 	sh tests/bad/gen.sh build/gen && touch $@
 
 check: build/gen/.done
+
+# ---- the peers side by side (issue 4): make bench-compare ----------------------
+#
+#   make bench-compare   utak's distance transform and skeleton against OpenCV's
+#                        exact distance transform, scikit-image's skeletonize and
+#                        OpenCV's Zhang-Suen thinning, in one run on the same
+#                        1024 x 1024 grids (rooms, random rectangles, maze,
+#                        Boston_0_1024): the ratios peer ms / utak ms
+#
+# bench/skelbench.c --compare writes the grids and times utak; bench/compare.py times
+# the peers on the same files and prints the ratios. The peers are Debian's
+# python3-opencv and python3-skimage (installed by tests/fuzz/need.sh when missing),
+# so the script runs under Debian's interpreter, not whatever python3 is first on
+# PATH. The C side stays libc + libm; nothing else depends on this target.
+
+DEBIAN_PYTHON ?= /usr/bin/python3
+MOVINGAI      ?= ../shared/data/movingai
+
+bench-compare-deps:
+	@sh tests/fuzz/need.sh python3-opencv python3-skimage
+
+bench-compare: build/rel/bench/skelbench | bench-compare-deps
+	OMP_NUM_THREADS=1 $(DEBIAN_PYTHON) bench/compare.py build/rel/bench/skelbench \
+	    build/compare $(MOVINGAI)/maps/cities/Boston_0_1024.map
+
+.PHONY: bench-compare bench-compare-deps

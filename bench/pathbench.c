@@ -1,15 +1,17 @@
 /* pathbench.c - the path-finding benchmark on Moving AI maps (paper 4.1 and 5: the
  * paper's planners compared on real maps).
  *
- *   pathbench [--sample N] [--vis-limit N] FILE.map FILE.scen
+ *   pathbench [--sample N] [--vis-limit N] [--skel-paths K] FILE.map FILE.scen
  *	One line per scenario: index in the file, bucket, published optimum, grid A*
  *	length, any-angle (visibility-graph) length, the A* path rope-tightened, then
  *	the skeleton path and its tightened length; "-" where not computed, and
- *	" MISSED" / " ROPE-FAILED" at the end of a line that fails a check. Exit 1 when
+ *	" MISSED" / " ROPE-FAILED" at the end of a line that fails a check, and
+ *	" SKEL-NO-PATH" / " SKEL-ROPE-REFUSED" / " SKEL>OPT+1" for the skeleton
+ *	planner's shortfalls against the issue's targets (not failures). Exit 1 when
  *	grid A* misses a published optimum (tolerance 1e-3 + 1e-5 x length) or the rope
  *	fails its checks (free, not longer than the A* path, not shorter than the
  *	any-angle optimum), 2 on a bad file or usage (one line on stderr).
- *   pathbench --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]
+ *   pathbench --table [--sample N] [--vis-limit N] [--skel-paths K] MAP SCEN [MAP SCEN ...]
  *	One row per scenario file, then a row over all scenarios run; same exit status.
  *	Columns (medians over the scenarios unless .mx = maximum):
  *	  size, cells (free), run (scenarios run), A*ok ("all" when every A* length
@@ -19,10 +21,16 @@
  *	  expanded), any/opt (any-angle length / published optimum);
  *	  rope.ms (tightening the A* path), rope/opt, rope/any, r/any.mx, r-opt.mx
  *	  (tightened length minus published optimum);
- *	  skel: dt.ms, sk.ms, pg.ms (distance transform, skeleton, pathgraph build),
- *	  q.ms, q.exp (pathgraph query), sk/any, skr/any (skeleton path and its
- *	  tightened form over the any-angle optimum), skr-opt (tightened minus the grid
- *	  optimum, max): "-" until the skeleton modules are wired in (SKELETON below).
+ *	  skel: dt.ms, sk.ms, pg.ms (distance transform, skeleton with its own
+ *	  distance transform, pathgraph build: once per map, best of 3), q.ms, q.exp
+ *	  (the pathgraph query from S's cell centre to D's: S', D', A* over the
+ *	  vertices, the path), "A* / q" (A* cells expanded over pathgraph vertices expanded),
+ *	  sk/opt, skr/opt, sk/any, skr/any (the skeleton path and its rope-tightened
+ *	  form, skr, over the published and the any-angle optimum), skr/a.mx,
+ *	  skr-o.mx (maxima: skr over any-angle, skr minus the grid optimum), >o+1
+ *	  (scenarios where skr is longer than the grid optimum + 1, the issue's bound)
+ *	  and fail (no skeleton path, or rope_tighten refused it); each of these last
+ *	  two is also a line on stderr, which does not change the exit status.
  *   pathbench --corner [--scale K] MAP ...
  *	Grid A* corner to corner (the free cell nearest the top-left corner to the one
  *	nearest the bottom-right), each map optionally enlarged K times (every cell
@@ -33,7 +41,9 @@
  *	free cells left and best ms of 3 runs.
  *
  * --sample N runs at most N scenarios of each file, evenly spaced (always the first),
- * so that `make bench` takes minutes. Times are milliseconds on one thread; every
+ * so that `make bench` takes minutes. --skel-paths K (1 to 16, default 1) makes the
+ * skeleton columns tighten the pathgraph's K best topologically distinct paths and
+ * keep the shortest rope, instead of the planner's one best path. Times are milliseconds on one thread; every
  * other printed number is deterministic. */
 #include <math.h>
 #include <stdbool.h>
@@ -47,7 +57,9 @@
 #include "utak/gridpath.h"
 #include "utak/movingai.h"
 #include "utak/path.h"
+#include "utak/pathgraph.h"
 #include "utak/rope.h"
+#include "utak/skeleton.h"
 #include "utak/util.h"
 #include "utak/visibility.h"
 
@@ -59,12 +71,17 @@ typedef struct BenchResult {
 	double astar;         /* grid A* length */
 	double anyangle;      /* visibility-graph (Euclidean) optimum */
 	double rope;          /* the A* path, rope-tightened */
-	double skeleton;      /* SKELETON: the skeleton planner's path */
-	double skeleton_rope; /* SKELETON: the same, rope-tightened */
-	double astar_ms, anyangle_ms, rope_ms;
-	int64_t astar_expanded, anyangle_expanded;
+	double skeleton;      /* the skeleton planner's path (pathgraph, S' and D') */
+	double skeleton_rope; /* the same, rope-tightened */
+	double astar_ms, anyangle_ms, rope_ms, skeleton_ms;
+	int64_t astar_expanded, anyangle_expanded, skeleton_expanded;
 	int astar_ok; /* the A* length matches the optimum */
 	int rope_ok;  /* the rope is free, keeps its ends, is not longer */
+	/* The skeleton planner's outcome: it found a path where A* did, and rope_tighten
+	 * accepted it (SKEL_OK), or which of the two failed. */
+	enum { SKEL_OK, SKEL_NO_PATH, SKEL_ROPE_BAD_INPUT } skeleton_status;
+	int skeleton_rope_ok; /* its rope is free and not longer than it (when made) */
+	int skeleton_over; /* the tightened path is longer than the optimum + 1 square */
 } BenchResult;
 
 /* The per-map state every planner needs, built once per map. */
@@ -78,13 +95,24 @@ typedef struct BenchMap {
 	bool has_visibility; /* built (corners <= the limit) */
 	VisibilityGraph visibility;
 	double visibility_build_ms;
-	/* SKELETON: the distance transform, skeleton and pathgraph of the map, and the
-	 * milliseconds each took to build, go here (built in bench_load, freed in
-	 * bench_unload, printed by bench_print_row). */
+	/* The skeleton planner's per-map state (paper 4.2, 4.3) and the best of
+	 * PATHBENCH_BUILD_REPEAT wall-clock times of each build step, in ms. The skeleton
+	 * time includes its own distance transform (skeleton_compute runs one), as the
+	 * issue's target "skeleton, distance transform included" counts it. */
+	bool has_skeleton;
+	Skeleton skeleton;
+	Pathgraph pathgraph;
+	double edt_ms, skeleton_ms, pathgraph_ms;
 } BenchMap;
 
 /* The corner limit for the visibility graph (--vis-limit). */
 static int32_t bench_vis_limit = VISIBILITY_MAX_VERTICES;
+
+/* --skel-paths K: how many of the pathgraph's best paths the skeleton planner's
+ * figures tighten (1, the default, is what the planner does); at most
+ * PATHBENCH_MAX_SKEL_PATHS, as Yen's method costs a search per node of each path. */
+#define PATHBENCH_MAX_SKEL_PATHS 16
+static int bench_skel_paths = 1;
 
 static double bench_now_ms(void)
 {
@@ -106,9 +134,9 @@ static double bench_cpu_ms(void)
 static void bench_die_usage(void)
 {
 	fprintf(stderr,
-	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] FILE.map FILE.scen\n"
+	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] [--skel-paths K] FILE.map FILE.scen\n"
 	        "       " PATHBENCH_NAME
-	        " --table [--sample N] [--vis-limit N] MAP SCEN [MAP SCEN ...]\n"
+	        " --table [--sample N] [--vis-limit N] [--skel-paths K] MAP SCEN [MAP SCEN ...]\n"
 	        "       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n"
 	        "       " PATHBENCH_NAME " --cspace MAP [MAP ...]\n");
 	exit(2);
@@ -129,11 +157,43 @@ static double bench_median(double *v, int n)
 	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/* The builds of the skeleton planner are repeated and the least time kept: each is a
+ * few ms, done once per map, so one run would mostly measure the machine's noise
+ * (it is shared). The later runs reuse the skeleton's working memory, as a planner
+ * replanning on a screen of one size does. */
+#define PATHBENCH_BUILD_REPEAT 3
+
+/* bench_build_skeleton: the distance transform (timed alone, into a scratch array),
+ * the skeleton and the pathgraph of bm's grid, each the best of
+ * PATHBENCH_BUILD_REPEAT runs. */
+static void bench_build_skeleton(BenchMap *bm)
+{
+	int32_t *dist2 = util_realloc(NULL, (size_t)bm->grid.w * (size_t)bm->grid.h, sizeof *dist2);
+	skeleton_init(&bm->skeleton);
+	pathgraph_init(&bm->pathgraph);
+	bm->edt_ms = bm->skeleton_ms = bm->pathgraph_ms = INFINITY;
+	for (int rep = 0; rep < PATHBENCH_BUILD_REPEAT; rep++) {
+		double t0 = bench_now_ms();
+		skeleton_edt(&bm->grid, dist2);
+		double t1 = bench_now_ms();
+		skeleton_compute(&bm->skeleton, &bm->grid);
+		double t2 = bench_now_ms();
+		pathgraph_build(&bm->pathgraph, &bm->skeleton, &bm->grid);
+		double t3 = bench_now_ms();
+		bm->edt_ms = fmin(bm->edt_ms, t1 - t0);
+		bm->skeleton_ms = fmin(bm->skeleton_ms, t2 - t1);
+		bm->pathgraph_ms = fmin(bm->pathgraph_ms, t3 - t2);
+	}
+	free(dist2);
+	bm->has_skeleton = true;
+}
+
 /* bench_load: reads a map (and its scenarios when scen_path is not NULL) and builds
- * the planners' per-map state (the visibility graph only when with_visibility); on
+ * the planners' per-map state (the visibility graph only when with_visibility, the
+ * skeleton and pathgraph only when with_skeleton); on
  * a bad file prints one line and exits 2. */
 static void bench_load(BenchMap *bm, const char *map_path, const char *scen_path,
-                       bool with_visibility)
+                       bool with_visibility, bool with_skeleton)
 {
 	char err[MOVINGAI_ERROR_SIZE];
 	*bm = (BenchMap){.map_path = map_path, .scen_path = scen_path};
@@ -155,14 +215,18 @@ static void bench_load(BenchMap *bm, const char *map_path, const char *scen_path
 		                     VISIBILITY_FOUND;
 		bm->visibility_build_ms = bench_now_ms() - t0;
 	}
-	/* SKELETON: build the distance transform, skeleton and pathgraph here, timing
-	 * each. */
+	if (with_skeleton)
+		bench_build_skeleton(bm);
 }
 
 static void bench_unload(BenchMap *bm)
 {
 	if (bm->has_visibility)
 		visibility_free(&bm->visibility);
+	if (bm->has_skeleton) {
+		pathgraph_free(&bm->pathgraph);
+		skeleton_free(&bm->skeleton);
+	}
 	gridpath_free(&bm->astar);
 	movingai_scen_free(&bm->scen);
 	grid_free(&bm->grid);
@@ -182,9 +246,123 @@ static int bench_selected(int i, int count, int sample)
 /* The slack allowed when comparing lengths computed along different polylines. */
 #define PATHBENCH_LENGTH_EPS 1e-9
 
-/* bench_run: solves problem i with every planner. */
-static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
+/* The paths one scenario needs, kept between scenarios so that their memory is. */
+typedef struct BenchPaths {
+	Path path, tight;              /* grid A*, then its rope; the any-angle path */
+	Path skeleton, skeleton_tight; /* the skeleton planner's path and its rope */
+	Path alt[PATHBENCH_MAX_SKEL_PATHS]; /* --skel-paths: the pathgraph's K best */
+} BenchPaths;
+
+static void bench_paths_init(BenchPaths *bp)
 {
+	path_init(&bp->path);
+	path_init(&bp->tight);
+	path_init(&bp->skeleton);
+	path_init(&bp->skeleton_tight);
+	for (int k = 0; k < PATHBENCH_MAX_SKEL_PATHS; k++)
+		path_init(&bp->alt[k]);
+}
+
+static void bench_paths_free(BenchPaths *bp)
+{
+	path_free(&bp->path);
+	path_free(&bp->tight);
+	path_free(&bp->skeleton);
+	path_free(&bp->skeleton_tight);
+	for (int k = 0; k < PATHBENCH_MAX_SKEL_PATHS; k++)
+		path_free(&bp->alt[k]);
+}
+
+static void bench_check_skeleton_rope(const BenchMap *bm, const BenchPaths *bp,
+                                      BenchResult *r);
+
+/* bench_run_skeleton_k: --skel-paths K > 1: the K best topologically distinct paths
+ * of the pathgraph (pathgraph_find_paths), each rope-tightened, the shortest rope
+ * kept (and the path it came from). Not what the planner does (it tightens its one
+ * best path); a measure of how many of the bench's long ropes come from the pathgraph
+ * choosing the wrong way round an obstacle. q.ms and q.exp count the K searches, not
+ * the ropes. */
+static void bench_run_skeleton_k(BenchMap *bm, Vec2 s, Vec2 d, BenchPaths *bp, BenchResult *r)
+{
+	double t0 = bench_now_ms();
+	int n = pathgraph_find_paths(&bm->pathgraph, s, d, NULL, bench_skel_paths, bp->alt);
+	r->skeleton_ms = bench_now_ms() - t0;
+	if (n == 0) {
+		r->skeleton_expanded = 0;
+		r->skeleton_status = SKEL_NO_PATH;
+		return;
+	}
+	r->skeleton_expanded = bp->alt[n - 1].expanded;
+	int best = -1;
+	for (int k = 0; k < n; k++) {
+		/* A refused path is reported even when another path's rope is kept. */
+		if (rope_tighten(&bm->grid, &bp->alt[k], &bp->skeleton_tight) != ROPE_OK) {
+			r->skeleton_status = SKEL_ROPE_BAD_INPUT;
+			continue;
+		}
+		double len = path_length(&bp->skeleton_tight);
+		if (best < 0 || len < r->skeleton_rope) {
+			best = k;
+			r->skeleton_rope = len;
+		}
+	}
+	if (best < 0)
+		return;
+	/* Tighten the kept one again, so that the checks see its rope and its path. */
+	path_clear(&bp->skeleton);
+	for (int i = 0; i < bp->alt[best].count; i++)
+		path_push(&bp->skeleton, bp->alt[best].pts[i]);
+	rope_tighten(&bm->grid, &bp->skeleton, &bp->skeleton_tight);
+	r->skeleton = path_length(&bp->skeleton);
+	bench_check_skeleton_rope(bm, bp, r);
+}
+
+/* bench_run_skeleton: the skeleton planner on problem pr: the pathgraph path from the
+ * centre of S's cell to that of D's (through S' and D', paper 4.3), then the same
+ * rope-tightened (paper 5). Only called when A* found a path, so a failure to find
+ * one is the skeleton planner's. */
+static void bench_run_skeleton(BenchMap *bm, const MovingAiProblem *pr, BenchPaths *bp,
+                               BenchResult *r)
+{
+	Vec2 s = vec2(pr->sx + 0.5, pr->sy + 0.5), d = vec2(pr->gx + 0.5, pr->gy + 0.5);
+	if (bench_skel_paths > 1) {
+		bench_run_skeleton_k(bm, s, d, bp, r);
+		return;
+	}
+	double t0 = bench_now_ms();
+	bool found = pathgraph_find_path(&bm->pathgraph, s, d, NULL, &bp->skeleton);
+	r->skeleton_ms = bench_now_ms() - t0;
+	r->skeleton_expanded = bp->skeleton.expanded;
+	if (!found) {
+		r->skeleton_status = SKEL_NO_PATH;
+		return;
+	}
+	r->skeleton = path_length(&bp->skeleton);
+	if (rope_tighten(&bm->grid, &bp->skeleton, &bp->skeleton_tight) != ROPE_OK) {
+		r->skeleton_status = SKEL_ROPE_BAD_INPUT;
+		return;
+	}
+	r->skeleton_rope = path_length(&bp->skeleton_tight);
+	bench_check_skeleton_rope(bm, bp, r);
+}
+
+/* bench_check_skeleton_rope: the checks on the rope in bp->skeleton_tight of the path
+ * bp->skeleton, whose lengths are in r. */
+static void bench_check_skeleton_rope(const BenchMap *bm, const BenchPaths *bp,
+                                      BenchResult *r)
+{
+	/* The same checks as for the A* path's rope: free, not longer than its input. */
+	r->skeleton_rope_ok = r->skeleton_rope <= r->skeleton + PATHBENCH_LENGTH_EPS &&
+	                      visibility_path_free(&bm->grid, &bp->skeleton_tight);
+	/* The issue's target: never longer than the grid optimum (A*'s exact length,
+	 * which matches the published one) plus one square. */
+	r->skeleton_over = r->skeleton_rope > r->astar + 1 + PATHBENCH_LENGTH_EPS;
+}
+
+/* bench_run: solves problem i with every planner. */
+static BenchResult bench_run(BenchMap *bm, int i, BenchPaths *bp)
+{
+	Path *path = &bp->path, *tight = &bp->tight;
 	const MovingAiProblem *pr = &bm->scen.problems[i];
 	BenchResult r = {.optimum = pr->optimum,
 	                 .anyangle = -1,
@@ -194,7 +372,10 @@ static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
 	                 .anyangle_ms = -1,
 	                 .rope_ms = -1,
 	                 .anyangle_expanded = -1,
-	                 .rope_ok = 1};
+	                 .skeleton_ms = -1,
+	                 .skeleton_expanded = -1,
+	                 .rope_ok = 1,
+	                 .skeleton_rope_ok = 1};
 	double t0 = bench_now_ms();
 	GridPathStatus st =
 	    gridpath_find(&bm->astar, pr->sx, pr->sy, pr->gx, pr->gy, path, &r.astar);
@@ -224,11 +405,13 @@ static BenchResult bench_run(BenchMap *bm, int i, Path *path, Path *tight)
 		    r.anyangle > r.rope + PATHBENCH_LENGTH_EPS)
 			r.rope_ok = 0;
 	}
-	/* SKELETON: the skeleton planner's query (S' and D', the pathgraph search, the
-	 * skeleton path) into r.skeleton with its time and vertices expanded, then
-	 * rope_tighten of that path into r.skeleton_rope (the issue's targets: median
-	 * r.skeleton_rope / r.anyangle <= 1.01, r.skeleton_rope <= r.optimum + 1); add
-	 * their columns to the enum COL_... and to bench_table. */
+	if (bm->has_skeleton && st == GRIDPATH_FOUND) {
+		bench_run_skeleton(bm, pr, bp, &r);
+		/* ... and, like any path, the rope is no shorter than the any-angle optimum. */
+		if (r.skeleton_rope >= 0 && r.anyangle >= 0 &&
+		    r.anyangle > r.skeleton_rope + PATHBENCH_LENGTH_EPS)
+			r.skeleton_rope_ok = 0;
+	}
 	return r;
 }
 
@@ -244,7 +427,45 @@ static int bench_report(const BenchMap *bm, int i, const BenchResult *r)
 		        PATHBENCH_NAME ": %s:%d: rope-tightening failed its checks (A* %.6f, "
 		                       "rope %.6f, any-angle %.6f)\n",
 		        bm->scen_path, line, r->astar, r->rope, r->anyangle);
-	return !r->astar_ok || !r->rope_ok;
+	if (!r->skeleton_rope_ok)
+		fprintf(stderr,
+		        PATHBENCH_NAME ": %s:%d: rope-tightening of the skeleton path failed its "
+		                       "checks (skeleton %.6f, rope %.6f, any-angle %.6f)\n",
+		        bm->scen_path, line, r->skeleton, r->skeleton_rope, r->anyangle);
+	return !r->astar_ok || !r->rope_ok || !r->skeleton_rope_ok;
+}
+
+/* Two ropes whose lengths differ by less than this are taken to be in the same
+ * homotopy class (one class has one shortest path; different classes, on these maps,
+ * differ by far more than rounding). */
+#define PATHBENCH_HOMOTOPY_EPS 1e-6
+
+/* bench_report_skeleton: the skeleton planner's shortfalls against the issue's
+ * targets, on stderr, one line each: not errors of the program (the exit status does
+ * not change), but every one is printed and counted, never hidden. */
+static void bench_report_skeleton(const BenchMap *bm, int i, const BenchResult *r)
+{
+	int line = (int)bm->scen.problems[i].line;
+	if (r->skeleton_status == SKEL_NO_PATH)
+		fprintf(stderr, PATHBENCH_NAME ": %s:%d: skeleton planner found no path (A* %.6f)\n",
+		        bm->scen_path, line, r->astar);
+	else if (r->skeleton_status == SKEL_ROPE_BAD_INPUT)
+		fprintf(stderr,
+		        PATHBENCH_NAME ": %s:%d: rope_tighten refused the skeleton path (not free "
+		                       "by visibility_path_free; skeleton %.6f)\n",
+		        bm->scen_path, line, r->skeleton);
+	else if (r->skeleton_over)
+		/* The A* path's rope is the shortest path of the optimum's homotopy class (or
+		 * of one as short): a skeleton rope longer than it went round some obstacle
+		 * on the other side, which no tightening can undo. */
+		fprintf(stderr,
+		        PATHBENCH_NAME ": %s:%d: tightened skeleton path %.6f > grid optimum "
+		                       "%.6f + 1 (skeleton %.6f, A* rope %.6f, any-angle %.6f): %s\n",
+		        bm->scen_path, line, r->skeleton_rope, r->astar, r->skeleton, r->rope,
+		        r->anyangle,
+		        r->rope >= 0 && r->skeleton_rope > r->rope + PATHBENCH_HOMOTOPY_EPS
+		            ? "another homotopy class"
+		            : "same length as the A* rope");
 }
 
 /* bench_length: a length, or "-" when not computed, in a fixed-width column. */
@@ -263,10 +484,9 @@ static void bench_print_length(double v)
 static int bench_lines(const char *map_path, const char *scen_path, int sample)
 {
 	BenchMap bm;
-	bench_load(&bm, map_path, scen_path, true);
-	Path path, tight;
-	path_init(&path);
-	path_init(&tight);
+	bench_load(&bm, map_path, scen_path, true, true);
+	BenchPaths bp;
+	bench_paths_init(&bp);
 	printf("# map %s: %d x %d, %lld free cells, %d corners; %d scenarios\n", map_path,
 	       (int)bm.grid.w, (int)bm.grid.h, (long long)bm.free_cells, (int)bm.corners,
 	       bm.scen.count);
@@ -278,7 +498,7 @@ static int bench_lines(const char *map_path, const char *scen_path, int sample)
 	for (int i = 0; i < bm.scen.count; i++) {
 		if (!bench_selected(i, bm.scen.count, sample))
 			continue;
-		BenchResult r = bench_run(&bm, i, &path, &tight);
+		BenchResult r = bench_run(&bm, i, &bp);
 		printf("%7d %6d", i, (int)bm.scen.problems[i].bucket);
 		bench_print_length(r.optimum);
 		bench_print_length(r.astar);
@@ -286,11 +506,16 @@ static int bench_lines(const char *map_path, const char *scen_path, int sample)
 		bench_print_length(r.rope);
 		bench_print_length(r.skeleton);
 		bench_print_length(r.skeleton_rope);
-		printf("%s%s\n", r.astar_ok ? "" : "  MISSED", r.rope_ok ? "" : "  ROPE-FAILED");
+		printf("%s%s%s%s\n", r.astar_ok ? "" : "  MISSED",
+		       r.rope_ok && r.skeleton_rope_ok ? "" : "  ROPE-FAILED",
+		       r.skeleton_status == SKEL_NO_PATH          ? "  SKEL-NO-PATH"
+		       : r.skeleton_status == SKEL_ROPE_BAD_INPUT ? "  SKEL-ROPE-REFUSED"
+		                                                  : "",
+		       r.skeleton_over ? "  SKEL>OPT+1" : "");
 		failed += bench_report(&bm, i, &r);
+		bench_report_skeleton(&bm, i, &r);
 	}
-	path_free(&path);
-	path_free(&tight);
+	bench_paths_free(&bp);
 	bench_unload(&bm);
 	return failed ? 1 : 0;
 }
@@ -333,37 +558,57 @@ static double bench_column_median(BenchColumn *c)
 }
 
 enum {
-	COL_ASTAR_MS,       /* grid A* query time */
-	COL_ASTAR_EXP,      /* cells A* expanded */
-	COL_VIS_BUILD_MS,   /* visibility graph build, one value per map */
-	COL_VIS_MS,         /* visibility query time */
-	COL_VIS_EXP,        /* visibility nodes expanded */
-	COL_ANY_OVER_OPT,   /* any-angle optimum / published 8-connected optimum */
-	COL_ROPE_MS,        /* rope-tightening time */
-	COL_ROPE_OVER_OPT,  /* rope-tightened A* / published optimum */
-	COL_ROPE_OVER_ANY,  /* rope-tightened A* / any-angle optimum */
-	COL_ROPE_MINUS_OPT, /* rope-tightened A* - published optimum (the issue's
-	                       "never longer than the grid optimum + 1") */
+	COL_ASTAR_MS,        /* grid A* query time */
+	COL_ASTAR_EXP,       /* cells A* expanded */
+	COL_VIS_BUILD_MS,    /* visibility graph build, one value per map */
+	COL_VIS_MS,          /* visibility query time */
+	COL_VIS_EXP,         /* visibility nodes expanded */
+	COL_ANY_OVER_OPT,    /* any-angle optimum / published 8-connected optimum */
+	COL_ROPE_MS,         /* rope-tightening time */
+	COL_ROPE_OVER_OPT,   /* rope-tightened A* / published optimum */
+	COL_ROPE_OVER_ANY,   /* rope-tightened A* / any-angle optimum */
+	COL_ROPE_MINUS_OPT,  /* rope-tightened A* - published optimum (the issue's
+	                        "never longer than the grid optimum + 1") */
+	COL_EDT_MS,          /* distance transform, one value per map */
+	COL_SKEL_MS,         /* skeleton (its distance transform included), per map */
+	COL_PG_MS,           /* pathgraph build, per map */
+	COL_Q_MS,            /* pathgraph query (S', D', A* on the pathgraph, the path) */
+	COL_Q_EXP,           /* pathgraph vertices the query expanded */
+	COL_EXP_RATIO,       /* A* cells expanded / pathgraph vertices expanded */
+	COL_SK_OVER_OPT,     /* skeleton path / published optimum */
+	COL_SKR_OVER_OPT,    /* tightened skeleton path / published optimum */
+	COL_SK_OVER_ANY,     /* skeleton path / any-angle optimum */
+	COL_SKR_OVER_ANY,    /* tightened skeleton path / any-angle optimum */
+	COL_SKR_MINUS_ASTAR, /* tightened skeleton path - grid optimum (target <= 1) */
 	COL_COUNT
 };
 
+/* The counts of a row: scenarios run, A* matches, and the skeleton planner's
+ * shortfalls (each also printed on stderr by bench_report_skeleton). */
+typedef struct BenchCounts {
+	int run, ok;
+	int over;      /* tightened skeleton path longer than the grid optimum + 1 */
+	int skel_fail; /* no skeleton path, or rope_tighten refused it */
+} BenchCounts;
+
 /* The table: one row per scenario file, every figure a median over the scenarios
- * run, except vis.V (the corners), vis.build (once per map) and the .max columns. */
+ * run, except vis.V (the corners), the build times (once per map; in the last row,
+ * the median over the maps) and the .mx columns (maxima). */
 static void bench_print_header(void)
 {
 	printf("%-32s %9s %8s %5s %4s %7s %7s | %6s %9s %7s %6s %7s | %7s %8s %8s %8s %8s"
-	       " | skel: %5s %5s %5s %5s %5s %6s %7s %7s\n",
+	       " | skel: %6s %6s %6s %6s %6s %7s | %7s %7s %7s %7s %8s %8s %5s %4s\n",
 	       "map", "size", "cells", "run", "A*ok", "A*.ms", "A*.exp", "vis.V", "vis.build",
 	       "vis.ms", "vis.ex", "any/opt", "rope.ms", "rope/opt", "rope/any", "r/any.mx",
-	       "r-opt.mx", "dt.ms", "sk.ms", "pg.ms", "q.ms", "q.exp", "sk/any", "skr/any",
-	       "skr-opt");
+	       "r-opt.mx", "dt.ms", "sk.ms", "pg.ms", "q.ms", "q.exp", "A*/q", "sk/opt",
+	       "skr/opt", "sk/any", "skr/any", "skr/a.mx", "skr-o.mx", ">o+1", "fail");
 }
 
-static void bench_print_row(const char *name, const char *size, int64_t cells, int run, int ok,
-                            double corners, BenchColumn col[COL_COUNT])
+static void bench_print_row(const char *name, const char *size, int64_t cells,
+                            const BenchCounts *n, double corners, BenchColumn col[COL_COUNT])
 {
-	printf("%-32s %9s %8lld %5d %4s", name, size, (long long)cells, run,
-	       ok == run ? "all" : "MISS");
+	printf("%-32s %9s %8lld %5d %4s", name, size, (long long)cells, n->run,
+	       n->ok == n->run ? "all" : "MISS");
 	bench_print_value(7, 2, bench_column_median(&col[COL_ASTAR_MS]));
 	bench_print_value(7, 0, bench_column_median(&col[COL_ASTAR_EXP]));
 	printf(" |");
@@ -379,10 +624,20 @@ static void bench_print_row(const char *name, const char *size, int64_t cells, i
 	bench_print_value(8, 4, bench_column_max(&col[COL_ROPE_OVER_ANY]));
 	bench_print_value(8, 4, bench_column_max(&col[COL_ROPE_MINUS_OPT]));
 	printf(" |      ");
-	/* SKELETON: distance transform, skeleton and pathgraph build (ms, per map), query
-	 * ms and vertices expanded, skeleton / any-angle, tightened skeleton / any-angle,
-	 * tightened skeleton - grid optimum (max). */
-	printf(" %5s %5s %5s %5s %5s %6s %7s %7s\n", "-", "-", "-", "-", "-", "-", "-", "-");
+	bench_print_value(6, 2, bench_column_median(&col[COL_EDT_MS]));
+	bench_print_value(6, 2, bench_column_median(&col[COL_SKEL_MS]));
+	bench_print_value(6, 2, bench_column_median(&col[COL_PG_MS]));
+	bench_print_value(6, 3, bench_column_median(&col[COL_Q_MS]));
+	bench_print_value(6, 0, bench_column_median(&col[COL_Q_EXP]));
+	bench_print_value(7, 1, bench_column_median(&col[COL_EXP_RATIO]));
+	printf(" |");
+	bench_print_value(7, 4, bench_column_median(&col[COL_SK_OVER_OPT]));
+	bench_print_value(7, 4, bench_column_median(&col[COL_SKR_OVER_OPT]));
+	bench_print_value(7, 4, bench_column_median(&col[COL_SK_OVER_ANY]));
+	bench_print_value(7, 4, bench_column_median(&col[COL_SKR_OVER_ANY]));
+	bench_print_value(8, 4, bench_column_max(&col[COL_SKR_OVER_ANY]));
+	bench_print_value(8, 3, bench_column_max(&col[COL_SKR_MINUS_ASTAR]));
+	printf(" %5d %4d\n", n->over, n->skel_fail);
 }
 
 static const char *bench_basename(const char *path)
@@ -391,52 +646,100 @@ static const char *bench_basename(const char *path)
 	return s ? s + 1 : path;
 }
 
+/* bench_ratio(a, b): a / b, or NAN when either is not computed (negative) or b is 0. */
+static double bench_ratio(double a, double b)
+{
+	return a >= 0 && b > 0 ? a / b : NAN;
+}
+
+/* bench_columns: one scenario's values, NAN where not computed. */
+static void bench_columns(const BenchResult *r, double v[COL_COUNT])
+{
+	bool any = r->anyangle >= 0, rope = r->rope >= 0, skel = r->skeleton_ms >= 0;
+	for (int c = 0; c < COL_COUNT; c++)
+		v[c] = NAN;
+	v[COL_ASTAR_MS] = r->astar_ms;
+	v[COL_ASTAR_EXP] = (double)r->astar_expanded;
+	v[COL_VIS_MS] = any ? r->anyangle_ms : NAN;
+	v[COL_VIS_EXP] = any ? (double)r->anyangle_expanded : NAN;
+	v[COL_ANY_OVER_OPT] = bench_ratio(r->anyangle, r->optimum);
+	v[COL_ROPE_MS] = rope ? r->rope_ms : NAN;
+	v[COL_ROPE_OVER_OPT] = bench_ratio(r->rope, r->optimum);
+	v[COL_ROPE_OVER_ANY] = any ? bench_ratio(r->rope, r->anyangle) : NAN;
+	v[COL_ROPE_MINUS_OPT] = rope ? r->rope - r->optimum : NAN;
+	v[COL_Q_MS] = skel ? r->skeleton_ms : NAN;
+	v[COL_Q_EXP] = skel ? (double)r->skeleton_expanded : NAN;
+	/* A query that expands no vertex (S' and D' on one edge) has no finite ratio. */
+	v[COL_EXP_RATIO] =
+	    skel && r->skeleton_expanded > 0
+	        ? (double)r->astar_expanded / (double)r->skeleton_expanded
+	        : NAN;
+	v[COL_SK_OVER_OPT] = bench_ratio(r->skeleton, r->optimum);
+	v[COL_SKR_OVER_OPT] = bench_ratio(r->skeleton_rope, r->optimum);
+	v[COL_SK_OVER_ANY] = any ? bench_ratio(r->skeleton, r->anyangle) : NAN;
+	v[COL_SKR_OVER_ANY] = any ? bench_ratio(r->skeleton_rope, r->anyangle) : NAN;
+	v[COL_SKR_MINUS_ASTAR] = r->skeleton_rope >= 0 ? r->skeleton_rope - r->astar : NAN;
+}
+
+/* bench_map_columns: the values built once per map (a single value each). */
+static void bench_map_columns(const BenchMap *bm, double v[COL_COUNT])
+{
+	for (int c = 0; c < COL_COUNT; c++)
+		v[c] = NAN;
+	if (bm->has_visibility)
+		v[COL_VIS_BUILD_MS] = bm->visibility_build_ms;
+	if (bm->has_skeleton) {
+		v[COL_EDT_MS] = bm->edt_ms;
+		v[COL_SKEL_MS] = bm->skeleton_ms;
+		v[COL_PG_MS] = bm->pathgraph_ms;
+	}
+}
+
+static void bench_columns_add(BenchColumn *col, BenchColumn *all, const double v[COL_COUNT])
+{
+	for (int c = 0; c < COL_COUNT; c++) {
+		bench_column_add(&col[c], v[c]);
+		bench_column_add(&all[c], v[c]);
+	}
+}
+
+static void bench_counts_add(BenchCounts *n, const BenchResult *r)
+{
+	n->run++;
+	n->ok += r->astar_ok;
+	n->over += r->skeleton_over;
+	n->skel_fail += r->skeleton_ms >= 0 && r->skeleton_status != SKEL_OK;
+}
+
 static int bench_table(int argc, char **argv, int sample)
 {
 	if (argc < 2 || argc % 2 != 0)
 		bench_die_usage();
 	BenchColumn all[COL_COUNT] = {{0}};
-	int all_run = 0, all_ok = 0, failed = 0;
+	BenchCounts all_n = {0};
+	int failed = 0;
 	int64_t all_cells = 0;
 	bench_print_header();
-	Path path, tight;
-	path_init(&path);
-	path_init(&tight);
+	BenchPaths bp;
+	bench_paths_init(&bp);
 	for (int m = 0; m < argc; m += 2) {
 		BenchMap bm;
-		bench_load(&bm, argv[m], argv[m + 1], true);
+		bench_load(&bm, argv[m], argv[m + 1], true, true);
 		BenchColumn col[COL_COUNT] = {{0}};
-		int run = 0, ok = 0;
-		if (bm.has_visibility) {
-			bench_column_add(&col[COL_VIS_BUILD_MS], bm.visibility_build_ms);
-			bench_column_add(&all[COL_VIS_BUILD_MS], bm.visibility_build_ms);
-		}
+		BenchCounts n = {0};
+		double v[COL_COUNT];
+		bench_map_columns(&bm, v);
+		bench_columns_add(col, all, v);
 		for (int i = 0; i < bm.scen.count; i++) {
 			if (!bench_selected(i, bm.scen.count, sample))
 				continue;
-			BenchResult r = bench_run(&bm, i, &path, &tight);
-			run++;
-			ok += r.astar_ok;
+			BenchResult r = bench_run(&bm, i, &bp);
 			failed += bench_report(&bm, i, &r);
-			bool any = r.anyangle >= 0, rope = r.rope >= 0;
-			double v[COL_COUNT] = {
-			    [COL_ASTAR_MS] = r.astar_ms,
-			    [COL_ASTAR_EXP] = (double)r.astar_expanded,
-			    [COL_VIS_BUILD_MS] = NAN,
-			    [COL_VIS_MS] = any ? r.anyangle_ms : NAN,
-			    [COL_VIS_EXP] = any ? (double)r.anyangle_expanded : NAN,
-			    [COL_ANY_OVER_OPT] =
-			        any && r.optimum > 0 ? r.anyangle / r.optimum : NAN,
-			    [COL_ROPE_MS] = rope ? r.rope_ms : NAN,
-			    [COL_ROPE_OVER_OPT] = rope && r.optimum > 0 ? r.rope / r.optimum : NAN,
-			    [COL_ROPE_OVER_ANY] =
-			        rope && any && r.anyangle > 0 ? r.rope / r.anyangle : NAN,
-			    [COL_ROPE_MINUS_OPT] = rope ? r.rope - r.optimum : NAN,
-			};
-			for (int c = 0; c < COL_COUNT; c++) {
-				bench_column_add(&col[c], v[c]);
-				bench_column_add(&all[c], v[c]);
-			}
+			bench_report_skeleton(&bm, i, &r);
+			bench_counts_add(&n, &r);
+			bench_counts_add(&all_n, &r);
+			bench_columns(&r, v);
+			bench_columns_add(col, all, v);
 		}
 		char size[32];
 		snprintf(size, sizeof size, "%dx%d", (int)bm.grid.w, (int)bm.grid.h);
@@ -446,22 +749,27 @@ static int bench_table(int argc, char **argv, int sample)
 		for (char *dot; (dot = strrchr(name, '.')) &&
 		                (strcmp(dot, ".scen") == 0 || strcmp(dot, ".map") == 0);)
 			*dot = '\0';
-		bench_print_row(name, size, bm.free_cells, run, ok, (double)bm.corners, col);
+		fflush(stderr);
+		bench_print_row(name, size, bm.free_cells, &n, (double)bm.corners, col);
 		fflush(stdout);
 		for (int c = 0; c < COL_COUNT; c++)
 			free(col[c].v);
-		all_run += run;
-		all_ok += ok;
 		all_cells += bm.free_cells;
 		bench_unload(&bm);
 	}
-	bench_print_row("MEDIAN (all scenarios run)", "", all_cells, all_run, all_ok, NAN, all);
+	bench_print_row("MEDIAN (all scenarios run)", "", all_cells, &all_n, NAN, all);
 	for (int c = 0; c < COL_COUNT; c++)
 		free(all[c].v);
-	path_free(&path);
-	path_free(&tight);
+	bench_paths_free(&bp);
 	printf("# any-angle columns only where the map has at most %d corners (--vis-limit)\n",
 	       (int)bench_vis_limit);
+	printf("# skel: dt.ms, sk.ms (distance transform included), pg.ms: best of %d builds "
+	       "per map; q.ms, q.exp: the pathgraph query;\n"
+	       "#   A*/q: A* cells expanded / pathgraph vertices expanded, per scenario; "
+	       "skr = the skeleton path rope-tightened;\n"
+	       "#   skr-o.mx: the largest skr minus the grid optimum; >o+1: scenarios where "
+	       "skr > grid optimum + 1; fail: no path or rope refused (stderr)\n",
+	       PATHBENCH_BUILD_REPEAT);
 	return failed ? 1 : 0;
 }
 
@@ -509,7 +817,7 @@ static int bench_corner(int argc, char **argv, int scale)
 	path_init(&path);
 	for (int m = 0; m < argc; m++) {
 		BenchMap bm;
-		bench_load(&bm, argv[m], NULL, false);
+		bench_load(&bm, argv[m], NULL, false, false);
 		if (scale > 1) {
 			gridpath_free(&bm.astar);
 			bench_scale(&bm.grid, scale);
@@ -592,7 +900,7 @@ static int bench_cspace(int argc, char **argv)
 	printf("   L 6x4 (free)   ms\n");
 	for (int m = 0; m < argc; m++) {
 		BenchMap bm;
-		bench_load(&bm, argv[m], NULL, false);
+		bench_load(&bm, argv[m], NULL, false, false);
 		Grid out;
 		grid_init(&out, bm.grid.w, bm.grid.h, GRID_BLOCKED);
 		char name[64], size[32];
@@ -627,7 +935,8 @@ int main(int argc, char **argv)
 		else if (strcmp(argv[a], "--cspace") == 0)
 			cspace = 1;
 		else if ((strcmp(argv[a], "--sample") == 0 || strcmp(argv[a], "--scale") == 0 ||
-		          strcmp(argv[a], "--vis-limit") == 0) &&
+		          strcmp(argv[a], "--vis-limit") == 0 ||
+		          strcmp(argv[a], "--skel-paths") == 0) &&
 		         a + 1 < argc) {
 			char *end;
 			long v = strtol(argv[a + 1], &end, 10);
@@ -640,6 +949,11 @@ int main(int argc, char **argv)
 				sample = (int)v;
 			else if (strcmp(argv[a], "--scale") == 0)
 				scale = (int)v;
+			else if (strcmp(argv[a], "--skel-paths") == 0) {
+				if (v > PATHBENCH_MAX_SKEL_PATHS)
+					bench_die_usage();
+				bench_skel_paths = (int)v;
+			}
 			else
 				bench_vis_limit = (int32_t)v;
 			a++;

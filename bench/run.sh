@@ -2,19 +2,25 @@
 # run.sh - `make bench`: the path-finding benchmark (paper 4.1 and 5) over every
 # Moving AI map in ../shared/data/movingai (the data sits beside the repository).
 #
-# Prints three tables: (1) per scenario file, grid A* against the published optima
+# Prints five tables: (1) per scenario file, grid A* against the published optima
 # (a check: any miss makes this script fail), the visibility-graph any-angle optimum
-# (on every map with at most VISIBILITY_MAX_VERTICES corners: all of them here)
-# and the rope-tightened A* path, with times and expansions; (2) grid A* corner to
-# corner on the 1024 x 1024 maps (Boston, and the three 512 x 512 maps enlarged
-# twice), the figure the issue compares with libtcod; (3) configuration-space
-# erosion times. PATHBENCH_SAMPLE scenarios of each file, evenly spaced, are run,
-# so the whole takes about a minute of CPU, two of wall time on the shared 2-core
-# machine (most of it building the visibility graphs of Boston_0_1024 and
-# random512-10-0).
+# (on every map with at most VISIBILITY_MAX_VERTICES corners: all of them here),
+# the rope-tightened A* path, and the skeleton planner (distance transform,
+# skeleton, pathgraph, query, its path before and after rope-tightening), with
+# times and expansions; (2) grid A* corner to corner on the 1024 x 1024 maps
+# (Boston, and the three 512 x 512 maps enlarged twice), the figure the issue
+# compares with libtcod; (3) configuration-space erosion times; (4) skelbench: the
+# distance transform, skeleton, pathgraph and a corner-to-corner query on synthetic
+# rooms, random rectangles and a maze of 1024 to 4096 cells a side (linear growth)
+# and on Boston_0_1024; (5) tablebench: loading a 4096 x 4096 TABLE.
+# PATHBENCH_SAMPLE scenarios of each file, evenly spaced, are run, so the whole
+# takes about a minute and a half of CPU, two and a half of wall time on the shared
+# 2-core machine (most of it building the visibility graphs of Boston_0_1024 and
+# random512-10-0, and skelbench's 4096 x 4096 grids).
 set -u
 data=${MOVINGAI:-../shared/data/movingai}
 bin=${PATHBENCH:-build/rel/bench/pathbench}
+benchdir=$(dirname "$bin")
 sample=${PATHBENCH_SAMPLE:-400}
 if [ ! -d "$data/maps" ] || [ ! -d "$data/scenarios" ]; then
 	echo "bench/run.sh: $data: no Moving AI data (maps/ and scenarios/)" >&2
@@ -46,4 +52,10 @@ echo
 echo "== configuration-space erosion"
 "$bin" --cspace "$data/maps/cities/Boston_0_1024.map" "$data/maps/rooms/8room_000.map" \
 	"$data/maps/mazes/maze512-1-0.map" "$data/maps/random/random512-10-0.map" || st=1
+echo
+echo "== skelbench 3 4096: skeleton planner on synthetic grids and Boston_0_1024 (CPU ms)"
+"$benchdir/skelbench" 3 4096 "$data/maps/cities/Boston_0_1024.map" || st=1
+echo
+echo "== tablebench: a 4096 x 4096 TABLE with 200 objects"
+"$benchdir/tablebench" || st=1
 exit $st

@@ -13,7 +13,17 @@
  * 3): the least disturbed by the rest of the machine. The first run of a size also pays
  * for first touching its memory; the later runs reuse the skeleton's working memory,
  * as a planner that recomputes the skeleton of a screen of one size would. The query runs from near
- * one corner to near the opposite one and reports the pathgraph vertices it expanded. */
+ * one corner to near the opposite one and reports the pathgraph vertices it expanded.
+ *
+ *   skelbench --compare DIR [MAP...]
+ * The utak side of `make bench-compare` (bench/compare.py): writes the 1024 x 1024
+ * rooms, rects and maze grids and each MAP into DIR as NAME.pgm (binary PGM, 255 free,
+ * 0 blocked, first row y = 0) with NAME.d2 (the distance transform: w h int32_t dist2
+ * values, native byte order, for compare.py to check OpenCV's against), and prints one
+ * line per grid, "grid NAME W H EDT_MS SKEL_MS SKEL_CELLS", the best of
+ * SKELBENCH_COMPARE_REPEAT runs of skeleton_edt and of skeleton_compute (its own
+ * distance transform included), thread CPU time as above. compare.py times the peers
+ * on the same files in the same run. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -351,8 +361,93 @@ static bool bench_load_map(const char *path, Grid *g)
 	return true;
 }
 
+/* Runs per figure in --compare mode; compare.py takes the best of as many. */
+#define SKELBENCH_COMPARE_REPEAT 3
+
+/* bench_write_compare(dir, name, g): the grid as DIR/NAME.pgm, its distance transform
+ * as DIR/NAME.d2, and the line of times (see --compare above). False when a file
+ * cannot be written. */
+static bool bench_write_compare(const char *dir, const char *name, const Grid *g)
+{
+	const size_t n = (size_t)g->w * g->h;
+	char path[4096];
+	snprintf(path, sizeof path, "%s/%s.pgm", dir, name);
+	FILE *f = fopen(path, "wb");
+	if (!f)
+		return false;
+	fprintf(f, "P5\n%d %d\n255\n", (int)g->w, (int)g->h);
+	for (size_t i = 0; i < n; i++)
+		fputc(g->cells[i] == GRID_FREE ? 255 : 0, f);
+	if (fclose(f) != 0)
+		return false;
+	int32_t *d2 = malloc(sizeof *d2 * n);
+	Skeleton s;
+	skeleton_init(&s);
+	double t_edt = HUGE_VAL, t_skel = HUGE_VAL;
+	for (int r = 0; r < SKELBENCH_COMPARE_REPEAT; r++) {
+		double t0 = bench_now_ms();
+		skeleton_edt(g, d2);
+		double t1 = bench_now_ms();
+		skeleton_compute(&s, g);
+		double t2 = bench_now_ms();
+		t_edt = fmin(t_edt, t1 - t0);
+		t_skel = fmin(t_skel, t2 - t1);
+	}
+	snprintf(path, sizeof path, "%s/%s.d2", dir, name);
+	f = fopen(path, "wb");
+	bool ok = f && fwrite(d2, sizeof *d2, n, f) == n;
+	ok = f && fclose(f) == 0 && ok;
+	printf("grid %s %d %d %.3f %.3f %d\n", name, (int)g->w, (int)g->h, t_edt, t_skel,
+	       (int)s.count);
+	fflush(stdout);
+	skeleton_free(&s);
+	free(d2);
+	return ok;
+}
+
+/* bench_compare(dir, maps, count): --compare (see the top of the file). */
+static int bench_compare(const char *dir, char **maps, int count)
+{
+	static const char *const names[] = {"rooms", "rects", "maze"};
+	void (*const make[])(Grid *, int32_t) = {bench_rooms, bench_rects, bench_maze};
+	for (int k = 0; k < 3; k++) {
+		Grid g;
+		bench_seed = 2026;
+		make[k](&g, 1024);
+		bool ok = bench_write_compare(dir, names[k], &g);
+		grid_free(&g);
+		if (!ok) {
+			fprintf(stderr, "skelbench: %s: cannot write the files of %s\n", dir, names[k]);
+			return 2;
+		}
+	}
+	for (int k = 0; k < count; k++) {
+		Grid g;
+		if (!bench_load_map(maps[k], &g)) {
+			fprintf(stderr, "skelbench: %s: not a readable .map file\n", maps[k]);
+			return 2;
+		}
+		/* The name without directory and ".map". */
+		char name[256];
+		const char *base = strrchr(maps[k], '/');
+		snprintf(name, sizeof name, "%s", base ? base + 1 : maps[k]);
+		char *dot = strrchr(name, '.');
+		if (dot && strcmp(dot, ".map") == 0)
+			*dot = '\0';
+		bool ok = bench_write_compare(dir, name, &g);
+		grid_free(&g);
+		if (!ok) {
+			fprintf(stderr, "skelbench: %s: cannot write the files of %s\n", dir, name);
+			return 2;
+		}
+	}
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
+	if (argc > 2 && strcmp(argv[1], "--compare") == 0)
+		return bench_compare(argv[2], argv + 3, argc - 3);
 	int repeats = argc > 1 ? atoi(argv[1]) : 3;
 	int32_t largest = argc > 2 ? atoi(argv[2]) : 4096;
 	if (repeats < 1)

@@ -46,12 +46,7 @@
 #include <string.h>
 
 #include "utak/util.h"
-
-/* Two events of the line test closer than this (in the segment's parameter, 0..1) are
- * one event: a segment through a lattice corner crosses its two grid lines at the same
- * parameter, computed twice with rounding. 1e-9 is far above the rounding of grids up
- * to SKELETON_MAX_SIDE and far below the gap between two real crossings (1 / length). */
-#define PATHGRAPH_T_EPS 1e-9
+#include "utak/visibility.h"
 
 /* The length of a diagonal step (M_SQRT2 is not in C11). */
 #define PATHGRAPH_SQRT2 1.41421356237309504880
@@ -116,81 +111,14 @@ struct PathgraphScratch {
 
 /* ---------------------------------------------------------------- the line test */
 
-static bool pathgraph_blocked(const Grid *g, int64_t x, int64_t y)
-{
-	return !(x >= 0 && y >= 0 && x < g->w && y < g->h && g->cells[y * g->w + x] == GRID_FREE);
-}
-
-/* pathgraph_corner_ok(g, X, Y): the lattice corner (X, Y) is not shared by two
- * diagonally touching blocked cells. */
-static bool pathgraph_corner_ok(const Grid *g, int64_t X, int64_t Y)
-{
-	bool sw = pathgraph_blocked(g, X - 1, Y - 1), ne = pathgraph_blocked(g, X, Y);
-	bool se = pathgraph_blocked(g, X, Y - 1), nw = pathgraph_blocked(g, X - 1, Y);
-	return !(sw && ne) && !(se && nw);
-}
-
-/* pathgraph_piece_free(g, a, d, on_x_line, on_y_line, t0, t1): the open piece of the
- * segment a + t d for t in (t0, t1), which crosses no grid line, is free: it lies in
- * one cell, or (when the segment runs along a grid line) on one cell edge. */
-static bool pathgraph_piece_free(const Grid *g, Vec2 a, Vec2 d, bool on_x_line, bool on_y_line,
-                                 double t0, double t1)
-{
-	if (t1 - t0 <= PATHGRAPH_T_EPS)
-		return true;
-	double tm = (t0 + t1) / 2;
-	int64_t cx = (int64_t)floor(a.x + tm * d.x), cy = (int64_t)floor(a.y + tm * d.y);
-	if (on_x_line)
-		return !(pathgraph_blocked(g, cx - 1, cy) && pathgraph_blocked(g, cx, cy));
-	if (on_y_line)
-		return !(pathgraph_blocked(g, cx, cy - 1) && pathgraph_blocked(g, cx, cy));
-	return !pathgraph_blocked(g, cx, cy);
-}
-
-/* The segment is cut at every grid line it crosses (events in increasing parameter t,
- * the x and y lines merged); each open piece between events lies in one cell and is
- * tested there, and each event where an x and a y line meet is a lattice corner and
- * tested for a diagonal pair of blocked cells. */
+/* One line test serves all of utak (visibility.h): it judges the segment without its
+ * end points, because the visibility graph and the rope bend at lattice corners. The
+ * pathgraph's callers test a whole segment, ends included, so an end at a pinch point
+ * (where free space does not connect) makes the segment not free. */
 bool pathgraph_segment_free(const Grid *g, Vec2 a, Vec2 b)
 {
-	Vec2 d = vec2_sub(b, a);
-	if (d.x == 0 && d.y == 0)
-		return !pathgraph_blocked(g, (int64_t)floor(a.x), (int64_t)floor(a.y));
-	bool on_x_line = d.x == 0 && a.x == floor(a.x); /* runs along the line x = a.x */
-	bool on_y_line = d.y == 0 && a.y == floor(a.y);
-	int sx = d.x > 0 ? 1 : -1, sy = d.y > 0 ? 1 : -1;
-	/* X .. Xend: the x lines met, in order (likewise y) */
-	int64_t X = (int64_t)(d.x > 0 ? ceil(a.x) : floor(a.x));
-	int64_t Xend = (int64_t)(d.x > 0 ? floor(b.x) : ceil(b.x));
-	int64_t Y = (int64_t)(d.y > 0 ? ceil(a.y) : floor(a.y));
-	int64_t Yend = (int64_t)(d.y > 0 ? floor(b.y) : ceil(b.y));
-	bool more_x = d.x != 0 && (Xend - X) * sx >= 0;
-	bool more_y = d.y != 0 && (Yend - Y) * sy >= 0;
-	double t0 = 0;
-	while (more_x || more_y) {
-		double tx = more_x ? (X - a.x) / d.x : HUGE_VAL;
-		double ty = more_y ? (Y - a.y) / d.y : HUGE_VAL;
-		double t1 = fmin(tx, ty);
-		if (!pathgraph_piece_free(g, a, d, on_x_line, on_y_line, t0, t1))
-			return false;
-		bool hit_x = more_x && tx - t1 <= PATHGRAPH_T_EPS;
-		bool hit_y = more_y && ty - t1 <= PATHGRAPH_T_EPS;
-		if ((hit_x && (hit_y || on_y_line)) || (hit_y && on_x_line)) {
-			int64_t cX = hit_x ? X : (int64_t)a.x, cY = hit_y ? Y : (int64_t)a.y;
-			if (!pathgraph_corner_ok(g, cX, cY))
-				return false;
-		}
-		if (hit_x) {
-			X += sx;
-			more_x = (Xend - X) * sx >= 0;
-		}
-		if (hit_y) {
-			Y += sy;
-			more_y = (Yend - Y) * sy >= 0;
-		}
-		t0 = fmax(t0, t1);
-	}
-	return pathgraph_piece_free(g, a, d, on_x_line, on_y_line, t0, 1.0);
+	return visibility_segment_free(g, a, b) && !visibility_pinch_point(g, a) &&
+	       !visibility_pinch_point(g, b);
 }
 
 /* ---------------------------------------------------------------- lengths */

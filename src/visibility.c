@@ -121,6 +121,11 @@ bool visibility_segment_free(const Grid *g, Vec2 a, Vec2 b)
 	return true;
 }
 
+bool visibility_pinch_point(const Grid *g, Vec2 p)
+{
+	return p.x == floor(p.x) && p.y == floor(p.y) && vis_pinch(g, p.x, p.y, false);
+}
+
 bool visibility_path_free(const Grid *g, const Path *p)
 {
 	if (p->count == 0)
@@ -130,9 +135,7 @@ bool visibility_path_free(const Grid *g, const Path *p)
 	for (int i = 1; i < p->count; i++) {
 		if (!visibility_segment_free(g, p->pts[i - 1], p->pts[i]))
 			return false;
-		Vec2 q = p->pts[i];
-		if (i + 1 < p->count && q.x == floor(q.x) && q.y == floor(q.y) &&
-		    vis_pinch(g, q.x, q.y, false))
+		if (i + 1 < p->count && visibility_pinch_point(g, p->pts[i]))
 			return false;
 	}
 	return true;

@@ -125,11 +125,13 @@ int pathgraph_find_paths(Pathgraph *pg, Vec2 from, Vec2 to, const PathgraphQuery
  * straight free line from p, 2 when it is reached by the 4-connected walk. */
 int pathgraph_entry(Pathgraph *pg, Vec2 p, int32_t *x, int32_t *y);
 
-/* pathgraph_segment_free(g, a, b): the line test. The segment ab (grid units) is free
- * when it meets the open interior of no blocked cell, runs along no edge between two
- * blocked cells, and passes through no lattice corner that two diagonally touching
- * blocked cells share (free space does not connect there, skeleton.h). Touching a
- * blocked cell at its edge or corner is allowed. Cells outside the grid are blocked. */
+/* pathgraph_segment_free(g, a, b): utak's one line test (visibility_segment_free,
+ * visibility.h) applied to the closed segment ab (grid units): free when it meets the
+ * open interior of no blocked cell, runs along no edge between two blocked cells, and
+ * passes through no lattice corner that two diagonally touching blocked cells share
+ * (free space does not connect there, skeleton.h), its end points included. Touching
+ * a blocked cell at its edge or corner is allowed. Cells outside the grid are
+ * blocked. */
 bool pathgraph_segment_free(const Grid *g, Vec2 a, Vec2 b);
 
 /* pathgraph_validate(pg): edges join their vertices' cells along 4-adjacent skeleton

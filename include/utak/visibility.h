@@ -88,6 +88,11 @@ typedef struct VisibilityGraph {
 /* visibility_segment_free(g, a, b): the line-of-sight test above. */
 bool visibility_segment_free(const Grid *g, Vec2 a, Vec2 b);
 
+/* visibility_pinch_point(g, p): p is a pinch point (rule (3) above): a lattice point
+ * two diagonally opposite cells around which are blocked. For a caller that needs
+ * the closed segment (pathgraph_segment_free): the test above leaves the ends out. */
+bool visibility_pinch_point(const Grid *g, Vec2 p);
+
 /* visibility_path_free(g, p): the polyline p is free (every segment free, no interior
  * vertex at a pinch point); a path of one point is free when the point is. */
 bool visibility_path_free(const Grid *g, const Path *p);
