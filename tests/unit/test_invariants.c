@@ -14,45 +14,11 @@
 
 #include "../fuzz/invariants.h"
 #include "test.h"
+#include "world_fixture.h"
 #include "utak/act.h"
 #include "utak/motion.h"
 #include "utak/table.h"
 #include "utak/world.h"
-
-static World world;
-static Table table;
-
-static void load(const char *text)
-{
-	Diag d;
-	int status = world_parse(&world, "test.w", text, strlen(text), &d);
-	if (status)
-		fprintf(stderr, "  %s\n", d.msg);
-	TEST_CHECK(status == 0);
-	status = table_build(&table, &world, &d);
-	if (status)
-		fprintf(stderr, "  %s\n", d.msg);
-	TEST_CHECK(status == 0);
-}
-
-static void unload(void)
-{
-	table_free(&table);
-	world_free(&world);
-}
-
-static MotorOutcome act(MotorKind kind, double a, double b)
-{
-	MotorCommand c = {.kind = kind, .dx = a, .dy = b, .deg = a};
-	MotorOutcome out;
-	motion_execute(&world, &table, &c, &out);
-	char why[256];
-	bool ok = table_validate(&table, &world, why, sizeof why);
-	if (!ok)
-		fprintf(stderr, "  invariant: %s\n", why);
-	TEST_CHECK(ok);
-	return out;
-}
 
 /* reads_back: the state written as a world file (utak -o) loads to the same TABLE. */
 static bool reads_back(void)

@@ -7,44 +7,11 @@
 #include <string.h>
 
 #include "test.h"
+#include "world_fixture.h"
 #include "utak/motion.h"
 #include "utak/table.h"
 #include "utak/world.h"
 
-static World world;
-static Table table;
-
-static void load(const char *text)
-{
-	Diag d;
-	int status = world_parse(&world, "test.w", text, strlen(text), &d);
-	if (status)
-		fprintf(stderr, "  %s\n", d.msg);
-	TEST_CHECK(status == 0);
-	status = table_build(&table, &world, &d);
-	if (status)
-		fprintf(stderr, "  %s\n", d.msg);
-	TEST_CHECK(status == 0);
-}
-
-static void unload(void)
-{
-	table_free(&table);
-	world_free(&world);
-}
-
-static MotorOutcome run(MotorKind kind, double a, double b)
-{
-	MotorCommand c = {.kind = kind, .dx = a, .dy = b, .deg = a};
-	MotorOutcome out;
-	motion_execute(&world, &table, &c, &out);
-	char why[128];
-	bool ok = table_validate(&table, &world, why, sizeof why);
-	if (!ok)
-		fprintf(stderr, "  invariant: %s\n", why);
-	TEST_CHECK(ok);
-	return out;
-}
 
 static double max_x(const Polygon *p)
 {
@@ -56,8 +23,8 @@ TEST_CASE(push_into_verge_halts_at_contact)
 	/* The verge claims x >= 29 (default ring of a 30-wide TABLE). The square's
 	 * right edge may reach x = 29 exactly and no farther. */
 	load("table 30 20\nobject box A 10 8 14 8 14 12 10 12\nutak 9.5 10.5 north\n");
-	TEST_CHECK(run(MOTOR_GRASP, 0, 0).refused == false);
-	MotorOutcome out = run(MOTOR_PUSH, 20, 0);
+	TEST_CHECK(act(MOTOR_GRASP, 0, 0).refused == false);
+	MotorOutcome out = act(MOTOR_PUSH, 20, 0);
 	TEST_CHECK(out.halted && !out.refused);
 	double right = max_x(&world.objects[0].shape);
 	TEST_CHECK(right <= 29 && right > 29 - 0.5);
@@ -70,8 +37,8 @@ TEST_CASE(push_into_object_halts_at_contact)
 {
 	load("table 40 20\nobject a A 10 8 14 8 14 12 10 12\nobject b C 20 9 24 9 24 11 20 11\n"
 	     "utak 9.5 10.5 north\n");
-	run(MOTOR_GRASP, 0, 0);
-	MotorOutcome out = run(MOTOR_PUSH, 10, 0);
+	act(MOTOR_GRASP, 0, 0);
+	MotorOutcome out = act(MOTOR_PUSH, 10, 0);
 	TEST_CHECK(out.halted);
 	TEST_CHECK(strstr(out.what, "'b'") != NULL);
 	double gap = 20 - max_x(&world.objects[0].shape);
@@ -85,8 +52,8 @@ TEST_CASE(quarter_turn_is_exact)
 {
 	/* Utak at (10.5, 10.5) holds a bar to his east; a quarter turn puts it north. */
 	load("table 30 30\nobject bar A 11 10 15 10 15 11 11 11\nutak 10.5 10.5 north\n");
-	run(MOTOR_GRASP, 0, 0);
-	MotorOutcome out = run(MOTOR_TURN, 90, 0);
+	act(MOTOR_GRASP, 0, 0);
+	MotorOutcome out = act(MOTOR_TURN, 90, 0);
 	TEST_CHECK(!out.halted && !out.refused);
 	TEST_NEAR(out.done, 90, 1e-12);
 	const Polygon *p = &world.objects[0].shape;
@@ -104,8 +71,8 @@ TEST_CASE(turn_through_wall_is_halted)
 	/* A wall just north of the bar's sweep: the bar, 6 long, cannot swing past it. */
 	load("table 30 30\nwall 9 14 20 14 20 15 9 15\nobject bar A 11 10 17 10 17 11 11 11\n"
 	     "utak 10.5 10.5 north\n");
-	run(MOTOR_GRASP, 0, 0);
-	MotorOutcome out = run(MOTOR_TURN, 90, 0);
+	act(MOTOR_GRASP, 0, 0);
+	MotorOutcome out = act(MOTOR_TURN, 90, 0);
 	TEST_CHECK(out.halted);
 	TEST_CHECK(out.done > 0 && out.done < 45);
 	for (int i = 0; i < 4; i++)
@@ -116,15 +83,15 @@ TEST_CASE(turn_through_wall_is_halted)
 TEST_CASE(refusals_change_nothing)
 {
 	load("table 30 30\nobject bar A 20 20 22 20 22 22 20 22\nutak 10.5 10.5 east\n");
-	TEST_CHECK(run(MOTOR_GRASP, 0, 0).refused);
-	TEST_CHECK(run(MOTOR_PUSH, 1, 0).refused);
-	TEST_CHECK(run(MOTOR_TURN, 30, 0).refused);
-	TEST_CHECK(run(MOTOR_RELEASE, 0, 0).refused);
+	TEST_CHECK(act(MOTOR_GRASP, 0, 0).refused);
+	TEST_CHECK(act(MOTOR_PUSH, 1, 0).refused);
+	TEST_CHECK(act(MOTOR_TURN, 30, 0).refused);
+	TEST_CHECK(act(MOTOR_RELEASE, 0, 0).refused);
 	TEST_CHECK(world.utak.x == 10.5 && world.utak.y == 10.5 && world.held == -1);
 	/* Facing east, "move 0 3" is three squares east; "move 2 0" two to his right: south. */
-	run(MOTOR_MOVE, 0, 3);
+	act(MOTOR_MOVE, 0, 3);
 	TEST_CHECK(world.utak.x == 13.5 && world.utak.y == 10.5);
-	run(MOTOR_MOVE, 2, 0);
+	act(MOTOR_MOVE, 2, 0);
 	TEST_CHECK(world.utak.x == 13.5 && world.utak.y == 8.5);
 	unload();
 }
@@ -132,7 +99,7 @@ TEST_CASE(refusals_change_nothing)
 TEST_CASE(move_into_object_halts)
 {
 	load("table 30 30\nobject box A 15 5 18 5 18 20 15 20\nutak 10.5 10.5 north\n");
-	MotorOutcome out = run(MOTOR_MOVE, 10, 0);
+	MotorOutcome out = act(MOTOR_MOVE, 10, 0);
 	TEST_CHECK(out.halted);
 	TEST_CHECK(world.utak.x < 15 && world.utak.x >= 14); /* his square is 14, next to the box */
 	unload();
