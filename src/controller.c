@@ -692,10 +692,14 @@ static bool make_plan(Controller *c, char *why, size_t size)
 	}
 	c->goal = gr.goal;
 	c->exploring = gr.exploring;
-	/* The goal may lie outside the screen built before it was known. */
-	Vec2 both[2] = {c->start, c->goal};
-	screen_build(&c->screen, &c->model, both, 2);
-	build_space(c);
+	/* The goal may lie outside the screen built before it was known: only then
+	 * build it again, around the goal too. */
+	int32_t gi, gj;
+	if (!cell_of(&c->screen, c->goal, &gi, &gj)) {
+		Vec2 both[2] = {c->start, c->goal};
+		screen_build(&c->screen, &c->model, both, 2);
+		build_space(c);
+	}
 	Vec2 from = screen_from_model(&c->screen, c->model.utak), to = screen_from_model(&c->screen, c->goal);
 	if (!planner_plan(&c->planner, &c->space, from, to)) {
 		snprintf(why, size, "no path to (%.1f, %.1f)", c->goal.x, c->goal.y);
