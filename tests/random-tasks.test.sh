@@ -8,10 +8,14 @@
 set -u
 tmp=${TMPDIR:-/tmp}/utak-random.$$
 mkdir -p "$tmp"; trap 'rm -rf "$tmp"' EXIT
-ran=0 skipped=0 achieved=0 seed=1
+# The eye measures to a square, and the judge allows a square: where the two
+# errors add up, Utak can be sure of a corner or a loop that is not quite there.
+# 1 of the 200 runs did so when this was written (seed 57, go round square).
+FALSE_MAX=2
+ran=0 skipped=0 achieved=0 disagree=0 false_ok=0 seed=1
 tasks="go ne-corner|go square|go round square|push square ne-corner|go sw-corner"
 while [ "$ran" -lt 200 ]; do
-	# A room with a wall stub or none, a 4 x 4 square and two other boxes.
+	# A room with a wall stub or none, a 4 x 4 square and two bricks.
 	awk -v seed="$seed" 'BEGIN {
 		srand(seed); w = 30 + int(rand() * 12); h = 26 + int(rand() * 10)
 		printf "table %d %d\n", w, h
@@ -19,7 +23,11 @@ while [ "$ran" -lt 200 ]; do
 		x = 3 + int(rand() * (w - 10)); y = 3 + int(rand() * (h - 10))
 		printf "object square A %d %d %d %d %d %d %d %d\n", x, y, x + 4, y, x + 4, y + 4, x, y + 4
 		for (k = 0; k < 2; k++) {
-			bw = 2 + int(rand() * 5); bh = 2 + int(rand() * 4)
+			# A brick, clearly longer than wide (at least twice): a box near
+			# the proportions of the square is neither, and which one the eye
+			# takes it for is a coin toss at the resolution of one square.
+			bh = 2 + int(rand() * 2); bw = 2 * bh + int(rand() * 3)
+			if (rand() < 0.5) { t = bw; bw = bh; bh = t }
 			x = 3 + int(rand() * (w - bw - 6)); y = 3 + int(rand() * (h - bh - 6))
 			printf "object box%d C %d %d %d %d %d %d %d %d\n", k, x, y, x + bw, y, x + bw, y + bh, x, y + bh
 		}
@@ -40,8 +48,20 @@ while [ "$ran" -lt 200 ]; do
 	"1:task: failed: "*) ;;
 	*) echo "seed $((seed - 1)), task '$task': exit $st, last line '$last'"; cat "$tmp/w.w"; head -n 5 "$tmp/err"; exit 1 ;;
 	esac
+	# The belief beside a verdict it contradicts: counted, and false successes
+	# (Utak sure of a task the judge says is not done) listed; more than
+	# FALSE_MAX of them fail the test.
+	case "$last" in
+	*"Utak believes it achieved"*)
+		echo "seed $((seed - 1)), task '$task': Utak believes a failed task achieved: $last"
+		false_ok=$((false_ok + 1)); disagree=$((disagree + 1)) ;;
+	*"Utak believes it"*) disagree=$((disagree + 1)) ;;
+	esac
 	if [ -s "$tmp/err" ]; then
 		echo "seed $((seed - 1)), task '$task': wrote to stderr"; head -n 5 "$tmp/err"; exit 1
 	fi
 done
-echo "$ran worlds ran ($achieved achieved), $skipped refused by the reader"
+echo "$ran worlds ran ($achieved achieved; belief and verdict differ in $disagree, $false_ok of them false successes), $skipped refused by the reader"
+if [ "$false_ok" -gt "$FALSE_MAX" ]; then
+	echo "more than $FALSE_MAX false successes"; exit 1
+fi
