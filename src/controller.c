@@ -103,9 +103,13 @@ static void reach(const Grid *g, int32_t si, int32_t sj, int32_t *dist)
 	free(queue);
 }
 
-/* The rooms of the screen's fixed space (objects counted as space: moving an
- * object does not change the rooms). The pathgraph borrows the skeleton. */
+/* The rooms of the floor Utak has seen (objects counted as space: moving an
+ * object does not change the rooms). Unknown squares are left out here, though the
+ * planner goes through them: the optimistic unknown beyond a wall glimpsed through a
+ * gap is one vast space, and it would make the seen room a corridor to it, with a
+ * door in the middle. The pathgraph borrows the grid and the skeleton. */
 typedef struct RoomMap {
+	Grid known;
 	Skeleton skeleton;
 	Pathgraph pathgraph;
 	Rooms rooms;
@@ -113,11 +117,15 @@ typedef struct RoomMap {
 
 static void roommap_build(RoomMap *r, const Screen *s)
 {
+	grid_init(&r->known, s->w, s->h, GRID_BLOCKED);
+	for (int32_t k = 0; k < s->w * s->h; k++)
+		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE)
+			r->known.cells[k] = GRID_FREE;
 	skeleton_init(&r->skeleton);
 	pathgraph_init(&r->pathgraph);
 	rooms_init(&r->rooms);
-	skeleton_compute(&r->skeleton, &s->fixed);
-	pathgraph_build(&r->pathgraph, &r->skeleton, &s->fixed);
+	skeleton_compute(&r->skeleton, &r->known);
+	pathgraph_build(&r->pathgraph, &r->skeleton, &r->known);
 	rooms_find(&r->rooms, &r->pathgraph);
 }
 
@@ -126,6 +134,7 @@ static void roommap_free(RoomMap *r)
 	rooms_free(&r->rooms);
 	pathgraph_free(&r->pathgraph);
 	skeleton_free(&r->skeleton);
+	grid_free(&r->known);
 }
 
 /* ---- objects by shape ------------------------------------------------------------- */
@@ -149,7 +158,9 @@ static Shape object_shape(const WorldModel *m, int32_t k)
 }
 
 /* find_target(c): the model node of the task's object: the one it chose before if
- * still there, else the nearest object of the task's shape; -1 when none is seen. */
+ * still there, else the object of the task's shape nearest where the task began
+ * ("with several, the nearest": nearest Utak when he was given the task, so that
+ * the choice does not wander as he walks); -1 when none is seen. */
 static int32_t find_target(Controller *c)
 {
 	const WorldModel *m = &c->model;
@@ -166,7 +177,7 @@ static int32_t find_target(Controller *c)
 		if (c->target != 0 && n->ident == c->target)
 			return k;
 		Vec2 mid = vec2((n->rect.lo.x + n->rect.hi.x) / 2, (n->rect.lo.y + n->rect.hi.y) / 2);
-		double d = distance(mid, m->utak);
+		double d = distance(mid, c->start);
 		if (d < best_d) {
 			best_d = d;
 			best = k;
@@ -507,8 +518,16 @@ static bool grasp_side(const Controller *c, int32_t k, const int32_t *dist, cons
 	int32_t *cdist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *cdist);
 	bool found = false;
 	Grid cs = {0};
-	/* Candidates in order of steps from Utak: repeatedly the nearest untried. */
-	for (int32_t d = 0, tried = 0; !found && tried < 64;) {
+	/* Candidates in order of steps from Utak: repeatedly the nearest untried. The
+	 * first that works will do, except for a corner, where all are weighed. */
+	bool corner = c->task.kind == TASK_PUSH_CORNER;
+	int64_t best_score = INT64_MIN, room_best = INT64_MIN;
+	for (int32_t at = 0; corner && at < s->w * s->h; at++)
+		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm->rooms, at % s->w, at / s->w) == start_room) {
+			int64_t v = corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
+			room_best = v > room_best ? v : room_best;
+		}
+	for (int32_t d = 0, tried = 0; (!found || corner) && tried < 64;) {
 		int32_t best = -1;
 		for (int32_t at = 0; at < s->w * s->h; at++) {
 			if (dist[at] < d || (best >= 0 && dist[at] >= dist[best]))
@@ -525,7 +544,7 @@ static bool grasp_side(const Controller *c, int32_t k, const int32_t *dist, cons
 			break;
 		d = dist[best];
 		/* Every candidate at this distance, in row order. */
-		for (int32_t at = best; at < s->w * s->h && !found; at++) {
+		for (int32_t at = best; at < s->w * s->h && (!found || corner); at++) {
 			if (dist[at] != d)
 				continue;
 			int32_t i = at % s->w, j = at / s->w, rx = s->x0 + i, ry = s->y0 + j;
@@ -548,10 +567,30 @@ static bool grasp_side(const Controller *c, int32_t k, const int32_t *dist, cons
 				continue;
 			reach(&cs, i, j, cdist);
 			Vec2 to;
-			if (push_goal(c, &cs, cdist, rm, start_room, rooms_at(&rm->rooms, i, j), i, j, &to) &&
-			    distance(to, centre_of(rx, ry)) > CONTROLLER_ARRIVED) {
+			if (!push_goal(c, &cs, cdist, rm, start_room, rooms_at(&rm->rooms, i, j), i, j, &to) ||
+			    distance(to, centre_of(rx, ry)) <= CONTROLLER_ARRIVED)
+				continue;
+			if (!corner) {
 				*goal = centre_of(rx, ry);
 				found = true;
+				continue;
+			}
+			/* Into a corner: how far toward it the object itself gets, Utak at
+			 * `to` holding it from this side; the nearest side of the best. */
+			int64_t reach_score = INT64_MIN;
+			for (int32_t q = 0; q < count; q++) {
+				int64_t v = corner_score(c->task.corner, (int32_t)floor(to.x) + ox[q], (int32_t)floor(to.y) + oy[q]);
+				reach_score = v > reach_score ? v : reach_score;
+			}
+			if (reach_score > best_score) {
+				best_score = reach_score;
+				*goal = centre_of(rx, ry);
+				found = true;
+				/* Right into the room's own corner: no side can do better. (A
+				 * side that leaves Utak between the object and a wall costs a
+				 * square, and the judge's slack is all the eye's error.) */
+				if (reach_score >= room_best - 1)
+					corner = false;
 			}
 		}
 		d++;
@@ -591,6 +630,11 @@ static void choose_goal(Controller *c, GoalResult *out)
 				 task_corner_name(c->task.corner));
 		break;
 	case TASK_GO_NEXT_ROOM:
+		if (start_room >= 0 && here_room >= 0 && here_room != start_room) {
+			out->found = true; /* already through a door: here will do */
+			out->goal = centre_of(s->x0 + ui, s->y0 + uj);
+			break;
+		}
 		out->found = goal_next_room(c, g, dist, &rm, start_room, &out->goal);
 		if (!out->found) {
 			out->exploring = out->found = frontier(c, dist, &out->goal);
@@ -667,6 +711,23 @@ static void round_points(Controller *c, int32_t k)
 	c->round[5] = c->start; /* "and return": to where the task began */
 	c->round_count = 6;
 	c->round_next = 0;
+	c->round_ident = n->ident;
+	c->round_rect = n->rect;
+}
+
+/* round_stale(c): the loop was laid out round what the model no longer believes is
+ * the task's object, or round a rectangle that has since been seen to differ by more
+ * than a square: a coarse first look can take a brick for a square. */
+static bool round_stale(Controller *c)
+{
+	if (c->task.kind != TASK_GO_ROUND || c->round_count == 0)
+		return false;
+	int32_t k = find_target(c);
+	if (k < 0 || c->model.node[k].ident != c->round_ident)
+		return true;
+	Box r = c->model.node[k].rect, o = c->round_rect;
+	return fabs(r.lo.x - o.lo.x) > 1 || fabs(r.lo.y - o.lo.y) > 1 || fabs(r.hi.x - o.hi.x) > 1 ||
+	       fabs(r.hi.y - o.hi.y) > 1;
 }
 
 /* make_plan(c, why): step 7 / 13: a goal and a route to it. False (with why) when
@@ -792,6 +853,41 @@ static void remember(Controller *c, Vec2 p)
 		c->visited[c->visited_count++] = p;
 }
 
+/* corner_shortfall(c): how far short of the corner of the starting room the task's
+ * subject is, by what Utak has seen: Utak himself for "go", the held object for
+ * "push". The same measure as the judge's (judge.h), taken on the world model:
+ * the best score of any floor seen in the room, less the subject's best. */
+static int64_t corner_shortfall(Controller *c)
+{
+	Vec2 extra[2] = {c->start, c->goal};
+	screen_build(&c->screen, &c->model, extra, 2);
+	const Screen *s = &c->screen;
+	RoomMap rm;
+	roommap_build(&rm, s);
+	int32_t si, sj;
+	cell_of(s, c->start, &si, &sj);
+	int32_t start_room = rooms_at(&rm.rooms, si, sj);
+	int64_t best = INT64_MIN, got = INT64_MIN;
+	for (int32_t at = 0; at < s->w * s->h; at++)
+		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm.rooms, at % s->w, at / s->w) == start_room) {
+			int64_t v = corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
+			best = v > best ? v : best;
+		}
+	roommap_free(&rm);
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	int32_t n = c->task.kind == TASK_PUSH_CORNER && c->model.holding ? c->model.held_count : 0;
+	for (int32_t k = -1; k < n; k++) {
+		if (k < 0 && n > 0)
+			continue; /* pushing: the object's squares, not Utak's */
+		int64_t v = corner_score(c->task.corner, ux + (k < 0 ? 0 : c->model.held_dx[k]),
+					 uy + (k < 0 ? 0 : c->model.held_dy[k]));
+		got = v > got ? v : got;
+	}
+	/* INT64_MAX: no floor seen, or the model has lost the held object's squares */
+	return best == INT64_MIN || got == INT64_MIN ? INT64_MAX : best - got;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -800,10 +896,20 @@ static void arrive(Controller *c)
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
 		return;
 	}
+	int64_t short_by;
 	switch (c->task.kind) {
-	case TASK_GO_CORNER:
 	case TASK_GO_NEXT_ROOM:
 		c->phase = PHASE_DONE;
+		return;
+	case TASK_GO_CORNER:
+		if ((short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK) {
+			c->phase = PHASE_FAILED;
+			snprintf(c->why, sizeof c->why, short_by == INT64_MAX ? "Utak sees no floor round him" :
+				 "Utak can get no nearer the %s than %lld short",
+				 task_corner_name(c->task.corner), (long long)short_by);
+		} else {
+			c->phase = PHASE_DONE;
+		}
 		return;
 	case TASK_GO_SHAPE:
 		if (touching(c, find_target(c)))
@@ -812,11 +918,23 @@ static void arrive(Controller *c)
 			remember(c, c->goal); /* touch says the object is not here after all */
 		return;
 	case TASK_GO_ROUND:
-		if (c->round_count > 0 && ++c->round_next == c->round_count)
+		if (round_stale(c))
+			c->round_count = 0; /* round the wrong thing: find the object again */
+		else if (c->round_count > 0 && ++c->round_next == c->round_count)
 			c->phase = PHASE_DONE;
 		return;
 	default:
-		if (c->phase == PHASE_PUSH)
+		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER &&
+		    (short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK) {
+			c->phase = PHASE_FAILED;
+			if (short_by == INT64_MAX)
+				snprintf(c->why, sizeof c->why, "Utak cannot tell where the %s he holds lies",
+					 task_shape_name(c->task.shape));
+			else
+				snprintf(c->why, sizeof c->why, "the %s can be pushed no nearer the %s than %lld short",
+					 task_shape_name(c->task.shape), task_corner_name(c->task.corner),
+					 (long long)short_by);
+		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
 		else if (touching(c, find_target(c)))
 			c->phase = PHASE_GRASP;
@@ -928,7 +1046,10 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	GoalResult gr;
 	if (c->model.report.corrected)
 		reason = "Utak is not where he expected";
-	else if (!route_viable(c))
+	else if (round_stale(c)) {
+		reason = "the object to go round is not what it seemed";
+		c->round_count = 0;
+	} else if (!route_viable(c))
 		reason = "the path is blocked";
 	else if (c->task.kind != TASK_GO_ROUND) {
 		choose_goal(c, &gr);
@@ -989,7 +1110,7 @@ void controller_dump_rooms(Controller *c, FILE *f)
 	}
 	RoomMap rm;
 	roommap_build(&rm, &c->screen);
-	rooms_dump(&rm.rooms, &c->screen.fixed, f);
+	rooms_dump(&rm.rooms, &rm.known, f);
 	roommap_free(&rm);
 }
 

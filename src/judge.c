@@ -184,9 +184,13 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 						got = fmax(got, score(h, task->corner, x, y));
 		}
 		ok = got != INT64_MIN && got >= best - JUDGE_SLACK;
-		snprintf(why, size, "%s %s %lld short of the %s (slack %d)", task->kind == TASK_GO_CORNER ? "Utak" : "the",
-			 task->kind == TASK_GO_CORNER ? "is" : shape,
-			 got == INT64_MIN ? -1LL : (long long)(best - got), task_corner_name(task->corner), JUDGE_SLACK);
+		if (got == INT64_MIN)
+			snprintf(why, size, "%s%s is not in the room Utak started in",
+				 task->kind == TASK_GO_CORNER ? "Utak" : "the ", task->kind == TASK_GO_CORNER ? "" : shape);
+		else
+			snprintf(why, size, "%s %s %lld short of the %s (slack %d)",
+				 task->kind == TASK_GO_CORNER ? "Utak" : "the", task->kind == TASK_GO_CORNER ? "is" : shape,
+				 (long long)(best - got), task_corner_name(task->corner), JUDGE_SLACK);
 		break;
 	}
 	case TASK_GO_NEXT_ROOM:

@@ -262,7 +262,11 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 	free(trail);
 	const char *belief = ctl->phase == PHASE_DONE ? "achieved" : "not achieved";
 	if (achieved) {
-		printf("task: achieved (%s, %ld cycles)\n", why, cycle);
+		if (ctl->phase == PHASE_DONE)
+			printf("task: achieved (%s, %ld cycles)\n", why, cycle);
+		else
+			printf("task: achieved (%s, %ld cycles; Utak believes it not achieved: %s)\n", why, cycle,
+			       ctl->phase == PHASE_FAILED ? ctl->why : "he was still at work");
 		return 0;
 	}
 	if (out_of_cycles)

@@ -30,6 +30,9 @@
 #define CONTROLLER_MAX_LEG 4.0
 /* Utak has arrived at a point when his believed point is this close to it. */
 #define CONTROLLER_ARRIVED 0.25
+/* A corner is reached this many squares short of the best floor seen in the room
+ * (the judge's slack, judge.h). */
+#define CONTROLLER_CORNER_SLACK 1
 /* Going round an object: the waypoints stand this far outside its rectangle. */
 #define CONTROLLER_ROUND_MARGIN 1.5
 /* Frontier goals remembered as reached (older ones are forgotten first). */
@@ -80,6 +83,8 @@ typedef struct Controller {
 	/* Going round: the points still to visit. */
 	Vec2 round[6];
 	int round_count, round_next;
+	int32_t round_ident;	/* the object they go round (its model ident) */
+	Box round_rect;		/* and its rectangle when they were laid out */
 	/* Bookkeeping for the trace. */
 	int cycle, replans, stuck;
 	Vec2 last_position;
