@@ -1005,6 +1005,34 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	return false;
 }
 
+/* going_in_circles(c): after a push, true when Utak has now stood on his square
+ * CONTROLLER_CIRCLES times since he grasped: a plan that keeps failing the same way
+ * (a wall the eye places a square off) goes round and round. It ends the push with
+ * an honest failure: the world model that led him round cannot be trusted to say the
+ * object is where it should be. */
+static bool going_in_circles(Controller *c)
+{
+	int32_t ux, uy, visits = 1;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	for (int i = 0; i < c->pushed_count; i++)
+		visits += c->pushed_x[i] == ux && c->pushed_y[i] == uy;
+	if (c->pushed_count < CONTROLLER_MAX_PUSHES) {
+		c->pushed_x[c->pushed_count] = ux;
+		c->pushed_y[c->pushed_count++] = uy;
+	}
+	if (visits < CONTROLLER_CIRCLES)
+		return false;
+	int64_t short_by = c->task.kind == TASK_PUSH_CORNER ? corner_shortfall(c) : INT64_MAX;
+	c->phase = PHASE_FAILED;
+	if (short_by == INT64_MAX || short_by <= 0)
+		snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)",
+			 task_shape_name(c->task.shape), c->model.utak.x, c->model.utak.y);
+	else
+		snprintf(c->why, sizeof c->why, "pushing the %s round in circles, %lld short of the %s",
+			 task_shape_name(c->task.shape), (long long)short_by, task_corner_name(c->task.corner));
+	return true;
+}
+
 void controller_perceive(Controller *c, const MotorCommand *cmd, const Impression *imp)
 {
 	c->impression = *imp;
@@ -1033,6 +1061,8 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 		c->stuck = 0;
 	}
 	c->last_position = c->model.utak;
+	if (cmd->kind == MOTOR_PUSH && c->phase == PHASE_PUSH && going_in_circles(c))
+		return;
 	if (c->phase != PHASE_TRAVEL && c->phase != PHASE_PUSH)
 		return;
 	if (!c->have_plan)

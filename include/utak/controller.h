@@ -41,6 +41,10 @@
 #define CONTROLLER_MAX_BUMPED 1024
 /* Cycles without progress (the believed position unchanged) before giving up. */
 #define CONTROLLER_STUCK_CYCLES 4
+/* Pushes remembered, and how often a push may come back to the same square before
+ * the controller calls it going round in circles. */
+#define CONTROLLER_MAX_PUSHES 512
+#define CONTROLLER_CIRCLES 6
 
 typedef enum ControllerPhase {
 	PHASE_TRAVEL,	/* walking to a goal point (or exploring toward one) */
@@ -87,6 +91,10 @@ typedef struct Controller {
 	Box round_rect;		/* and its rectangle when they were laid out */
 	/* Bookkeeping for the trace. */
 	int cycle, replans, stuck;
+	/* Pushing: the squares Utak has stood on since he grasped, for going round in
+	 * circles (CONTROLLER_CIRCLES visits to one square). */
+	int32_t pushed_x[CONTROLLER_MAX_PUSHES], pushed_y[CONTROLLER_MAX_PUSHES];
+	int pushed_count;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
 	char note[200];		/* what this cycle's perception and planning did */
