@@ -58,4 +58,6 @@ echo "== skelbench 3 4096: skeleton planner on synthetic grids and Boston_0_1024
 echo
 echo "== tablebench: a 4096 x 4096 TABLE with 200 objects"
 "$benchdir/tablebench" || st=1
+echo "== tablebench: the largest TABLE (8192 x 4096) with the most walls (4096)"
+"$benchdir/tablebench" limits || st=1
 exit $st
