@@ -65,6 +65,10 @@ check: build/chk/utak $(UNITBIN)
 golden: utak
 	sh tests/regen.sh ./utak
 
+# Rewrites the sessions shown in README.md (tests/readme.test.sh checks them).
+readme: utak
+	sh tests/readme-update.sh ./utak
+
 BENCHSRC = $(wildcard bench/*.c)
 BENCHBIN = $(BENCHSRC:bench/%.c=build/rel/bench/%)
 
@@ -89,7 +93,7 @@ format:
 clean:
 	rm -rf build utak
 
-.PHONY: all check golden bench install format clean
+.PHONY: all check golden readme bench install format clean
 .SUFFIXES:
 
 # ---- reliability (issue 6): fuzzing and the Box2D cross-check ------------------
