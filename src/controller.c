@@ -715,6 +715,22 @@ static void round_points(Controller *c, int32_t k)
 	c->round_rect = n->rect;
 }
 
+/* believed_turns(c, k): how many times the path Utak believes he took, closed back
+ * to its start, winds round the centre of object node k: the judge's measure
+ * (judge.c), taken on the world model. */
+static double believed_turns(const Controller *c, int32_t k)
+{
+	const Box *r = &c->model.node[k].rect;
+	Vec2 centre = vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
+	const Path *t = &c->trail;
+	double total = 0;
+	for (int i = 0; i < t->count; i++) {
+		Vec2 a = vec2_sub(t->pts[i], centre), b = vec2_sub(t->pts[(i + 1) % t->count], centre);
+		total += atan2(vec2_cross(a, b), vec2_dot(a, b));
+	}
+	return total / (2 * 3.14159265358979323846);
+}
+
 /* round_stale(c): the loop was laid out round what the model no longer believes is
  * the task's object, or round a rectangle that has since been seen to differ by more
  * than a square: a coarse first look can take a brick for a square. */
@@ -802,6 +818,7 @@ void controller_init(Controller *c, PlannerKind planner)
 	planner_init(&c->planner, planner);
 	screen_init(&c->screen);
 	path_init(&c->route);
+	path_init(&c->trail);
 	worldmodel_init(&c->model); /* step 1: the default world model */
 }
 
@@ -812,6 +829,7 @@ void controller_free(Controller *c)
 	grid_free(&c->space);
 	planner_free(&c->planner);
 	path_free(&c->route);
+	path_free(&c->trail);
 }
 
 void controller_set_task(Controller *c, const Task *t)
@@ -836,6 +854,7 @@ void controller_start(Controller *c, const Impression *first)
 	worldmodel_accommodate_first(&c->model, first); /* step 5 */
 	c->seen_before = squares_seen(&c->model);
 	c->start = c->last_position = c->model.utak;
+	path_push(&c->trail, c->model.utak);
 	if (!c->has_task)
 		return;
 	c->phase = PHASE_TRAVEL; /* step 6: the task's object is looked for in the plan */
@@ -918,10 +937,23 @@ static void arrive(Controller *c)
 			remember(c, c->goal); /* touch says the object is not here after all */
 		return;
 	case TASK_GO_ROUND:
-		if (round_stale(c))
+		if (round_stale(c)) {
 			c->round_count = 0; /* round the wrong thing: find the object again */
-		else if (c->round_count > 0 && ++c->round_next == c->round_count)
-			c->phase = PHASE_DONE;
+		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
+			/* Home. A loop begun round the wrong object and the one round the
+			 * right one can cancel: then once more round it. */
+			int32_t k = find_target(c);
+			if (k < 0 || fabs(believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
+				c->phase = PHASE_DONE;
+			else if (c->round_loops < CONTROLLER_ROUND_LOOPS) {
+				c->round_loops++;
+				round_points(c, k);
+			} else {
+				c->phase = PHASE_FAILED;
+				snprintf(c->why, sizeof c->why, "%d more loops round the %s, and still Utak's path does not wind round it",
+					 c->round_loops, task_shape_name(c->task.shape));
+			}
+		}
 		return;
 	default:
 		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER &&
@@ -1038,6 +1070,7 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
 	worldmodel_accommodate(&c->model, cmd, imp);
+	path_push(&c->trail, c->model.utak);
 	int32_t seen = squares_seen(&c->model);
 	int n = snprintf(c->note, sizeof c->note, "model: %+d squares seen", (int)(seen - c->seen_before));
 	c->seen_before = seen;

@@ -35,6 +35,10 @@
 #define CONTROLLER_CORNER_SLACK 1
 /* Going round an object: the waypoints stand this far outside its rectangle. */
 #define CONTROLLER_ROUND_MARGIN 1.5
+/* Going round is done when the believed path winds round the object more than this
+ * (the judge's test); else Utak goes round it again, at most this many more times. */
+#define CONTROLLER_ROUND_TURNS 0.99
+#define CONTROLLER_ROUND_LOOPS 2
 /* Frontier goals remembered as reached (older ones are forgotten first). */
 #define CONTROLLER_MAX_VISITED 256
 /* Squares remembered as bumped into (later ones are dropped). */
@@ -87,7 +91,9 @@ typedef struct Controller {
 	/* Going round: the points still to visit. */
 	Vec2 round[6];
 	int round_count, round_next;
+	int round_loops;	/* loops added because the path did not wind round it */
 	int32_t round_ident;	/* the object they go round (its model ident) */
+	Path trail;		/* where Utak believed he stood, the start and after each cycle */
 	Box round_rect;		/* and its rectangle when they were laid out */
 	/* Bookkeeping for the trace. */
 	int cycle, replans, stuck;
