@@ -335,10 +335,16 @@ static int statement(Reader *r)
 			return fail(r, k->col, "'%s' before 'table' (the TABLE's size must come first)",
 				    word_text(k, shown, sizeof shown));
 	}
-	if (r->count > MAX_WORDS)
-		return diag_set(r->d, r->name, r->line, r->words[MAX_WORDS].col,
-				"too many words (%d); a polygon has at most %d points", (int)r->count,
-				GEOM_MAX_VERTICES);
+	if (r->count > MAX_WORDS) {
+		/* Past the words kept: say it as parse_points would, in points. */
+		bool object = word_is(k, "object"), polygon = object || word_is(k, "wall") || word_is(k, "verge");
+		if (!polygon)
+			return diag_set(r->d, r->name, r->line, r->words[MAX_WORDS].col, "too many words (%d)",
+					(int)r->count);
+		return diag_set(r->d, r->name, r->line, r->words[MAX_WORDS].col, "%s has %d points; the most is %d",
+				object ? "an object" : word_is(k, "wall") ? "a wall" : "the verge",
+				(int)(r->count - (object ? 3 : 1)) / 2, GEOM_MAX_VERTICES);
+	}
 	if (word_is(k, "table"))
 		return statement_table(r);
 	if (word_is(k, "verge"))
@@ -363,11 +369,13 @@ int world_parse(World *w, const char *name, const char *text, size_t len, Diag *
 		return diag_set(d, name, 0, 0, "file is over the limit of %d bytes", WORLD_MAX_BYTES);
 	if (memchr(text, 0, len)) {
 		const char *z = memchr(text, 0, len);
-		int32_t line = 1;
-		for (const char *s = text; s < z; s++)
+		int32_t line = 1, col = 1;
+		for (const char *s = text; s < z; s++) {
 			line += *s == '\n';
+			col = *s == '\n' ? 1 : col + 1;
+		}
 		world_free(w);
-		return diag_set(d, name, line, 0, "binary data (a NUL byte); a world file is text");
+		return diag_set(d, name, line, col, "binary data (a NUL byte); a world file is text");
 	}
 	size_t at = 0;
 	int status = 0;
