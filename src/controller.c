@@ -205,6 +205,21 @@ static int64_t corner_score(Corner k, int32_t x, int32_t y)
 	return (int64_t)sx * x + (int64_t)sy * y;
 }
 
+/* room_corner_best(c, rm, room): the best corner score of any floor seen in the
+ * room (INT64_MIN when none): the corner a subject is measured against, as the
+ * judge measures it (judge.h). */
+static int64_t room_corner_best(const Controller *c, const RoomMap *rm, int32_t room)
+{
+	const Screen *s = &c->screen;
+	int64_t best = INT64_MIN;
+	for (int32_t at = 0; at < s->w * s->h; at++)
+		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm->rooms, at % s->w, at / s->w) == room) {
+			int64_t v = corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
+			best = v > best ? v : best;
+		}
+	return best;
+}
+
 /* frontier(c, g, dist): the nearest reachable known-floor cell beside an unknown one. */
 static bool frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
 {
@@ -521,12 +536,7 @@ static bool grasp_side(const Controller *c, int32_t k, const int32_t *dist, cons
 	/* Candidates in order of steps from Utak: repeatedly the nearest untried. The
 	 * first that works will do, except for a corner, where all are weighed. */
 	bool corner = c->task.kind == TASK_PUSH_CORNER;
-	int64_t best_score = INT64_MIN, room_best = INT64_MIN;
-	for (int32_t at = 0; corner && at < s->w * s->h; at++)
-		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm->rooms, at % s->w, at / s->w) == start_room) {
-			int64_t v = corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
-			room_best = v > room_best ? v : room_best;
-		}
+	int64_t best_score = INT64_MIN, room_best = corner ? room_corner_best(c, rm, start_room) : INT64_MIN;
 	for (int32_t d = 0, tried = 0; (!found || corner) && tried < 64;) {
 		int32_t best = -1;
 		for (int32_t at = 0; at < s->w * s->h; at++) {
@@ -721,14 +731,7 @@ static void round_points(Controller *c, int32_t k)
 static double believed_turns(const Controller *c, int32_t k)
 {
 	const Box *r = &c->model.node[k].rect;
-	Vec2 centre = vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
-	const Path *t = &c->trail;
-	double total = 0;
-	for (int i = 0; i < t->count; i++) {
-		Vec2 a = vec2_sub(t->pts[i], centre), b = vec2_sub(t->pts[(i + 1) % t->count], centre);
-		total += atan2(vec2_cross(a, b), vec2_dot(a, b));
-	}
-	return total / (2 * 3.14159265358979323846);
+	return geom_winding(c->trail.pts, c->trail.count, vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2));
 }
 
 /* round_stale(c): the loop was laid out round what the model no longer believes is
@@ -838,21 +841,12 @@ void controller_set_task(Controller *c, const Task *t)
 	c->has_task = true;
 }
 
-static int32_t squares_seen(const WorldModel *m)
-{
-	int32_t n = 0, half = WORLDMODEL_SIDE / 2;
-	for (int32_t y = -half; y < half; y++)
-		for (int32_t x = -half; x < half; x++)
-			n += worldmodel_belief(m, x, y) != BELIEF_UNKNOWN;
-	return n;
-}
-
 void controller_start(Controller *c, const Impression *first)
 {
 	c->impression = *first;		/* step 2 */
 	regions_find(&c->regions, first); /* steps 3-4 */
 	worldmodel_accommodate_first(&c->model, first); /* step 5 */
-	c->seen_before = squares_seen(&c->model);
+	c->seen_before = worldmodel_known_squares(&c->model);
 	c->start = c->last_position = c->model.utak;
 	path_push(&c->trail, c->model.utak);
 	if (!c->has_task)
@@ -878,6 +872,8 @@ static void remember(Controller *c, Vec2 p)
  * the best score of any floor seen in the room, less the subject's best. */
 static int64_t corner_shortfall(Controller *c)
 {
+	/* The screen of this cycle's impression: when going round in circles is
+	 * noticed, step 12 has not yet built it. */
 	Vec2 extra[2] = {c->start, c->goal};
 	screen_build(&c->screen, &c->model, extra, 2);
 	const Screen *s = &c->screen;
@@ -886,25 +882,35 @@ static int64_t corner_shortfall(Controller *c)
 	int32_t si, sj;
 	cell_of(s, c->start, &si, &sj);
 	int32_t start_room = rooms_at(&rm.rooms, si, sj);
-	int64_t best = INT64_MIN, got = INT64_MIN;
-	for (int32_t at = 0; at < s->w * s->h; at++)
-		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm.rooms, at % s->w, at / s->w) == start_room) {
-			int64_t v = corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
-			best = v > best ? v : best;
-		}
+	int64_t best = room_corner_best(c, &rm, start_room), got = INT64_MIN;
 	roommap_free(&rm);
 	int32_t ux, uy;
 	worldmodel_utak_square(&c->model, &ux, &uy);
+	/* Pushing, the object's squares; else, or when the model has lost them (merged
+	 * with a wall it touches), Utak's own, beside it. */
 	int32_t n = c->task.kind == TASK_PUSH_CORNER && c->model.holding ? c->model.held_count : 0;
-	for (int32_t k = -1; k < n; k++) {
-		if (k < 0 && n > 0)
-			continue; /* pushing: the object's squares, not Utak's */
-		int64_t v = corner_score(c->task.corner, ux + (k < 0 ? 0 : c->model.held_dx[k]),
-					 uy + (k < 0 ? 0 : c->model.held_dy[k]));
+	if (n == 0)
+		got = corner_score(c->task.corner, ux, uy);
+	for (int32_t k = 0; k < n; k++) {
+		int64_t v = corner_score(c->task.corner, ux + c->model.held_dx[k], uy + c->model.held_dy[k]);
 		got = v > got ? v : got;
 	}
-	/* INT64_MAX: no floor seen, or the model has lost the held object's squares */
-	return best == INT64_MIN || got == INT64_MIN ? INT64_MAX : best - got;
+	return best == INT64_MIN ? INT64_MAX : best - got; /* INT64_MAX: no floor seen in the room */
+}
+
+/* corner_failed(c, short_by): the goal reached, and the corner still short_by
+ * (corner_shortfall) away. */
+static void corner_failed(Controller *c, int64_t short_by)
+{
+	c->phase = PHASE_FAILED;
+	if (short_by == INT64_MAX)
+		snprintf(c->why, sizeof c->why, "Utak can no longer place the room he started in");
+	else if (c->task.kind == TASK_GO_CORNER)
+		snprintf(c->why, sizeof c->why, "Utak can get no nearer the %s than %lld short",
+			 task_corner_name(c->task.corner), (long long)short_by);
+	else
+		snprintf(c->why, sizeof c->why, "the %s can be pushed no nearer the %s than %lld short",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), (long long)short_by);
 }
 
 /* arrive(c): what reaching the goal means in the current phase. */
@@ -921,14 +927,10 @@ static void arrive(Controller *c)
 		c->phase = PHASE_DONE;
 		return;
 	case TASK_GO_CORNER:
-		if ((short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK) {
-			c->phase = PHASE_FAILED;
-			snprintf(c->why, sizeof c->why, short_by == INT64_MAX ? "Utak sees no floor round him" :
-				 "Utak can get no nearer the %s than %lld short",
-				 task_corner_name(c->task.corner), (long long)short_by);
-		} else {
+		if ((short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
+			corner_failed(c, short_by);
+		else
 			c->phase = PHASE_DONE;
-		}
 		return;
 	case TASK_GO_SHAPE:
 		if (touching(c, find_target(c)))
@@ -957,16 +959,9 @@ static void arrive(Controller *c)
 		return;
 	default:
 		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER &&
-		    (short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK) {
-			c->phase = PHASE_FAILED;
-			if (short_by == INT64_MAX)
-				snprintf(c->why, sizeof c->why, "Utak cannot tell where the %s he holds lies",
-					 task_shape_name(c->task.shape));
-			else
-				snprintf(c->why, sizeof c->why, "the %s can be pushed no nearer the %s than %lld short",
-					 task_shape_name(c->task.shape), task_corner_name(c->task.corner),
-					 (long long)short_by);
-		} else if (c->phase == PHASE_PUSH)
+		    (short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
+			corner_failed(c, short_by);
+		else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
 		else if (touching(c, find_target(c)))
 			c->phase = PHASE_GRASP;
@@ -1071,7 +1066,7 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	regions_find(&c->regions, imp);		 /* step 11 */
 	worldmodel_accommodate(&c->model, cmd, imp);
 	path_push(&c->trail, c->model.utak);
-	int32_t seen = squares_seen(&c->model);
+	int32_t seen = worldmodel_known_squares(&c->model);
 	int n = snprintf(c->note, sizeof c->note, "model: %+d squares seen", (int)(seen - c->seen_before));
 	c->seen_before = seen;
 	if (c->model.report.corrected)

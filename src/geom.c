@@ -58,6 +58,16 @@ static bool on_segment(Vec2 a, Vec2 b, Vec2 c)
 
 static int sign(double v) { return (v > 0) - (v < 0); }
 
+double geom_winding(const Vec2 *pts, int n, Vec2 c)
+{
+	double total = 0;
+	for (int i = 0; i < n; i++) {
+		Vec2 a = vec2_sub(pts[i], c), b = vec2_sub(pts[(i + 1) % n], c);
+		total += atan2(vec2_cross(a, b), vec2_dot(a, b));
+	}
+	return total / (2 * 3.14159265358979323846);
+}
+
 bool geom_segments_meet(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
 {
 	int o1 = sign(geom_orient(a, b, c)), o2 = sign(geom_orient(a, b, d));

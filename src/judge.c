@@ -132,17 +132,6 @@ static int32_t target(const World *start, const Table *t0, Shape shape)
 	return best;
 }
 
-/* winding(trail, n, c): turns of the closed polyline trail round point c. */
-static double winding(const Vec2 *trail, int n, Vec2 c)
-{
-	double total = 0;
-	for (int i = 0; i < n; i++) {
-		Vec2 a = vec2_sub(trail[i], c), b = vec2_sub(trail[(i + 1) % n], c);
-		total += atan2(vec2_cross(a, b), vec2_dot(a, b));
-	}
-	return total / (2 * 3.14159265358979323846);
-}
-
 bool judge_task(const World *start, const World *end, const Table *table, const Task *task, const Vec2 *trail,
 		int n, char *why, size_t size)
 {
@@ -207,7 +196,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		break;
 	case TASK_GO_ROUND: {
 		ObjectSquares o = object_squares(&t0, k);
-		double turns = n >= 3 ? winding(trail, n, vec2(o.cx, o.cy)) : 0;
+		double turns = n >= 3 ? geom_winding(trail, n, vec2(o.cx, o.cy)) : 0;
 		double home = hypot(end->utak.x - start->utak.x, end->utak.y - start->utak.y);
 		ok = fabs(turns) > 0.99 && home <= JUDGE_HOME;
 		snprintf(why, size, "Utak's path winds %.2f times round the %s and ends %.2f from its start", fabs(turns),

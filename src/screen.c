@@ -3,8 +3,8 @@
  * The world model's belief about each square (worldmodel_belief) decides the
  * cell: floor is space, never seen is unknown, occupied is an object when it lies
  * in the containing rectangle of one of the model's object nodes (the name of the
- * object over it, paper 3.6), else verge. COMPLEXITY: one pass over the model's
- * evidence window to find what was seen, one over the screen's cells. */
+ * object over it, paper 3.6), else verge. COMPLEXITY: one pass over the screen's
+ * cells (the window of what was seen is kept by the model). */
 #include "utak/screen.h"
 
 #include <math.h>
@@ -47,17 +47,15 @@ static int32_t object_at(const WorldModel *m, int32_t x, int32_t y)
 void screen_build(Screen *s, const WorldModel *m, const Vec2 *extra, int n)
 {
 	screen_free(s);
-	int32_t half = WORLDMODEL_SIDE / 2, ux, uy;
+	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
 	int32_t lo_x = ux, lo_y = uy, hi_x = ux, hi_y = uy;
-	for (int32_t y = -half; y < half; y++)
-		for (int32_t x = -half; x < half; x++)
-			if (worldmodel_belief(m, x, y) != BELIEF_UNKNOWN) {
-				lo_x = x < lo_x ? x : lo_x;
-				hi_x = x > hi_x ? x : hi_x;
-				lo_y = y < lo_y ? y : lo_y;
-				hi_y = y > hi_y ? y : hi_y;
-			}
+	if (m->seen_count > 0) { /* everything seen, kept by the model */
+		lo_x = m->seen_x0 < lo_x ? m->seen_x0 : lo_x;
+		hi_x = m->seen_x1 > hi_x ? m->seen_x1 : hi_x;
+		lo_y = m->seen_y0 < lo_y ? m->seen_y0 : lo_y;
+		hi_y = m->seen_y1 > hi_y ? m->seen_y1 : hi_y;
+	}
 	for (int i = 0; i < n; i++) {
 		int32_t x = (int32_t)floor(extra[i].x), y = (int32_t)floor(extra[i].y);
 		lo_x = x < lo_x ? x : lo_x;

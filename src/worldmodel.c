@@ -652,6 +652,36 @@ static void wm_name_object(WorldModel *m, int32_t node, WmPrevious *prev, int32_
 	snprintf(n->name, sizeof n->name, "object%d", (int)n->ident);
 }
 
+/* wm_seen_window(m): counts the squares seen and their rectangle (WorldModel's
+ * seen_ fields): one scan of the evidence window, made by wm_derive after every
+ * change to the grid. */
+static void wm_seen_window(WorldModel *m)
+{
+	int32_t n = 0, x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+	for (int32_t y = -WM_HALF; y < WM_HALF; y++)
+		for (int32_t x = -WM_HALF; x < WM_HALF; x++)
+			if (m->grid[wm_index(x, y)].res != WORLDMODEL_UNSEEN) {
+				x0 = x < x0 ? x : x0;
+				y0 = y < y0 ? y : y0;
+				x1 = x > x1 ? x : x1;
+				y1 = y > y1 ? y : y1;
+				n++;
+			}
+	m->seen_count = n;
+	m->seen_x0 = x0;
+	m->seen_y0 = y0;
+	m->seen_x1 = x1;
+	m->seen_y1 = y1;
+}
+
+int32_t worldmodel_known_squares(const WorldModel *m)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(m, &ux, &uy);
+	/* Utak's own square is floor whether seen or not (worldmodel_belief). */
+	return m->seen_count + (worldmodel_evidence(m, ux, uy).res == WORLDMODEL_UNSEEN);
+}
+
 /* wm_derive(m): the tree of paper 3.3 from the evidence grid. */
 static void wm_derive(WorldModel *m)
 {
@@ -670,17 +700,15 @@ static void wm_derive(WorldModel *m)
 
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
+	wm_seen_window(m);
 	int32_t x0 = ux, y0 = uy, x1 = ux, y1 = uy;
-	bool any = false;
-	for (int32_t y = -WM_HALF; y < WM_HALF; y++)
-		for (int32_t x = -WM_HALF; x < WM_HALF; x++)
-			if (m->grid[wm_index(x, y)].res != WORLDMODEL_UNSEEN) {
-				x0 = x < x0 ? x : x0;
-				y0 = y < y0 ? y : y0;
-				x1 = x > x1 ? x : x1;
-				y1 = y > y1 ? y : y1;
-				any = true;
-			}
+	bool any = m->seen_count > 0;
+	if (any) {
+		x0 = m->seen_x0 < x0 ? m->seen_x0 : x0;
+		y0 = m->seen_y0 < y0 ? m->seen_y0 : y0;
+		x1 = m->seen_x1 > x1 ? m->seen_x1 : x1;
+		y1 = m->seen_y1 > y1 ? m->seen_y1 : y1;
+	}
 	if (!any) {
 		/* The default model: a square floor centred on Utak (paper 3.4.3). */
 		ModelNode *f = &m->node[floor_node];
@@ -939,17 +967,9 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 		        (int)a->finer_squares);
 	wm_dump_node(m, 0, 0, f);
 	/* The belief map of the seen window. */
-	int32_t ux, uy, x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+	int32_t ux, uy, x0 = m->seen_x0, y0 = m->seen_y0, x1 = m->seen_x1, y1 = m->seen_y1;
 	worldmodel_utak_square(m, &ux, &uy);
-	for (int32_t y = -WM_HALF; y < WM_HALF; y++)
-		for (int32_t x = -WM_HALF; x < WM_HALF; x++)
-			if (m->grid[wm_index(x, y)].res != WORLDMODEL_UNSEEN) {
-				x0 = x < x0 ? x : x0;
-				y0 = y < y0 ? y : y0;
-				x1 = x > x1 ? x : x1;
-				y1 = y > y1 ? y : y1;
-			}
-	if (x0 > x1) {
+	if (m->seen_count == 0) {
 		fputs("belief map: nothing seen\n", f);
 		return;
 	}

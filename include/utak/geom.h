@@ -48,6 +48,11 @@ double geom_orient(Vec2 a, Vec2 b, Vec2 c);
 
 /* geom_polygon_area: signed area, > 0 for counter-clockwise. */
 double geom_polygon_area(const Polygon *p);
+/* geom_winding(pts, n, c): how many times the closed polyline pts[0..n-1] (its last
+ * point joined back to its first) winds round c, counter-clockwise positive: the
+ * sum of the angles each segment turns through as seen from c, over 2 pi. Not an
+ * integer when c lies on the polyline. */
+double geom_winding(const Vec2 *pts, int n, Vec2 c);
 Box geom_polygon_box(const Polygon *p);
 /* geom_polygon_is_simple: no two edges meet except neighbours at their shared
  * vertex; no zero-length edge; non-zero area. O(n^2), n <= GEOM_MAX_VERTICES. */

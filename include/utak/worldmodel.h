@@ -171,6 +171,10 @@ typedef struct WorldModel {
 	int32_t ring_count, ring_cap;
 	ModelVertex *vertex;
 	int32_t vertex_count, vertex_cap;
+	/* The squares ever seen: how many, and their containing rectangle (x0..x1,
+	 * y0..y1, inclusive; meaningless when seen_count is 0). Kept by every change
+	 * to the grid, so that no reader has to scan the whole evidence window. */
+	int32_t seen_count, seen_x0, seen_y0, seen_x1, seen_y1;
 } WorldModel;
 
 /* worldmodel_init(m): the default world model (paper 3.4.3): Utak at the centre of
@@ -209,6 +213,9 @@ double worldmodel_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impr
 
 /* worldmodel_belief(m, x, y): what the model believes of square (x, y). */
 Belief worldmodel_belief(const WorldModel *m, int32_t x, int32_t y);
+/* worldmodel_known_squares(m): the squares whose belief is not unknown (those seen,
+ * and Utak's own). */
+int32_t worldmodel_known_squares(const WorldModel *m);
 /* worldmodel_evidence(m, x, y): the square's evidence (all zero outside the window). */
 Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y);
 
