@@ -45,6 +45,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "utak/heap.h"
 #include "utak/util.h"
 #include "utak/visibility.h"
 
@@ -96,9 +97,7 @@ struct PathgraphScratch {
 	int32_t *pred_arc, *pred_node, *seen, *closed, *node_ban;
 	int32_t search_stamp, ban_stamp;
 	int32_t *arc_ban; /* edge_count + PATHGRAPH_MAX_PIECES */
-	IntList heap_node;
-	double *heap_key;
-	int heap_key_cap;
+	Heap heap;
 	PathgraphPiece pieces[PATHGRAPH_MAX_PIECES];
 	int piece_count;
 	int32_t skip_edge[2];   /* the edges replaced by pieces, or -1 */
@@ -184,8 +183,7 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->closed);
 	free(sc->node_ban);
 	free(sc->arc_ban);
-	free(sc->heap_node.v);
-	free(sc->heap_key);
+	heap_free(&sc->heap);
 	free(sc->walk_s.v);
 	free(sc->walk_d.v);
 	free(sc->cells.v);
@@ -824,50 +822,6 @@ static Vec2 pathgraph_cell_centre(const Pathgraph *pg, int32_t c)
 
 /* ---------------------------------------------------------------- A* */
 
-static void pathgraph_heap_push(struct PathgraphScratch *sc, double key, int32_t node)
-{
-	intlist_push(&sc->heap_node, node);
-	sc->heap_key =
-	    util_grow(sc->heap_key, &sc->heap_key_cap, sc->heap_node.count, sizeof *sc->heap_key);
-	int i = sc->heap_node.count - 1;
-	while (i > 0) {
-		int up = (i - 1) / 2;
-		if (sc->heap_key[up] <= key)
-			break;
-		sc->heap_key[i] = sc->heap_key[up];
-		sc->heap_node.v[i] = sc->heap_node.v[up];
-		i = up;
-	}
-	sc->heap_key[i] = key;
-	sc->heap_node.v[i] = node;
-}
-
-static int32_t pathgraph_heap_pop(struct PathgraphScratch *sc)
-{
-	int32_t top = sc->heap_node.v[0];
-	int n = --sc->heap_node.count;
-	double key = sc->heap_key[n];
-	int32_t node = sc->heap_node.v[n];
-	int i = 0;
-	for (;;) {
-		int c = 2 * i + 1;
-		if (c >= n)
-			break;
-		if (c + 1 < n && sc->heap_key[c + 1] < sc->heap_key[c])
-			c++;
-		if (key <= sc->heap_key[c])
-			break;
-		sc->heap_key[i] = sc->heap_key[c];
-		sc->heap_node.v[i] = sc->heap_node.v[c];
-		i = c;
-	}
-	if (n > 0) {
-		sc->heap_key[i] = key;
-		sc->heap_node.v[i] = node;
-	}
-	return top;
-}
-
 typedef struct SearchEnds {
 	int32_t s_cell, d_cell; /* the cells of S' and D' */
 } SearchEnds;
@@ -895,7 +849,7 @@ static void pathgraph_relax(Pathgraph *pg, const SearchEnds *se, int32_t node, i
 	sc->pred_arc[other] = arc;
 	sc->pred_node[other] = node;
 	Vec2 a = pathgraph_node_centre(pg, se, other), b = pathgraph_node_centre(pg, se, sc->goal);
-	pathgraph_heap_push(sc, ng + sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)),
+	heap_push(&sc->heap, ng + sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)),
 	                    other);
 }
 
@@ -908,15 +862,15 @@ static bool pathgraph_astar(Pathgraph *pg, const SearchEnds *se, int32_t src, in
 	const int32_t V = pg->vertex_count, E = pg->edge_count;
 	int32_t stamp = ++sc->search_stamp;
 	sc->goal = dst;
-	sc->heap_node.count = 0;
+	heap_clear(&sc->heap);
 	sc->seen[src] = stamp;
 	sc->g[src] = 0;
 	sc->pred_arc[src] = -1;
 	sc->pred_node[src] = -1;
-	pathgraph_heap_push(sc, 0, src);
+	heap_push(&sc->heap, 0, src);
 	bool found = false;
-	while (sc->heap_node.count > 0) {
-		int32_t node = pathgraph_heap_pop(sc);
+	while (sc->heap.count > 0) {
+		int32_t node = heap_pop(&sc->heap);
 		if (sc->closed[node] == stamp)
 			continue;
 		sc->closed[node] = stamp;

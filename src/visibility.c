@@ -43,6 +43,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "utak/heap.h"
 #include "utak/util.h"
 
 /* ---- the line-of-sight test -------------------------------------------------- */
@@ -610,47 +611,6 @@ void visibility_free(VisibilityGraph *vg)
 
 /* ---- the query ---------------------------------------------------------------- */
 
-typedef struct VisOpen {
-	double f;
-	int32_t node;
-} VisOpen;
-
-typedef struct VisHeap {
-	VisOpen *e;
-	int count, cap;
-} VisHeap;
-
-static void vis_heap_push(VisHeap *h, VisOpen e)
-{
-	h->e = util_grow(h->e, &h->cap, h->count + 1, sizeof *h->e);
-	int i = h->count++;
-	while (i > 0 && e.f < h->e[(i - 1) / 2].f) {
-		h->e[i] = h->e[(i - 1) / 2];
-		i = (i - 1) / 2;
-	}
-	h->e[i] = e;
-}
-
-static VisOpen vis_heap_pop(VisHeap *h)
-{
-	VisOpen top = h->e[0], last = h->e[--h->count];
-	int i = 0;
-	for (;;) {
-		int c = 2 * i + 1;
-		if (c >= h->count)
-			break;
-		if (c + 1 < h->count && h->e[c + 1].f < h->e[c].f)
-			c++;
-		if (!(h->e[c].f < last.f))
-			break;
-		h->e[i] = h->e[c];
-		i = c;
-	}
-	if (h->count > 0)
-		h->e[i] = last;
-	return top;
-}
-
 static inline double vis_dist(Vec2 a, Vec2 b)
 {
 	return hypot(b.x - a.x, b.y - a.y);
@@ -689,15 +649,15 @@ VisibilityStatus visibility_find(VisibilityGraph *vg, Vec2 s, Vec2 d, Path *path
 	}
 	vg->state[S] = vg->state[D] = VIS_UNSEEN;
 
-	VisHeap heap = {0};
+	Heap heap;
+	heap_init(&heap);
 	vg->g[S] = 0;
 	vg->parent[S] = -1;
 	vg->state[S] = VIS_OPEN;
-	vis_heap_push(&heap, (VisOpen){vis_dist(s, d), S});
+	heap_push(&heap, vis_dist(s, d), S);
 	int64_t expanded = 0;
 	while (heap.count > 0) {
-		VisOpen e = vis_heap_pop(&heap);
-		int32_t u = e.node;
+		int32_t u = heap_pop(&heap);
 		if (vg->state[u] == VIS_CLOSED)
 			continue;
 		vg->state[u] = VIS_CLOSED;
@@ -731,10 +691,10 @@ VisibilityStatus visibility_find(VisibilityGraph *vg, Vec2 s, Vec2 d, Path *path
 			vg->state[v] = VIS_OPEN;
 			vg->g[v] = gv;
 			vg->parent[v] = u;
-			vis_heap_push(&heap, (VisOpen){gv + vis_dist(pv, d), v});
+			heap_push(&heap, gv + vis_dist(pv, d), v);
 		}
 	}
-	free(heap.e);
+	heap_free(&heap);
 	free(from_start);
 	path->expanded = expanded;
 	if (vg->state[D] != VIS_CLOSED)
