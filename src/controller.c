@@ -157,6 +157,28 @@ static Shape object_shape(const WorldModel *m, int32_t k)
 	return s;
 }
 
+/* held_shape(c): the shape of what Utak holds, by the squares the model carries. */
+static Shape held_shape(const Controller *c)
+{
+	const WorldModel *m = &c->model;
+	int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+	for (int32_t j = 0; j < m->held_count; j++) {
+		x0 = m->held_dx[j] < x0 ? m->held_dx[j] : x0;
+		y0 = m->held_dy[j] < y0 ? m->held_dy[j] : y0;
+		x1 = m->held_dx[j] > x1 ? m->held_dx[j] : x1;
+		y1 = m->held_dy[j] > y1 ? m->held_dy[j] : y1;
+	}
+	if (m->held_count == 0)
+		return SHAPE_NONE;
+	int32_t w = x1 - x0 + 1, h = y1 - y0 + 1;
+	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
+	for (int32_t j = 0; j < m->held_count; j++)
+		mask[(m->held_dy[j] - y0) * w + (m->held_dx[j] - x0)] = 1;
+	Shape s = shape_classify(mask, w, h);
+	free(mask);
+	return s;
+}
+
 /* find_target(c): the model node of the task's object: the one it chose before if
  * still there, else the object of the task's shape nearest where the task began
  * ("with several, the nearest": nearest Utak when he was given the task, so that
@@ -558,10 +580,16 @@ static bool grasp_side(const Controller *c, int32_t k, const int32_t *dist, cons
 			if (dist[at] != d)
 				continue;
 			int32_t i = at % s->w, j = at / s->w, rx = s->x0 + i, ry = s->y0 + j;
-			bool beside = false;
-			for (int dy = -1; dy <= 1 && !beside; dy++)
-				for (int dx = -1; dx <= 1 && !beside; dx++)
-					beside = (dx || dy) && screen_label(s, i + dx, j + dy) == k;
+			/* Beside it and no other object: a grasp takes the first object
+			 * touch finds (paper 2.2), which must be this one. */
+			bool beside = false, other = false;
+			for (int dy = -1; dy <= 1; dy++)
+				for (int dx = -1; dx <= 1; dx++) {
+					int32_t l = screen_label(s, i + dx, j + dy);
+					beside |= (dx || dy) && l == k;
+					other |= (dx || dy) && l >= 0 && l != k;
+				}
+			beside &= !other;
 			bool visited = false;
 			for (int v = 0; v < c->visited_count && !visited; v++)
 				visited = distance(centre_of(rx, ry), c->visited[v]) < 0.5;
@@ -958,16 +986,54 @@ static void arrive(Controller *c)
 		}
 		return;
 	default:
-		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER &&
-		    (short_by = corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
-			corner_failed(c, short_by);
-		else if (c->phase == PHASE_PUSH)
+		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER) {
+			c->phase = PHASE_SEAT;
+			c->seat_axis = c->seat_pushes = 0;
+		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
 		else if (touching(c, find_target(c)))
 			c->phase = PHASE_GRASP;
 		else
 			remember(c, c->goal);
 	}
+}
+
+/* seat(c): after a push that seats the object: on along this axis, or, when it
+ * made no headway (pressed against a wall) or enough pushes were made, the next
+ * axis (controller_decide judges the corner after the last). */
+static void seat(Controller *c)
+{
+	if (distance(c->model.utak, c->seat_from) >= 0.5 && c->seat_pushes < CONTROLLER_SEAT_PUSHES)
+		return;
+	c->seat_pushes = 0;
+	c->seat_axis++;
+}
+
+/* seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
+ * holds, judged before he lets go. */
+static void seat_finish(Controller *c)
+{
+	int64_t short_by = corner_shortfall(c);
+	if (held_shape(c) != c->task.shape) {
+		/* What came along is not what the task named: another object touching
+		 * it was grasped, or the model lost part of it. */
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why, "what Utak pushed into the %s is not the %s",
+			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
+	} else if (short_by > CONTROLLER_CORNER_SLACK)
+		corner_failed(c, short_by);
+	else
+		c->phase = PHASE_RELEASE;
+}
+
+/* touch_blocked(c, dx, dy): touch feels the verge or a wall in the square beside
+ * Utak one step (dx, dy) away. */
+static bool touch_blocked(const Controller *c, int dx, int dy)
+{
+	for (int i = 0; i < TOUCH_CELLS; i++)
+		if (touch_offset[i][0] == dx && touch_offset[i][1] == dy)
+			return c->impression.touch[i] == 'B';
+	return false;
 }
 
 bool controller_decide(Controller *c, MotorCommand *cmd)
@@ -991,6 +1057,28 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			cmd->kind = MOTOR_RELEASE;
 			c->phase = PHASE_DONE;
 			return true;
+		case PHASE_SEAT: {
+			/* An axis along which touch feels the verge or a wall against
+			 * Utak himself is pressed home already: he cannot go that way. */
+			int dx = 0, dy = 0;
+			while (c->seat_axis < 2) {
+				Corner k = c->task.corner;
+				dx = c->seat_axis == 0 ? (k == CORNER_NE || k == CORNER_SE ? 1 : -1) : 0;
+				dy = c->seat_axis == 1 ? (k == CORNER_NE || k == CORNER_NW ? 1 : -1) : 0;
+				if (!touch_blocked(c, dx, dy))
+					break;
+				c->seat_axis++;
+				c->seat_pushes = 0;
+			}
+			if (c->seat_axis == 2) {
+				seat_finish(c);
+				continue;
+			}
+			*cmd = (MotorCommand){.kind = MOTOR_PUSH, .dx = dx, .dy = dy};
+			c->seat_from = c->model.utak;
+			c->seat_pushes++;
+			return true;
+		}
 		case PHASE_TRAVEL:
 		case PHASE_PUSH:
 			break;
@@ -1091,6 +1179,10 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	c->last_position = c->model.utak;
 	if (cmd->kind == MOTOR_PUSH && c->phase == PHASE_PUSH && going_in_circles(c))
 		return;
+	if (c->phase == PHASE_SEAT) {
+		seat(c);
+		return;
+	}
 	if (c->phase != PHASE_TRAVEL && c->phase != PHASE_PUSH)
 		return;
 	if (!c->have_plan)

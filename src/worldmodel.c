@@ -296,10 +296,50 @@ static double wm_score(const WorldModel *m, int32_t x, int32_t y, const Impressi
 	return (mm * *compared + WM_UNKNOWN_COST * (cells - *compared)) / cells;
 }
 
+/* wm_place(m, x, y, held, under): puts the held object's squares down round Utak
+ * on square (x, y), keeping in under what they cover (all but his own square). */
+static void wm_place(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under)
+{
+	for (int32_t j = 0; j < m->held_count; j++) {
+		int64_t k = wm_index(x + m->held_dx[j], y + m->held_dy[j]);
+		if (k < 0 || (m->held_dx[j] == 0 && m->held_dy[j] == 0))
+			continue;
+		if (under)
+			under[j] = m->grid[k];
+		m->grid[k] = held[j];
+	}
+}
+
+/* wm_lift(m, x, y, under): puts back what wm_place(m, x, y, ...) covered. Squares
+ * are restored in reverse order, so that one covered twice gets its first value. */
+static void wm_lift(WorldModel *m, int32_t x, int32_t y, const Evidence *under)
+{
+	for (int32_t j = m->held_count - 1; j >= 0; j--) {
+		int64_t k = wm_index(x + m->held_dx[j], y + m->held_dy[j]);
+		if (k >= 0 && !(m->held_dx[j] == 0 && m->held_dy[j] == 0))
+			m->grid[k] = under[j];
+	}
+}
+
+/* wm_score_holding(m, x, y, held, under, imp, &compared): wm_score of Utak on (x, y)
+ * pushing: the held object moves with him, so wherever he is, it is beside him. A
+ * model that left it at the predicted place would have it vote for the prediction
+ * even when the push was blocked. */
+static double wm_score_holding(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under,
+                               const Impression *imp, int32_t *compared)
+{
+	wm_place(m, x, y, held, under);
+	double score = wm_score(m, x, y, imp, compared);
+	wm_lift(m, x, y, under);
+	return score;
+}
+
 /* wm_try(m, x, y, ...): scores candidate square (x, y) and keeps it when better. */
 typedef struct WmSearch {
-	const WorldModel *m;
+	WorldModel *m;
 	const Impression *imp;
+	const Evidence *held; /* pushing: the held object's squares, lifted, else NULL */
+	Evidence *under;      /* pushing: room for what they cover */
 	int32_t px, py; /* the predicted square */
 	Vec2 from, to;  /* the commanded line: believed point before, predicted after */
 	int32_t bx, by; /* the best so far */
@@ -315,7 +355,8 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	    e.conf >= WM_BLOCKED_CONF)
 		return; /* Utak cannot stand inside what is surely an object */
 	int32_t compared;
-	double score = wm_score(s->m, x, y, s->imp, &compared);
+	double score = s->held ? wm_score_holding(s->m, x, y, s->held, s->under, s->imp, &compared)
+	                       : wm_score(s->m, x, y, s->imp, &compared);
 	if (compared < WORLDMODEL_MIN_COMPARED)
 		return;
 	Vec2 c = vec2(x + 0.5, y + 0.5), ab = vec2_sub(s->to, s->from);
@@ -382,16 +423,26 @@ static void wm_find_held(WorldModel *m, const Impression *imp)
 	m->held_count = n;
 }
 
-/* wm_carry(m, from, to, deg): the predicted model of a push or turn: the held
- * object's squares leave their places (predicted floor) and are put down where the
- * motion takes their centres, Utak's point going from `from` to `to` and the
- * object turning by deg about it. */
-static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
+/* wm_prune_held(m): after a push, the held squares the eye now sees as floor: they
+ * did not come along. A grasp takes one object (paper 2.2), and the model's held
+ * set, found by flooding occupied squares, can take in another that touches it. */
+static void wm_prune_held(WorldModel *m)
 {
-	Evidence saved[WORLDMODEL_HELD_MAX]; /* 12 KB */
+	int32_t ux, uy, n = 0;
+	worldmodel_utak_square(m, &ux, &uy);
+	for (int32_t j = 0; j < m->held_count; j++)
+		if (worldmodel_belief(m, ux + m->held_dx[j], uy + m->held_dy[j]) == BELIEF_OCCUPIED) {
+			m->held_dx[n] = m->held_dx[j];
+			m->held_dy[n++] = m->held_dy[j];
+		}
+	m->held_count = n;
+}
+
+/* wm_vacate(m, from, saved): the held object's squares, Utak on `from`, leave their
+ * places (predicted floor); their evidence goes to saved. */
+static void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
+{
 	int32_t fx = (int32_t)floor(from.x), fy = (int32_t)floor(from.y);
-	double c, s;
-	geom_cos_sin(deg, &c, &s);
 	for (int32_t j = 0; j < m->held_count; j++) {
 		int64_t k = wm_index(fx + m->held_dx[j], fy + m->held_dy[j]);
 		saved[j] = k >= 0 ? m->grid[k] : (Evidence){1, 0, WORLDMODEL_RES_PERIPHERAL, 1};
@@ -400,6 +451,19 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 			m->grid[k].conf = (float)(m->grid[k].conf * WORLDMODEL_CONF_CONTRADICTED);
 		}
 	}
+}
+
+/* wm_carry(m, from, to, deg): the predicted model of a turn: the held object's
+ * squares leave their places (predicted floor) and are put down where the turn
+ * takes their centres, the object turning by deg about Utak's point. (A push is
+ * carried by the disparity search itself: worldmodel_accommodate.) */
+static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
+{
+	Evidence saved[WORLDMODEL_HELD_MAX]; /* 12 KB */
+	int32_t fx = (int32_t)floor(from.x), fy = (int32_t)floor(from.y);
+	double c, s;
+	geom_cos_sin(deg, &c, &s);
+	wm_vacate(m, from, saved);
 	int32_t tx = (int32_t)floor(to.x), ty = (int32_t)floor(to.y);
 	for (int32_t j = 0; j < m->held_count; j++) {
 		Vec2 centre = vec2(fx + m->held_dx[j] + 0.5, fy + m->held_dy[j] + 0.5);
@@ -840,16 +904,21 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	Accommodation *rep = &m->report;
 	memset(rep, 0, sizeof *rep);
 	Vec2 from = m->utak, to = m->utak;
+	Evidence *held = NULL, *under = NULL; /* a push: the object, lifted */
 	/* The predicted model (paper 3.5): what the command should have done. */
 	switch (cmd->kind) {
 	case MOTOR_MOVE:
 		to = vec2_add(from, vec2(cmd->dx, cmd->dy));
 		break;
 	case MOTOR_PUSH:
-		/* Without a held object the simulator refuses a push (paper 2.2). */
+		/* Without a held object the simulator refuses a push (paper 2.2). With
+		 * one, it is lifted from where it was and put down below, where Utak
+		 * is found to be. */
 		if (m->holding) {
 			to = vec2_add(from, vec2(cmd->dx, cmd->dy));
-			wm_carry(m, from, to, 0);
+			held = util_alloc((size_t)m->held_count, sizeof *held);
+			under = util_alloc((size_t)m->held_count, sizeof *under);
+			wm_vacate(m, from, held);
 		}
 		break;
 	case MOTOR_TURN:
@@ -870,10 +939,11 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	rep->predicted = to;
 	int32_t px, py;
 	worldmodel_utak_square(m, &px, &py);
-	rep->mismatch = wm_score(m, px, py, imp, &rep->compared);
+	rep->mismatch = held ? wm_score_holding(m, px, py, held, under, imp, &rep->compared)
+	                     : wm_score(m, px, py, imp, &rep->compared);
 
 	/* Disparity: the positions near the prediction and along the commanded line. */
-	WmSearch s = {m, imp, px, py, from, to, px, py, INFINITY, rep->mismatch};
+	WmSearch s = {m, imp, held, under, px, py, from, to, px, py, INFINITY, rep->mismatch};
 	if (rep->compared >= WORLDMODEL_MIN_COMPARED)
 		s.best_key = rep->mismatch;
 	int32_t r = WORLDMODEL_DISPARITY_RADIUS;
@@ -901,9 +971,13 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
+	if (held)
+		wm_place(m, ux, uy, held, NULL);
+	free(held);
+	free(under);
 	wm_observe(m, ux, uy, imp);
-	if (m->holding)
-		wm_find_held(m, imp);
+	if (held)
+		wm_prune_held(m);
 	m->last = *imp;
 	m->impressions++;
 	wm_derive(m);

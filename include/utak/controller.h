@@ -49,11 +49,16 @@
  * the controller calls it going round in circles. */
 #define CONTROLLER_MAX_PUSHES 512
 #define CONTROLLER_CIRCLES 6
+/* Seating an object in a corner: at most this many one-square pushes along each
+ * axis, each until one makes no headway (the eye places walls seen from afar a
+ * square or two off; the object pressed against them is where they really are). */
+#define CONTROLLER_SEAT_PUSHES 8
 
 typedef enum ControllerPhase {
 	PHASE_TRAVEL,	/* walking to a goal point (or exploring toward one) */
 	PHASE_GRASP,	/* beside the object: grasp it */
 	PHASE_PUSH,	/* holding it: pushing it to its goal */
+	PHASE_SEAT,	/* at the corner: pressing it in, one axis at a time */
 	PHASE_RELEASE,	/* it is there: let go */
 	PHASE_DONE,	/* the task is complete, as far as Utak believes */
 	PHASE_FAILED,	/* the task cannot be done, for the reason in `why` */
@@ -101,6 +106,10 @@ typedef struct Controller {
 	 * circles (CONTROLLER_CIRCLES visits to one square). */
 	int32_t pushed_x[CONTROLLER_MAX_PUSHES], pushed_y[CONTROLLER_MAX_PUSHES];
 	int pushed_count;
+	/* Seating: the axis being pressed along (0 east-west, 1 north-south), the
+	 * pushes made along it, and where the last one set off. */
+	int seat_axis, seat_pushes;
+	Vec2 seat_from;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
 	char note[200];		/* what this cycle's perception and planning did */
