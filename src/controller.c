@@ -179,6 +179,19 @@ static Shape held_shape(const Controller *c)
 	return s;
 }
 
+/* seen_at(m, k, res): every square object node k is believed to cover has been seen
+ * at resolution res or finer. */
+static bool seen_at(const WorldModel *m, int32_t k, int res)
+{
+	const ModelNode *n = &m->node[k];
+	for (int32_t y = (int32_t)floor(n->rect.lo.y); y < (int32_t)ceil(n->rect.hi.y); y++)
+		for (int32_t x = (int32_t)floor(n->rect.lo.x); x < (int32_t)ceil(n->rect.hi.x); x++)
+			if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED &&
+			    worldmodel_evidence(m, x, y).res < res)
+				return false;
+	return true;
+}
+
 /* find_target(c): the model node of the task's object: the one it chose before if
  * still there, else the object of the task's shape nearest where the task began
  * ("with several, the nearest": nearest Utak when he was given the task, so that
@@ -193,10 +206,14 @@ static int32_t find_target(Controller *c)
 		if (n->kind != NODE_OBJECT)
 			continue;
 		/* An object is named by the shape it shows now: a coarse first look may
-		 * have shown another. The one chosen before is kept while it fits. */
-		if (object_shape(m, k) != c->task.shape)
+		 * have shown another. The one chosen before is kept, though, until the
+		 * fovea has seen all of it and it shows another shape: else a shape read
+		 * a square off from one place and right from the next draws Utak to and
+		 * fro. */
+		bool chosen = c->target != 0 && n->ident == c->target;
+		if (object_shape(m, k) != c->task.shape && !(chosen && !seen_at(m, k, WORLDMODEL_RES_FOVEA)))
 			continue;
-		if (c->target != 0 && n->ident == c->target)
+		if (chosen)
 			return k;
 		Vec2 mid = vec2((n->rect.lo.x + n->rect.hi.x) / 2, (n->rect.lo.y + n->rect.hi.y) / 2);
 		double d = distance(mid, c->start);
@@ -341,13 +358,8 @@ static bool goal_inspect(const Controller *c, const int32_t *dist, Vec2 *goal)
 		const ModelNode *n = &m->node[k];
 		if (n->kind != NODE_OBJECT)
 			continue;
-		bool coarse = false;
-		for (int32_t y = (int32_t)floor(n->rect.lo.y); y < (int32_t)ceil(n->rect.hi.y) && !coarse; y++)
-			for (int32_t x = (int32_t)floor(n->rect.lo.x); x < (int32_t)ceil(n->rect.hi.x) && !coarse; x++)
-				coarse = worldmodel_belief(m, x, y) == BELIEF_OCCUPIED &&
-					 worldmodel_evidence(m, x, y).res < WORLDMODEL_RES_FOVEA;
 		Vec2 beside;
-		if (!coarse || !goal_beside(c, k, dist, &beside))
+		if (seen_at(m, k, WORLDMODEL_RES_FOVEA) || !goal_beside(c, k, dist, &beside))
 			continue;
 		double d = distance(beside, m->utak);
 		if (d < best_d) {
@@ -660,7 +672,7 @@ static void choose_goal(Controller *c, GoalResult *out)
 	int32_t start_room = rooms_at(&rm.rooms, si, sj), here_room = rooms_at(&rm.rooms, ui, uj);
 	const char *shape = task_shape_name(c->task.shape);
 	bool pushing = c->phase == PHASE_PUSH;
-	switch (c->task.kind) {
+	switch (c->surveying ? TASK_GO_CORNER : c->task.kind) {
 	case TASK_GO_CORNER:
 		out->found = goal_corner(c, g, dist, &rm, start_room, &out->goal);
 		if (!out->found)
@@ -880,6 +892,10 @@ void controller_start(Controller *c, const Impression *first)
 	if (!c->has_task)
 		return;
 	c->phase = PHASE_TRAVEL; /* step 6: the task's object is looked for in the plan */
+	/* Where a corner is, the eye tells only from close by: walls seen from afar
+	 * are placed a square or two off, and a corner behind an obstacle not at all.
+	 * Utak goes to look at it before he fetches what he is to push there. */
+	c->surveying = c->task.kind == TASK_PUSH_CORNER;
 	char why[160];
 	if (!make_plan(c, why, sizeof why)) { /* step 7 */
 		c->phase = PHASE_FAILED;
@@ -941,6 +957,20 @@ static void corner_failed(Controller *c, int64_t short_by)
 			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), (long long)short_by);
 }
 
+/* touching_target(c): touch finds the task's object, and from beside it, where
+ * the fovea sees it best, it still shows the task's shape (a target kept through a
+ * coarse look, find_target, is dropped here if it does not). */
+static bool touching_target(Controller *c)
+{
+	int32_t k = find_target(c);
+	if (k < 0 || !touching(c, k))
+		return false;
+	if (object_shape(&c->model, k) == c->task.shape)
+		return true;
+	c->target = 0;
+	return false;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -950,6 +980,10 @@ static void arrive(Controller *c)
 		return;
 	}
 	int64_t short_by;
+	if (c->surveying) {
+		c->surveying = false; /* the corner seen from close by: now the object */
+		return;
+	}
 	switch (c->task.kind) {
 	case TASK_GO_NEXT_ROOM:
 		c->phase = PHASE_DONE;
@@ -961,7 +995,7 @@ static void arrive(Controller *c)
 			c->phase = PHASE_DONE;
 		return;
 	case TASK_GO_SHAPE:
-		if (touching(c, find_target(c)))
+		if (touching_target(c))
 			c->phase = PHASE_DONE;
 		else
 			remember(c, c->goal); /* touch says the object is not here after all */
@@ -991,7 +1025,7 @@ static void arrive(Controller *c)
 			c->seat_axis = c->seat_pushes = 0;
 		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
-		else if (touching(c, find_target(c)))
+		else if (touching_target(c))
 			c->phase = PHASE_GRASP;
 		else
 			remember(c, c->goal);

@@ -84,6 +84,7 @@ typedef struct Controller {
 	Vec2 start;		/* Utak's believed point when the task began, model frame */
 	int32_t target;		/* the task's object: its model ident, 0 none */
 	bool exploring;		/* the goal is a frontier of the unseen, not the task's */
+	bool surveying;		/* a push into a corner: going to look at the corner first */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];
