@@ -22,7 +22,10 @@
  * four points outside the corners of its rectangle, counter-clockwise, and
  * returns. Pushing it means: go beside it, grasp, push it (Utak and object
  * rigidly, so any side will do) along a path planned in its configuration space
- * (cspace.c: the screen eroded by the held squares), release.
+ * (cspace.c: the screen eroded by the held squares), release. Into a corner,
+ * Utak first goes to look at the corner (surveying), and at the end seats the
+ * object (PHASE_SEAT): one-square pushes along each axis until one makes no
+ * headway, so that the walls, not the eye's estimate of them, place it.
  *
  * All coordinates are in the world model's $floor frame unless named screen. */
 #include "utak/controller.h"

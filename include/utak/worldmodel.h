@@ -196,8 +196,11 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
  * differences where the model is sure are a disparity: the positions within
  * WORLDMODEL_DISPARITY_RADIUS of the predicted one, and along the commanded
  * straight line (a move may have halted), are tried, and the best match becomes
- * Utak's believed position. Then the evidence is recorded there and the tree
- * derived again. The result is in m->report. */
+ * Utak's believed position. After a push every position is tried with the held
+ * object beside it (it moves with Utak, halted or not); it is put down beside the
+ * position found, and its squares then seen as floor leave the held set. Then the
+ * evidence is recorded there and the tree derived again. The result is in
+ * m->report. */
 void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impression *imp);
 
 /* worldmodel_predict(m, x, y, pred, known): the impression the model predicts with

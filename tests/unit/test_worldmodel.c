@@ -373,6 +373,42 @@ TEST_CASE(worldmodel_held_object_follows)
 	sim_free(&s);
 }
 
+/* Pushing the square into a wall one square at a time: the pushes go on after it
+ * meets the wall and make no headway. After each, Utak's believed square is the
+ * true one (the simulator's), halted or not: the held object moves with him in
+ * every position the disparity search tries, so it cannot vote for the predicted
+ * one. */
+TEST_CASE(worldmodel_push_halted_at_wall)
+{
+	Sim s;
+	const char *text = read_file("worlds/room.w");
+	TEST_CHECK(text != NULL);
+	sim_load(&s, text);
+	WorldModel m;
+	worldmodel_init(&m);
+	Impression imp;
+	retina_sense(&s.w, &s.t, &imp);
+	worldmodel_accommodate_first(&m, &imp);
+	sim_step(&s, &m, "move -10 9; grasp");
+	TEST_CHECK(m.holding && m.held_count == 16);
+	int halted = 0;
+	for (int k = 0; k < 12; k++) {
+		int32_t tx0, ty0;
+		table_square_of(s.w.utak, &tx0, &ty0);
+		sim_step(&s, &m, "push 0 1");
+		int32_t bx, by, tx, ty;
+		worldmodel_utak_square(&m, &bx, &by);
+		table_square_of(s.w.utak, &tx, &ty);
+		halted += tx == tx0 && ty == ty0;
+		Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
+		TEST_CHECK(fabs(b.x - (tx + 0.5)) < 0.5 && fabs(b.y - (ty + 0.5)) < 0.5);
+	}
+	TEST_CHECK(halted >= 2); /* the test reaches the wall */
+	TEST_CHECK(m.held_count == 16);
+	worldmodel_free(&m);
+	sim_free(&s);
+}
+
 /* A long move that halts against a wall seen only in the periphery. The only
  * evidence of the wall is one 4 x 4 cell of the first impression at level 4: two
  * of its four rows occupied, which two it cannot say. Halting one square before
@@ -459,6 +495,7 @@ int main(void)
 	TEST_RUN(worldmodel_disparity_corrects_wrong_belief);
 	TEST_RUN(worldmodel_halted_move_found);
 	TEST_RUN(worldmodel_held_object_follows);
+	TEST_RUN(worldmodel_push_halted_at_wall);
 	TEST_RUN(worldmodel_halted_at_coarse_wall);
 	TEST_RUN(worldmodel_random_walks_stay_close);
 	return TEST_EXIT();
