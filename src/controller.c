@@ -160,28 +160,6 @@ static Shape object_shape(const WorldModel *m, int32_t k)
 	return s;
 }
 
-/* held_shape(c): the shape of what Utak holds, by the squares the model carries. */
-static Shape held_shape(const Controller *c)
-{
-	const WorldModel *m = &c->model;
-	int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
-	for (int32_t j = 0; j < m->held_count; j++) {
-		x0 = m->held_dx[j] < x0 ? m->held_dx[j] : x0;
-		y0 = m->held_dy[j] < y0 ? m->held_dy[j] : y0;
-		x1 = m->held_dx[j] > x1 ? m->held_dx[j] : x1;
-		y1 = m->held_dy[j] > y1 ? m->held_dy[j] : y1;
-	}
-	if (m->held_count == 0)
-		return SHAPE_NONE;
-	int32_t w = x1 - x0 + 1, h = y1 - y0 + 1;
-	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
-	for (int32_t j = 0; j < m->held_count; j++)
-		mask[(m->held_dy[j] - y0) * w + (m->held_dx[j] - x0)] = 1;
-	Shape s = shape_classify(mask, w, h);
-	free(mask);
-	return s;
-}
-
 /* seen_at(m, k, res): every square object node k is believed to cover has been seen
  * at resolution res or finer. */
 static bool seen_at(const WorldModel *m, int32_t k, int res)
@@ -242,8 +220,8 @@ typedef struct GoalResult {
 /* corner_score: how far a cell lies in the task's compass direction (his frame). */
 static int64_t corner_score(Corner k, int32_t x, int32_t y)
 {
-	int sx = (k == CORNER_NE || k == CORNER_SE) ? 1 : -1;
-	int sy = (k == CORNER_NE || k == CORNER_NW) ? 1 : -1;
+	int sx, sy;
+	task_corner_signs(k, &sx, &sy);
 	return (int64_t)sx * x + (int64_t)sy * y;
 }
 
@@ -933,8 +911,8 @@ static int64_t corner_shortfall(Controller *c)
 	roommap_free(&rm);
 	int32_t ux, uy;
 	worldmodel_utak_square(&c->model, &ux, &uy);
-	/* Pushing, the object's squares; else, or when the model has lost them (merged
-	 * with a wall it touches), Utak's own, beside it. */
+	/* Pushing, the object's squares; else, or when none are left in the held set
+	 * (the eye saw them all as floor after a push), Utak's own, beside it. */
 	int32_t n = c->task.kind == TASK_PUSH_CORNER && c->model.holding ? c->model.held_count : 0;
 	if (n == 0)
 		got = corner_score(c->task.corner, ux, uy);
@@ -1051,7 +1029,7 @@ static void seat(Controller *c)
 static void seat_finish(Controller *c)
 {
 	int64_t short_by = corner_shortfall(c);
-	if (held_shape(c) != c->task.shape) {
+	if (shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count) != c->task.shape) {
 		/* What came along is not what the task named: another object touching
 		 * it was grasped, or the model lost part of it. */
 		c->phase = PHASE_FAILED;
@@ -1097,11 +1075,11 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 		case PHASE_SEAT: {
 			/* An axis along which touch feels the verge or a wall against
 			 * Utak himself is pressed home already: he cannot go that way. */
-			int dx = 0, dy = 0;
+			int sx, sy, dx = 0, dy = 0;
+			task_corner_signs(c->task.corner, &sx, &sy);
 			while (c->seat_axis < 2) {
-				Corner k = c->task.corner;
-				dx = c->seat_axis == 0 ? (k == CORNER_NE || k == CORNER_SE ? 1 : -1) : 0;
-				dy = c->seat_axis == 1 ? (k == CORNER_NE || k == CORNER_NW ? 1 : -1) : 0;
+				dx = c->seat_axis == 0 ? sx : 0;
+				dy = c->seat_axis == 1 ? sy : 0;
 				if (!touch_blocked(c, dx, dy))
 					break;
 				c->seat_axis++;

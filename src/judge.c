@@ -67,7 +67,8 @@ static int64_t score(Heading h, Corner k, int32_t x, int32_t y)
 {
 	int64_t ox = 0, oy = 0;
 	own(h, x, y, &ox, &oy);
-	int sx = (k == CORNER_NE || k == CORNER_SE) ? 1 : -1, sy = (k == CORNER_NE || k == CORNER_NW) ? 1 : -1;
+	int sx, sy;
+	task_corner_signs(k, &sx, &sy);
 	return sx * ox + sy * oy;
 }
 

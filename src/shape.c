@@ -85,3 +85,23 @@ Shape shape_classify(const uint8_t *mask, int32_t w, int32_t h)
 		return SHAPE_TRIANGLE;
 	return SHAPE_NONE;
 }
+
+Shape shape_of_squares(const int32_t *x, const int32_t *y, int32_t n)
+{
+	if (n <= 0)
+		return SHAPE_NONE;
+	int32_t x0 = x[0], y0 = y[0], x1 = x[0], y1 = y[0];
+	for (int32_t i = 1; i < n; i++) {
+		x0 = x[i] < x0 ? x[i] : x0;
+		y0 = y[i] < y0 ? y[i] : y0;
+		x1 = x[i] > x1 ? x[i] : x1;
+		y1 = y[i] > y1 ? y[i] : y1;
+	}
+	int32_t w = x1 - x0 + 1, h = y1 - y0 + 1;
+	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
+	for (int32_t i = 0; i < n; i++)
+		mask[(int64_t)(y[i] - y0) * w + (x[i] - x0)] = 1;
+	Shape s = shape_classify(mask, w, h);
+	free(mask);
+	return s;
+}

@@ -228,6 +228,12 @@ const char *task_corner_name(Corner c)
 	return names[c];
 }
 
+void task_corner_signs(Corner c, int *sx, int *sy)
+{
+	*sx = c == CORNER_NE || c == CORNER_SE ? 1 : -1;
+	*sy = c == CORNER_NE || c == CORNER_NW ? 1 : -1;
+}
+
 void task_short_form(const Task *t, char *buf, size_t size)
 {
 	const char *shape = task_shape_name(t->shape), *corner = task_corner_name(t->corner);

@@ -27,4 +27,8 @@
  *   SHAPE_NONE       - anything else. */
 Shape shape_classify(const uint8_t *mask, int32_t w, int32_t h);
 
+/* shape_of_squares(x, y, n): shape_classify of the n distinct squares (x[i], y[i]),
+ * in their containing rectangle; SHAPE_NONE when n is 0. */
+Shape shape_of_squares(const int32_t *x, const int32_t *y, int32_t n);
+
 #endif

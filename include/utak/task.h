@@ -47,5 +47,8 @@ void task_short_form(const Task *t, char *buf, size_t size);
 const char *task_paper_number(const Task *t);
 const char *task_shape_name(Shape s);
 const char *task_corner_name(Corner c);
+/* task_corner_signs(c, &sx, &sy): the corner's compass direction in the frame of
+ * its words (north +y, east +x): +1 or -1 each way. */
+void task_corner_signs(Corner c, int *sx, int *sy);
 
 #endif

@@ -78,9 +78,33 @@ TEST_CASE(rectangles_by_aspect)
 	TEST_CHECK(shape_classify(plus, 5, 5) == SHAPE_NONE);
 }
 
+/* Squares given as coordinates (a held object's offsets from Utak: negative, in no
+ * order): a 4 x 4 block is a square, 4 x 2 a brick, the 4 x 4 block less a 2 x 2
+ * corner an L, and nothing is no shape. */
+TEST_CASE(shape_of_coordinates)
+{
+	int32_t x[16], y[16], n = 0;
+	for (int32_t j = 0; j < 16; j++) {
+		x[n] = -1 - (j * 3) % 4; /* every column once per row, shuffled */
+		y[n++] = -(j / 4);
+	}
+	TEST_CHECK(shape_of_squares(x, y, 16) == SHAPE_SQUARE);
+	TEST_CHECK(shape_of_squares(x, y, 8) == SHAPE_BRICK); /* the first two rows */
+	n = 0;
+	for (int32_t j = 0; j < 16; j++)
+		if (!(x[j] <= -3 && y[j] <= -2)) { /* drop the 2 x 2 at one corner */
+			x[n] = x[j];
+			y[n++] = y[j];
+		}
+	TEST_CHECK(n == 12);
+	TEST_CHECK(shape_of_squares(x, y, n) == SHAPE_LSHAPE);
+	TEST_CHECK(shape_of_squares(x, y, 0) == SHAPE_NONE);
+}
+
 int main(void)
 {
 	TEST_RUN(shapes_of_the_worlds);
 	TEST_RUN(rectangles_by_aspect);
+	TEST_RUN(shape_of_coordinates);
 	return TEST_EXIT();
 }

@@ -36,6 +36,23 @@ static void sim_free(Sim *s)
 	world_free(&s->w);
 }
 
+/* sim_start(s, m, text): the world of text, and Utak's model after his first
+ * impression of it. */
+static void sim_start(Sim *s, WorldModel *m, const char *text)
+{
+	sim_load(s, text);
+	worldmodel_init(m);
+	Impression imp;
+	retina_sense(&s->w, &s->t, &imp);
+	worldmodel_accommodate_first(m, &imp);
+}
+
+static void sim_end(Sim *s, WorldModel *m)
+{
+	worldmodel_free(m);
+	sim_free(s);
+}
+
 static char *read_file(const char *path)
 {
 	FILE *f = fopen(path, "rb");
@@ -53,6 +70,17 @@ static Vec2 model_to_table(const Sim *s, Vec2 p)
 {
 	Vec2 d = world_own_to_table(s->w.heading, vec2(p.x - 0.5, p.y - 0.5));
 	return vec2(s->ux0 + 0.5 + d.x, s->uy0 + 0.5 + d.y);
+}
+
+/* belief_error(s, m): how far (squares, each axis) the centre of Utak's believed
+ * square lies from the centre of the true one, on the TABLE. */
+static Vec2 belief_error(const Sim *s, const WorldModel *m)
+{
+	int32_t bx, by, tx, ty;
+	worldmodel_utak_square(m, &bx, &by);
+	table_square_of(s->w.utak, &tx, &ty);
+	Vec2 b = model_to_table(s, vec2(bx + 0.5, by + 0.5));
+	return vec2(fabs(b.x - (tx + 0.5)), fabs(b.y - (ty + 0.5)));
 }
 
 static void sim_step(Sim *s, WorldModel *m, const char *script)
@@ -181,20 +209,13 @@ TEST_CASE(worldmodel_room_walk_outlines)
 	Sim s;
 	const char *text = read_file("worlds/room.w");
 	TEST_CHECK(text != NULL);
-	sim_load(&s, text);
 	WorldModel m;
-	worldmodel_init(&m);
-	Impression imp;
-	retina_sense(&s.w, &s.t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	sim_start(&s, &m, text);
 	sim_step(&s, &m, room_walk);
 	/* Utak is where the model believes, to the square. */
-	int32_t bx, by, tx, ty;
-	worldmodel_utak_square(&m, &bx, &by);
-	table_square_of(s.w.utak, &tx, &ty);
-	Vec2 believed = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
-	TEST_NEAR(believed.x, tx + 0.5, 0);
-	TEST_NEAR(believed.y, ty + 0.5, 0);
+	Vec2 err = belief_error(&s, &m);
+	TEST_NEAR(err.x, 0, 0);
+	TEST_NEAR(err.y, 0, 0);
 	/* Every true object has a believed object whose outline is within one square
 	 * of its own, both ways; every believed object is within one square of one. */
 	int matched[WORLD_MAX_OBJECTS] = {0};
@@ -261,8 +282,7 @@ TEST_CASE(worldmodel_room_walk_outlines)
 		}
 	}
 	TEST_CHECK(checked > 20);
-	worldmodel_free(&m);
-	sim_free(&s);
+	sim_end(&s, &m);
 }
 
 /* A believed position off by up to 3 squares, where the fovea or the intermediate
@@ -283,12 +303,8 @@ TEST_CASE(worldmodel_disparity_corrects_wrong_belief)
 			for (int ex = -3; ex <= 3; ex++) {
 				if (ex == 0 && ey == 0)
 					continue;
-				sim_load(&s, text);
 				WorldModel m;
-				worldmodel_init(&m);
-				Impression imp;
-				retina_sense(&s.w, &s.t, &imp);
-				worldmodel_accommodate_first(&m, &imp);
+				sim_start(&s, &m, text);
 				worldmodel_set_position(&m, vec2(0.5 + ex, 0.5 + ey));
 				sim_step(&s, &m, "move 1 0; move 0 1");
 				int32_t bx, by, tx, ty;
@@ -302,8 +318,7 @@ TEST_CASE(worldmodel_disparity_corrects_wrong_belief)
 					    st, ex, ey, (int)dx, (int)dy);
 				TEST_CHECK(dx <= 1 && dy <= 1);
 				trials++;
-				worldmodel_free(&m);
-				sim_free(&s);
+				sim_end(&s, &m);
 			}
 	}
 	TEST_CHECK(trials == 3 * 48);
@@ -317,20 +332,15 @@ TEST_CASE(worldmodel_halted_move_found)
 	Sim s;
 	const char *text = read_file("worlds/room.w");
 	TEST_CHECK(text != NULL);
-	sim_load(&s, text);
 	WorldModel m;
-	worldmodel_init(&m);
-	Impression imp;
-	retina_sense(&s.w, &s.t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	sim_start(&s, &m, text);
 	sim_step(&s, &m, "move 0 5; move -8 0; move 0 -12");
 	TEST_CHECK(m.report.corrected);
 	int32_t bx, by, tx, ty;
 	worldmodel_utak_square(&m, &bx, &by);
 	table_square_of(s.w.utak, &tx, &ty);
 	TEST_CHECK(bx == tx - s.ux0 && by == ty - s.uy0);
-	worldmodel_free(&m);
-	sim_free(&s);
+	sim_end(&s, &m);
 }
 
 /* Grasp, push and turn: the held object hangs under $org and moves with Utak; its
@@ -340,12 +350,8 @@ TEST_CASE(worldmodel_held_object_follows)
 	Sim s;
 	const char *text = read_file("worlds/room.w");
 	TEST_CHECK(text != NULL);
-	sim_load(&s, text);
 	WorldModel m;
-	worldmodel_init(&m);
-	Impression imp;
-	retina_sense(&s.w, &s.t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	sim_start(&s, &m, text);
 	const char *steps[] = {"move -10 9", "grasp",   "push 0 -3",
 	                       "push 4 0",   "turn 90", "release"};
 	int32_t ident = -1;
@@ -369,8 +375,7 @@ TEST_CASE(worldmodel_held_object_follows)
 		TEST_CHECK(one_sided(&s.w.objects[0].shape, &believed) <= OUTLINE_TOLERANCE);
 		TEST_CHECK(!m.report.corrected);
 	}
-	worldmodel_free(&m);
-	sim_free(&s);
+	sim_end(&s, &m);
 }
 
 /* Pushing the square into a wall one square at a time: the pushes go on after it
@@ -383,12 +388,8 @@ TEST_CASE(worldmodel_push_halted_at_wall)
 	Sim s;
 	const char *text = read_file("worlds/room.w");
 	TEST_CHECK(text != NULL);
-	sim_load(&s, text);
 	WorldModel m;
-	worldmodel_init(&m);
-	Impression imp;
-	retina_sense(&s.w, &s.t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	sim_start(&s, &m, text);
 	sim_step(&s, &m, "move -10 9; grasp");
 	TEST_CHECK(m.holding && m.held_count == 16);
 	int halted = 0;
@@ -396,17 +397,15 @@ TEST_CASE(worldmodel_push_halted_at_wall)
 		int32_t tx0, ty0;
 		table_square_of(s.w.utak, &tx0, &ty0);
 		sim_step(&s, &m, "push 0 1");
-		int32_t bx, by, tx, ty;
-		worldmodel_utak_square(&m, &bx, &by);
+		int32_t tx, ty;
 		table_square_of(s.w.utak, &tx, &ty);
 		halted += tx == tx0 && ty == ty0;
-		Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
-		TEST_CHECK(fabs(b.x - (tx + 0.5)) < 0.5 && fabs(b.y - (ty + 0.5)) < 0.5);
+		Vec2 err = belief_error(&s, &m);
+		TEST_CHECK(err.x < 0.5 && err.y < 0.5);
 	}
 	TEST_CHECK(halted >= 2); /* the test reaches the wall */
 	TEST_CHECK(m.held_count == 16);
-	worldmodel_free(&m);
-	sim_free(&s);
+	sim_end(&s, &m);
 }
 
 /* A long move that halts against a wall seen only in the periphery. The only
@@ -420,20 +419,12 @@ TEST_CASE(worldmodel_halted_at_coarse_wall)
 	Sim s;
 	const char *text = read_file("worlds/tworooms.w");
 	TEST_CHECK(text != NULL);
-	sim_load(&s, text);
 	WorldModel m;
-	worldmodel_init(&m);
-	Impression imp;
-	retina_sense(&s.w, &s.t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	sim_start(&s, &m, text);
 	sim_step(&s, &m, "move 0 25");
-	int32_t bx, by, tx, ty;
-	worldmodel_utak_square(&m, &bx, &by);
-	table_square_of(s.w.utak, &tx, &ty);
-	Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
-	TEST_CHECK(fabs(b.x - (tx + 0.5)) <= 2 && fabs(b.y - (ty + 0.5)) <= 2);
-	worldmodel_free(&m);
-	sim_free(&s);
+	Vec2 err = belief_error(&s, &m);
+	TEST_CHECK(err.x <= 2 && err.y <= 2);
+	sim_end(&s, &m);
 }
 
 /* A property over random walks (a fixed little generator, so the same walks on
@@ -451,12 +442,8 @@ TEST_CASE(worldmodel_random_walks_stay_close)
 			Sim s;
 			const char *text = read_file(worlds[wi]);
 			TEST_CHECK(text != NULL);
-			sim_load(&s, text);
 			WorldModel m;
-			worldmodel_init(&m);
-			Impression imp;
-			retina_sense(&s.w, &s.t, &imp);
-			worldmodel_accommodate_first(&m, &imp);
+			sim_start(&s, &m, text);
 			uint32_t state = seed * 2654435761u;
 			for (int i = 0; i < 20; i++) {
 				char cmd[64];
@@ -466,11 +453,8 @@ TEST_CASE(worldmodel_random_walks_stay_close)
 				int dy = (int)((state >> 16) % 17) - 8;
 				snprintf(cmd, sizeof cmd, "move %d %d", dx, dy);
 				sim_step(&s, &m, cmd);
-				int32_t bx, by, tx, ty;
-				worldmodel_utak_square(&m, &bx, &by);
-				table_square_of(s.w.utak, &tx, &ty);
-				Vec2 b = model_to_table(&s, vec2(bx + 0.5, by + 0.5));
-				double ex = fabs(b.x - (tx + 0.5)), ey = fabs(b.y - (ty + 0.5));
+				Vec2 err = belief_error(&s, &m);
+				double ex = err.x, ey = err.y;
 				if (ex > 1 || ey > 1)
 					fprintf(stderr,
 					        "  %s seed %u move %d: off by (%.0f, %.0f)\n",
@@ -479,8 +463,7 @@ TEST_CASE(worldmodel_random_walks_stay_close)
 				exact += ex == 0 && ey == 0;
 				steps++;
 			}
-			worldmodel_free(&m);
-			sim_free(&s);
+			sim_end(&s, &m);
 		}
 	printf("  random walks: %d of %d moves end with the belief on the true square\n", exact,
 	       steps);
