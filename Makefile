@@ -7,8 +7,9 @@
 #                   scikit-image, in one run (the block at the end)
 #   make golden     regenerate golden files (a deliberate act: read the diff)
 #
-# Sources are found by wildcard: a new module is a new src/NAME.c and
-# include/utak/NAME.h, and a new unit test is a new tests/unit/test_NAME.c.
+# Sources are found by wildcard: a new module is a new src/LAYER/NAME.c and
+# include/utak/LAYER/NAME.h (LAYER one of base, plan, body, mind: README.md,
+# "Architecture"), and a new unit test is a new tests/unit/test_NAME.c.
 
 CC      ?= cc
 PREFIX  ?= /usr/local
@@ -26,7 +27,8 @@ LDLIBS  = -lm
 SAN     = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -O1 -g $(SAN)
 
-LIBSRC  = $(filter-out src/main.c,$(wildcard src/*.c))
+LIBSRC  = $(wildcard src/*/*.c) src/svg.c
+HDR     = $(wildcard include/utak/*.h include/utak/*/*.h)
 UNITSRC = $(wildcard tests/unit/test_*.c)
 
 OBJ      = $(LIBSRC:src/%.c=build/rel/%.o)
@@ -41,10 +43,12 @@ utak: build/rel/main.o build/rel/libutak.a
 build/rel/libutak.a: $(OBJ)
 	rm -f $@; ar rcs $@ $(OBJ)
 
-build/rel/%.o: src/%.c $(wildcard include/utak/*.h) | build/rel
+build/rel/%.o: src/%.c $(HDR)
+	@mkdir -p $(@D)
 	$(CC) $(ALLCFLAGS) -c -o $@ $<
 
-build/chk/%.o: src/%.c $(wildcard include/utak/*.h) | build/chk
+build/chk/%.o: src/%.c $(HDR)
+	@mkdir -p $(@D)
 	$(CC) $(CHECKFLAGS) -c -o $@ $<
 
 build/chk/libutak.a: $(CHECKOBJ)
@@ -56,7 +60,7 @@ build/chk/utak: build/chk/main.o build/chk/libutak.a
 build/chk/unit/%: tests/unit/%.c $(wildcard tests/unit/*.h) build/chk/libutak.a | build/chk/unit
 	$(CC) $(CHECKFLAGS) -Itests/unit -o $@ $< build/chk/libutak.a $(LDLIBS)
 
-build/rel build/chk build/chk/unit:
+build/chk/unit:
 	mkdir -p $@
 
 check: build/chk/utak $(UNITBIN)
@@ -88,7 +92,7 @@ install: utak
 	cp man/utak.5 $(DESTDIR)$(PREFIX)/share/man/man5/
 
 format:
-	clang-format -i src/*.c include/utak/*.h tests/unit/*.c tests/unit/*.h
+	clang-format -i src/*.c src/*/*.c include/utak/*.h include/utak/*/*.h tests/unit/*.c tests/unit/*.h
 
 clean:
 	rm -rf build utak
@@ -118,7 +122,8 @@ FUZZBIN  = $(FUZZSRC:tests/fuzz/%.c=build/fuzz/%)
 FUZZOBJ  = $(LIBSRC:src/%.c=build/fuzz/lib/%.o)
 FUZZ_SECONDS ?= 60
 
-build/fuzz/lib/%.o: src/%.c $(wildcard include/utak/*.h) | build/fuzz/lib
+build/fuzz/lib/%.o: src/%.c $(HDR) | build/fuzz/lib
+	@mkdir -p $(@D)
 	$(FUZZCC) $(FUZZFLAGS) -fsanitize=fuzzer-no-link -c -o $@ $<
 
 build/fuzz/libutak.a: $(FUZZOBJ)
@@ -147,7 +152,7 @@ fuzz-run: fuzz
 CXX     ?= g++
 XCHECKFLAGS = -std=c++17 -O2 -g -Wall -Wextra -Wshadow -ffp-contract=off -Iinclude
 
-build/xcheck/xcheck: tests/xcheck/xcheck.cpp build/rel/libutak.a $(wildcard include/utak/*.h) | xcheck-deps build/xcheck
+build/xcheck/xcheck: tests/xcheck/xcheck.cpp build/rel/libutak.a $(HDR) | xcheck-deps build/xcheck
 	$(CXX) $(XCHECKFLAGS) -o $@ tests/xcheck/xcheck.cpp build/rel/libutak.a -lbox2d -lm
 
 build/xcheck:

@@ -52,16 +52,16 @@
 #include <string.h>
 #include <time.h>
 
-#include "utak/cspace.h"
-#include "utak/grid.h"
-#include "utak/gridpath.h"
-#include "utak/movingai.h"
-#include "utak/path.h"
-#include "utak/pathgraph.h"
-#include "utak/rope.h"
-#include "utak/skeleton.h"
-#include "utak/util.h"
-#include "utak/visibility.h"
+#include "utak/plan/cspace.h"
+#include "utak/plan/grid.h"
+#include "utak/plan/gridpath.h"
+#include "utak/plan/movingai.h"
+#include "utak/plan/path.h"
+#include "utak/plan/pathgraph.h"
+#include "utak/plan/rope.h"
+#include "utak/plan/skeleton.h"
+#include "utak/base/util.h"
+#include "utak/plan/visibility.h"
 
 #define PATHBENCH_NAME "pathbench"
 

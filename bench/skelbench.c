@@ -30,10 +30,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "utak/grid.h"
-#include "utak/path.h"
-#include "utak/pathgraph.h"
-#include "utak/skeleton.h"
+#include "utak/plan/grid.h"
+#include "utak/plan/path.h"
+#include "utak/plan/pathgraph.h"
+#include "utak/plan/skeleton.h"
 
 static uint64_t bench_seed = 2026;
 static uint32_t bench_rand(void)

@@ -15,9 +15,9 @@
 #include <string.h>
 #include <time.h>
 
-#include "utak/motion.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/motion.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 static double now_ms(void)
 {

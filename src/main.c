@@ -10,17 +10,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "utak/act.h"
-#include "utak/controller.h"
-#include "utak/eye.h"
-#include "utak/judge.h"
-#include "utak/motion.h"
-#include "utak/retina.h"
+#include "utak/body/act.h"
+#include "utak/mind/controller.h"
+#include "utak/base/eye.h"
+#include "utak/body/judge.h"
+#include "utak/body/motion.h"
+#include "utak/body/retina.h"
 #include "utak/svg.h"
-#include "utak/table.h"
-#include "utak/task.h"
-#include "utak/util.h"
-#include "utak/world.h"
+#include "utak/body/table.h"
+#include "utak/base/task.h"
+#include "utak/base/util.h"
+#include "utak/body/world.h"
 
 #define UTAK_VERSION "0.1.0"
 /* The default limit on action cycles: several times what any task in worlds/

@@ -10,9 +10,9 @@
 
 #include <stdio.h>
 
-#include "utak/controller.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/mind/controller.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 #define SVG_SCALE 12
 

@@ -6,7 +6,7 @@
 #include <math.h>
 
 #include "fuzz.h"
-#include "utak/act.h"
+#include "utak/body/act.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -10,12 +10,12 @@
 
 #include "fuzz.h"
 #include "invariants.h"
-#include "utak/controller.h"
-#include "utak/judge.h"
-#include "utak/motion.h"
-#include "utak/retina.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/mind/controller.h"
+#include "utak/body/judge.h"
+#include "utak/body/motion.h"
+#include "utak/body/retina.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 enum { FUZZ_MIND_MAX_SIDE = 64, FUZZ_MIND_CYCLES = 12 };
 

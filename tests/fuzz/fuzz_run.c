@@ -19,9 +19,9 @@
 
 #include "fuzz.h"
 #include "invariants.h"
-#include "utak/motion.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/motion.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 enum { FUZZ_RUN_MAX_SIDE = 128, FUZZ_RUN_MAX_COMMANDS = 32 };
 

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "fuzz.h"
-#include "utak/task.h"
+#include "utak/base/task.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

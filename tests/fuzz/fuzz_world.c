@@ -9,8 +9,8 @@
 #include <string.h>
 
 #include "fuzz.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 /* Building a TABLE costs time in proportion to its area: above this many squares
  * (a 2048 x 2048 TABLE) the harness checks the reading only, so that the fuzzer

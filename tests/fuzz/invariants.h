@@ -18,9 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "utak/geom.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/base/geom.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 /* Rounding in a rotation grows with the coordinates: a relative tolerance, loose
  * enough for many turns on a large TABLE, tight enough that any real change of

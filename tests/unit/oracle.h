@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "utak/grid.h"
+#include "utak/plan/grid.h"
 
 /* oracle_rand: a 64-bit LCG (Knuth's MMIX constants), deterministic on every platform. */
 static uint64_t oracle_seed = 12345;

@@ -11,7 +11,7 @@
 
 #include <stdbool.h>
 
-#include "utak/geom.h"
+#include "utak/base/geom.h"
 
 /* Liang-Barsky: the chord of segment ab inside the closed box [x0,x0+1]x[y0,y0+1]. */
 static bool clip(Vec2 a, Vec2 b, double x0, double y0, Vec2 *ca, Vec2 *cb)

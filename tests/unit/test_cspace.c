@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/cspace.h"
+#include "utak/plan/cspace.h"
 
 static uint32_t rng_state = 1013904223u;
 static uint32_t rng_next(void)

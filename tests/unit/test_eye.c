@@ -1,6 +1,6 @@
 /* test_eye.c - the eye's anatomy (eye.h): rounding, layout, adjacency, the picture. */
 #include "test.h"
-#include "utak/eye.h"
+#include "utak/base/eye.h"
 
 TEST_CASE(eye_level_rounds_halves_up)
 {

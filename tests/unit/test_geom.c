@@ -7,7 +7,7 @@
 
 #include "projection_oracle.h"
 #include "test.h"
-#include "utak/geom.h"
+#include "utak/base/geom.h"
 
 enum { W = 24, H = 20 };
 

@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/gridpath.h"
-#include "utak/movingai.h"
+#include "utak/plan/gridpath.h"
+#include "utak/plan/movingai.h"
 
 /* A tiny deterministic generator (xorshift32), so the grids are the same everywhere. */
 static uint32_t rng_state = 12345u;

@@ -15,10 +15,10 @@
 #include "../fuzz/invariants.h"
 #include "test.h"
 #include "world_fixture.h"
-#include "utak/act.h"
-#include "utak/motion.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/act.h"
+#include "utak/body/motion.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 /* reads_back: the state written as a world file (utak -o) loads to the same TABLE. */
 static bool reads_back(void)

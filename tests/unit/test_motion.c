@@ -8,9 +8,9 @@
 
 #include "test.h"
 #include "world_fixture.h"
-#include "utak/motion.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/motion.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 
 static double max_x(const Polygon *p)

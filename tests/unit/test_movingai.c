@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "test.h"
-#include "utak/movingai.h"
+#include "utak/plan/movingai.h"
 
 /* write_file: a file under TMPDIR holding text; returns its path (static buffer
  * per slot). */

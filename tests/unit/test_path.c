@@ -1,6 +1,6 @@
 /* test_path.c - the Path polyline (path.h): length by hand computation. */
 #include "test.h"
-#include "utak/path.h"
+#include "utak/plan/path.h"
 
 TEST_CASE(path_length_by_hand)
 {

@@ -6,7 +6,7 @@
 
 #include "oracle.h"
 #include "test.h"
-#include "utak/pathgraph.h"
+#include "utak/plan/pathgraph.h"
 
 /* Sampling step for the brute line check, in cells. */
 #define SAMPLE_STEP 1e-3

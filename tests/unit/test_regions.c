@@ -3,8 +3,8 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/eye.h"
-#include "utak/regions.h"
+#include "utak/base/eye.h"
+#include "utak/mind/regions.h"
 
 static void set_square(Impression *imp, int ox, int oy, uint8_t level)
 {

@@ -4,8 +4,8 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/eye.h"
-#include "utak/retina.h"
+#include "utak/base/eye.h"
+#include "utak/body/retina.h"
 
 /* A 40 x 40 TABLE, Utak at (20.5, 20.5) facing `heading`, a one-square marker 6
  * squares ahead of him and a 2 x 2 block 2 squares to his right (touching nothing). */

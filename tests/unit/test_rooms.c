@@ -5,7 +5,7 @@
 
 #include "oracle.h"
 #include "test.h"
-#include "utak/rooms.h"
+#include "utak/mind/rooms.h"
 
 typedef struct World {
 	Grid g;

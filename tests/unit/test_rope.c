@@ -8,9 +8,9 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/gridpath.h"
-#include "utak/rope.h"
-#include "utak/visibility.h"
+#include "utak/plan/gridpath.h"
+#include "utak/plan/rope.h"
+#include "utak/plan/visibility.h"
 
 static uint32_t rng_state = 88172645u;
 static uint32_t rng_next(void)

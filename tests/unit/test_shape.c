@@ -3,8 +3,8 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/geom.h"
-#include "utak/shape.h"
+#include "utak/base/geom.h"
+#include "utak/mind/shape.h"
 
 static uint8_t mask[64 * 64];
 static int32_t mx0, my0, mx1, my1;

@@ -6,7 +6,7 @@
 
 #include "oracle.h"
 #include "test.h"
-#include "utak/skeleton.h"
+#include "utak/plan/skeleton.h"
 
 /* brute_edt: the definition, with the ring of cells just outside the grid blocked. */
 static int32_t brute_edt_at(const Grid *g, int x, int y)

@@ -3,7 +3,7 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/task.h"
+#include "utak/base/task.h"
 
 static const char *reading(const char *text)
 {

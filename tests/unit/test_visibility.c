@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/gridpath.h"
-#include "utak/visibility.h"
+#include "utak/plan/gridpath.h"
+#include "utak/plan/visibility.h"
 
 static uint32_t rng_state = 2463534242u;
 static uint32_t rng_next(void)

@@ -6,11 +6,11 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/act.h"
-#include "utak/eye.h"
-#include "utak/motion.h"
-#include "utak/retina.h"
-#include "utak/worldmodel.h"
+#include "utak/body/act.h"
+#include "utak/base/eye.h"
+#include "utak/body/motion.h"
+#include "utak/body/retina.h"
+#include "utak/mind/worldmodel.h"
 
 /* Outlines are judged within one square (the tolerance), plus rounding. */
 #define OUTLINE_TOLERANCE (1.0 + 1e-9)

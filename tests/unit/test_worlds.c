@@ -7,8 +7,8 @@
 
 #include "projection_oracle.h"
 #include "test.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 /* expected(w, x, y): the character the dump must show at square (x, y). */
 static char expected(const World *w, int x, int y)

@@ -7,9 +7,9 @@
 #include <string.h>
 
 #include "test.h"
-#include "utak/motion.h"
-#include "utak/table.h"
-#include "utak/world.h"
+#include "utak/body/motion.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 
 static World world;
 static Table table;

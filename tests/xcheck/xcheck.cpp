@@ -41,7 +41,7 @@
 #include <vector>
 
 extern "C" {
-#include "utak/geom.h"
+#include "utak/base/geom.h"
 }
 
 /* The grid the pairs are projected on, in squares: room for two polygons of up to

@@ -1,0 +1,46 @@
+/* judge.h - the ground truth: was the task achieved in the real world? (paper 2.3)
+ * SIMULATOR SIDE.
+ *
+ * The controller believes it has done its task; the judge looks at the world
+ * itself (the World and its TABLE, which the controller never sees) and says
+ * whether it has. Its verdict is the program's: exit status 0 or 1.
+ *
+ * Rooms are those of the fixed space (verge and walls; objects count as space),
+ * found by rooms.c; compass directions are in Utak's frame at the start (his north
+ * is the way he faced). The rules, per task:
+ *   go CORNER       Utak's square is in his starting room and at most JUDGE_SLACK
+ *                   short of the room's free square farthest in that direction
+ *                   (score x + y, signs by the corner, in his frame);
+ *   go next-room    his square is in another room than the one he started in;
+ *   go SHAPE        an object of that shape fills one of the 8 squares around him;
+ *   go round SHAPE  his path winds once round the nearest object of that shape,
+ *                   and ends within JUDGE_HOME of where it began;
+ *   push SHAPE CORNER   the object (of that shape) has a square at most
+ *                   JUDGE_SLACK short of the room's farthest free square;
+ *   push SHAPE next-room / through-door   all its squares lie in another room;
+ *   push SHAPE around-corner   its centre can no longer be seen, along a straight
+ *                   line through the fixed space, from where its centre was. */
+#ifndef UTAK_JUDGE_H
+#define UTAK_JUDGE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "utak/body/table.h"
+#include "utak/base/task.h"
+#include "utak/body/world.h"
+
+/* How far short of a corner counts as in it, in units of the corner score (one
+ * diagonal step = 2): the corner square itself or a neighbour along the walls. */
+#define JUDGE_SLACK 1
+/* How close to his start Utak must end after going round (squares). */
+#define JUDGE_HOME 1.5
+
+/* judge_task(start, end, table, task, trail, n, why, size): the verdict. start is
+ * the world as it began, end and table as it ended, trail the n points Utak
+ * stood at (the first at the start; he went straight from each to the next).
+ * why says what was or was not achieved. */
+bool judge_task(const World *start, const World *end, const Table *table, const Task *task, const Vec2 *trail,
+		int n, char *why, size_t size);
+
+#endif

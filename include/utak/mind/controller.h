@@ -1,0 +1,142 @@
+/* controller.h - the robot-controller: Utak's mind and its action cycle (paper 3.1).
+ * CONTROLLER SIDE.
+ *
+ * The controller is handed the first impression, then, each time it decides an
+ * action, the impression received when Utak halts; it hands back motor commands.
+ * That is all it knows of the world (impression.h). main.c runs the cycle:
+ *
+ *   controller_start(c, first)           steps 1-7: model, task, plan
+ *   while controller_decide(c, &cmd)      steps 8-9: done?  next action
+ *       (the simulator carries out cmd)  step 10
+ *       controller_perceive(c, &cmd, imp) steps 11-13: accommodate, viable?, re-plan
+ */
+#ifndef UTAK_CONTROLLER_H
+#define UTAK_CONTROLLER_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "utak/impression.h"
+#include "utak/plan/path.h"
+#include "utak/mind/planner.h"
+#include "utak/mind/regions.h"
+#include "utak/mind/screen.h"
+#include "utak/base/task.h"
+#include "utak/mind/worldmodel.h"
+
+/* The longest single move or push, in squares: a leg short enough that what Utak
+ * sees on the way (the fovea reaches 4 squares ahead) can change the plan before
+ * he walks into it. */
+#define CONTROLLER_MAX_LEG 4.0
+/* Utak has arrived at a point when his believed point is this close to it. */
+#define CONTROLLER_ARRIVED 0.25
+/* A corner is reached this many squares short of the best floor seen in the room
+ * (the judge's slack, judge.h). */
+#define CONTROLLER_CORNER_SLACK 1
+/* Going round an object: the waypoints stand this far outside its rectangle. */
+#define CONTROLLER_ROUND_MARGIN 1.5
+/* Going round is done when the believed path winds round the object more than this
+ * (the judge's test); else Utak goes round it again, at most this many more times. */
+#define CONTROLLER_ROUND_TURNS 0.99
+#define CONTROLLER_ROUND_LOOPS 2
+/* Frontier goals remembered as reached (older ones are forgotten first). */
+#define CONTROLLER_MAX_VISITED 256
+/* Squares remembered as bumped into (later ones are dropped). */
+#define CONTROLLER_MAX_BUMPED 1024
+/* Cycles without progress (the believed position unchanged) before giving up. */
+#define CONTROLLER_STUCK_CYCLES 4
+/* Pushes remembered, and how often a push may come back to the same square before
+ * the controller calls it going round in circles. */
+#define CONTROLLER_MAX_PUSHES 512
+#define CONTROLLER_CIRCLES 6
+/* Seating an object in a corner: at most this many one-square pushes along each
+ * axis, each until one makes no headway (the eye places walls seen from afar a
+ * square or two off; the object pressed against them is where they really are). */
+#define CONTROLLER_SEAT_PUSHES 8
+
+typedef enum ControllerPhase {
+	PHASE_TRAVEL,	/* walking to a goal point (or exploring toward one) */
+	PHASE_GRASP,	/* beside the object: grasp it */
+	PHASE_PUSH,	/* holding it: pushing it to its goal */
+	PHASE_SEAT,	/* at the corner: pressing it in, one axis at a time */
+	PHASE_RELEASE,	/* it is there: let go */
+	PHASE_DONE,	/* the task is complete, as far as Utak believes */
+	PHASE_FAILED,	/* the task cannot be done, for the reason in `why` */
+} ControllerPhase;
+
+typedef struct Controller {
+	Task task;
+	bool has_task;		/* false for --act runs: perception only */
+	PlannerKind planner_kind;
+	/* Perception (paper 3.3-3.5). */
+	Impression impression;	/* the last one received */
+	Regions regions;
+	WorldModel model;
+	/* Planning (paper 3.6, 4). */
+	Screen screen;
+	Grid space;		/* the grid the last plan was made on (screen or C-space) */
+	Planner planner;
+	Path route;		/* waypoints, model frame, the first one where Utak set off */
+	int next;		/* the waypoint being walked to */
+	Vec2 goal;		/* model frame */
+	bool have_plan;
+	ControllerPhase phase;
+	Vec2 start;		/* Utak's believed point when the task began, model frame */
+	int32_t target;		/* the task's object: its model ident, 0 none */
+	bool exploring;		/* the goal is a frontier of the unseen, not the task's */
+	bool surveying;		/* a push into a corner: going to look at the corner first */
+	/* Frontier goals already reached: a frontier whose unknown stays unknown
+	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
+	Vec2 visited[CONTROLLER_MAX_VISITED];
+	int visited_count;
+	/* Squares found blocked by bumping into them: where a move or push halted,
+	 * the squares its shapes would have entered next. Touch of a kind: the eye
+	 * may have read them as floor (a verge glimpsed coarsely). */
+	int32_t bumped_x[CONTROLLER_MAX_BUMPED], bumped_y[CONTROLLER_MAX_BUMPED];
+	int bumped_count;
+	/* Going round: the points still to visit. */
+	Vec2 round[6];
+	int round_count, round_next;
+	int round_loops;	/* loops added because the path did not wind round it */
+	int32_t round_ident;	/* the object they go round (its model ident) */
+	Path trail;		/* where Utak believed he stood, the start and after each cycle */
+	Box round_rect;		/* and its rectangle when they were laid out */
+	/* Bookkeeping for the trace. */
+	int cycle, replans, stuck;
+	/* Pushing: the squares Utak has stood on since he grasped, for going round in
+	 * circles (CONTROLLER_CIRCLES visits to one square). */
+	int32_t pushed_x[CONTROLLER_MAX_PUSHES], pushed_y[CONTROLLER_MAX_PUSHES];
+	int pushed_count;
+	/* Seating: the axis being pressed along (0 east-west, 1 north-south), the
+	 * pushes made along it, and where the last one set off. */
+	int seat_axis, seat_pushes;
+	Vec2 seat_from;
+	Vec2 last_position;
+	int32_t seen_before;	/* squares seen before the last impression */
+	char note[200];		/* what this cycle's perception and planning did */
+	char why[200];		/* PHASE_FAILED: why */
+} Controller;
+
+void controller_init(Controller *c, PlannerKind planner);
+void controller_free(Controller *c);
+/* controller_set_task(c, t): the task to carry out (step 6). */
+void controller_set_task(Controller *c, const Task *t);
+/* controller_start(c, first): steps 1-5 (default model, first impression, regions,
+ * interpretation, accommodation) and, with a task, step 7 (the first plan). */
+void controller_start(Controller *c, const Impression *first);
+/* controller_decide(c, cmd): steps 8-9. False when there is nothing more to do
+ * (phase DONE or FAILED); else the next command in *cmd. */
+bool controller_decide(Controller *c, MotorCommand *cmd);
+/* controller_perceive(c, cmd, imp): steps 11-13 after cmd was carried out. */
+void controller_perceive(Controller *c, const MotorCommand *cmd, const Impression *imp);
+
+/* controller_dump_screen / _skeleton / _pathgraph / _rooms / _path: the last plan's
+ * screen and planner state (see screen.h, skeleton.h, pathgraph.h, rooms.h,
+ * planner.h); each says so when there is no plan yet. */
+void controller_dump_screen(Controller *c, FILE *f);
+void controller_dump_skeleton(Controller *c, FILE *f);
+void controller_dump_pathgraph(Controller *c, FILE *f);
+void controller_dump_rooms(Controller *c, FILE *f);
+void controller_dump_path(Controller *c, FILE *f);
+
+#endif

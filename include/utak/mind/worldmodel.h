@@ -1,0 +1,241 @@
+/* worldmodel.h - Utak's world model and its accommodation to impressions (paper 3.3, 3.4.3, 3.5).
+ * CONTROLLER SIDE: built from Impressions and the MotorCommands the controller
+ * gave, never from the TABLE or the world file.
+ *
+ * FRAME. Utak's own Cartesian frame at the first impression: x to his right, y
+ * ahead, which is "north" for the tasks (paper 2.3; his heading never changes in
+ * this simulation, READING.md); one unit is one square; the origin is the
+ * lower-left corner of the square he stood on at the first impression. Model
+ * square (x, y) is [x, x+1] x [y, y+1]. Every coordinate below is in this frame,
+ * the "$floor frame", unless said otherwise.
+ *
+ * TWO LAYERS.
+ * 1. The evidence grid: for every square of a WORLDMODEL_SIDE x WORLDMODEL_SIDE
+ *    window centred on the origin, what the eye has said about it: an estimate p
+ *    that it is occupied, the finest resolution it was seen at (fovea >
+ *    intermediate > periphery; 0 = never seen, i.e. unknown), and a confidence.
+ *    This is what every impression updates.
+ * 2. The tree of paper 3.3, derived from the grid after every impression: $org
+ *    (Utak) -> $floor (the floorspace) -> one node per isolated object, and one
+ *    NODE_UNCERTAIN per occupied set the rules cannot yet read. A node has
+ *    its containing rectangle, its boundary as circular lists of straight segments
+ *    (rings: outer boundaries counter-clockwise, holes clockwise), its relation
+ *    to its parent (the offset of its frame's origin in the parent's frame: the
+ *    lower-left corner of its rectangle) and a confidence. $floor's relation to
+ *    $org is the floor origin seen from Utak, -utak: moving Utak changes that one
+ *    relation. An object Utak holds hangs under $org instead of $floor, so
+ *    pushing it moves it with him, again by one relation.
+ *
+ * BELIEF per square: unknown (never seen), occupied (p >= 1/2: a square under a
+ * cell at least half occupied), or floor. A coarse cell with only a little in it
+ * (a 4 x 4 cell at level 1 or 2) therefore reads as floor until it is seen finer;
+ * a planner that must not cut through thin things seen far away can look at
+ * worldmodel_evidence (p, res, conf). Utak's own square is floor (he stands on
+ * it). The first model's objects need not be the first impression's object
+ * regions: a region joined to the verge by a faint cell may be an object here.
+ *
+ * CONFIDENCE RULES (all in [0, 1]):
+ * - An observation of a square in a cell of resolution r with estimate q has
+ *   weight base(r) x |2q - 1|: base is WORLDMODEL_CONF_FOVEA, _INTERMEDIATE,
+ *   _PERIPHERAL; |2q - 1| is 1 for a cell wholly floor or wholly occupied and 0
+ *   for half and half.
+ * - Finer resolution replaces coarser: the square takes q and that weight.
+ * - The same resolution, agreeing (same side of 1/2): p is averaged and the
+ *   confidence grows, c += (1 - c) x weight x WORLDMODEL_CONF_GROWTH.
+ * - The same resolution, contradicting: p = q and c = weight x
+ *   WORLDMODEL_CONF_CONTRADICTED.
+ * - A coarser cell whose level disagrees with what the finer knowledge inside it
+ *   predicts lowers those squares' confidence by WORLDMODEL_CONF_DECAY; a square
+ *   whose confidence falls under WORLDMODEL_CONF_FORGET is re-estimated at the
+ *   coarser resolution. A coarser cell that agrees raises them a little.
+ * - A segment's confidence is the mean over its unit edges of the mean confidence
+ *   of the squares on its two sides (an unknown square counts 0, so a frontier
+ *   of the unseen has low confidence); a vertex's, the mean over the four squares
+ *   meeting at it; a node's, the mean over its squares.
+ *
+ * ACCOMMODATION (paper 3.4.3, 3.5): see worldmodel_accommodate. */
+#ifndef UTAK_WORLDMODEL_H
+#define UTAK_WORLDMODEL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "utak/base/geom.h"
+#include "utak/impression.h"
+
+enum {
+	WORLDMODEL_SIDE = 512,           /* evidence window: squares -256..255 on both axes;
+	                                    larger than any room Utak is given, and 3 MB */
+	WORLDMODEL_DEFAULT_FLOOR = 32,   /* the default $floor: a square of the eye's field */
+	WORLDMODEL_DISPARITY_RADIUS = 3, /* positions tried around the predicted one */
+	WORLDMODEL_MIN_COMPARED = 24,    /* cells a position must be judged on to count */
+	WORLDMODEL_HELD_MAX = 1024,      /* squares of a held object the model can carry */
+};
+
+/* Resolutions, finest last, so that a larger number is finer. */
+enum {
+	WORLDMODEL_UNSEEN = 0,
+	WORLDMODEL_RES_PERIPHERAL = 1,
+	WORLDMODEL_RES_INTERMEDIATE = 2,
+	WORLDMODEL_RES_FOVEA = 3
+};
+
+#define WORLDMODEL_CONF_FOVEA 0.9
+#define WORLDMODEL_CONF_INTERMEDIATE 0.6
+#define WORLDMODEL_CONF_PERIPHERAL 0.3
+#define WORLDMODEL_CONF_GROWTH 0.5
+#define WORLDMODEL_CONF_CONTRADICTED 0.5
+#define WORLDMODEL_CONF_DECAY 0.7
+#define WORLDMODEL_CONF_FORGET 0.2
+/* Disparity (paper 3.5): a position's measure is the sum of |predicted level -
+ * actual level| / 7 over the cells the model can predict, plus a small cost for
+ * each cell it cannot, over the 159 cells other than Utak's. The predicted
+ * position stands unless another does better by WORLDMODEL_DISPARITY_MARGIN
+ * (about a third of one foveal cell wrong). */
+#define WORLDMODEL_DISPARITY_MARGIN 0.002
+
+typedef enum Belief { BELIEF_UNKNOWN, BELIEF_FLOOR, BELIEF_OCCUPIED } Belief;
+
+/* What the eye has said about one square. */
+typedef struct Evidence {
+	float p;      /* estimated probability that the square is occupied */
+	float conf;   /* confidence in p, 0..1 */
+	uint8_t res;  /* finest resolution seen at, WORLDMODEL_UNSEEN if never */
+	uint8_t seen; /* observations at that resolution (saturates at 255) */
+} Evidence;
+
+/* NODE_UNCERTAIN: an occupied set that touches the unseen, so that neither rule of
+ * paper 3.4.2 decides it: the verge, or an object not yet seen whole. It has a
+ * rectangle, squares and confidence but no rings: its sides facing the floor are
+ * already $floor's boundary (segments "beyond occupied"). */
+typedef enum NodeKind { NODE_ORG, NODE_FLOOR, NODE_OBJECT, NODE_UNCERTAIN } NodeKind;
+
+/* One corner of a boundary, and the straight segment from it to the next. */
+typedef struct ModelVertex {
+	Vec2 p;         /* $floor frame */
+	float conf;     /* of the vertex */
+	float seg_conf; /* of the segment to the next vertex */
+	uint8_t beyond; /* a Belief: what lies outside the segment (occupied or unknown) */
+} ModelVertex;
+
+/* A closed boundary: vertices first..first+count-1, circular. */
+typedef struct ModelRing {
+	int32_t first, count;
+	bool hole; /* clockwise: a hole in the node's shape */
+} ModelRing;
+
+typedef struct ModelNode {
+	NodeKind kind;
+	char name[24]; /* "$org", "$floor", "object<ident>" */
+	int32_t ident; /* an object's number, kept from impression to impression
+	                  while its squares overlap; 0 for $org and $floor */
+	int32_t parent, first_son, next_sibling; /* -1 none */
+	Vec2 relation; /* origin of this node's frame in its parent's frame */
+	Box rect;      /* containing rectangle, $floor frame */
+	int32_t first_ring, ring_count;
+	int32_t squares; /* squares believed part of the shape */
+	float conf;
+	bool held; /* an object Utak holds */
+} ModelNode;
+
+/* What the last accommodation did, for the trace and the dump. */
+typedef struct Accommodation {
+	Vec2 predicted;        /* where the command should have put Utak */
+	Vec2 believed;         /* where he is now believed to be */
+	double mismatch;       /* disparity measure at the predicted position */
+	double best_mismatch;  /* ... at the believed position */
+	int32_t compared;      /* cells compared at the predicted position */
+	bool corrected;        /* the disparity search moved the belief */
+	int32_t new_squares;   /* squares seen for the first time */
+	int32_t finer_squares; /* squares seen at a finer resolution than before */
+} Accommodation;
+
+typedef struct WorldModel {
+	Evidence *grid;      /* WORLDMODEL_SIDE^2, row-major, square (x, y) at
+	                        (y + SIDE/2) * SIDE + (x + SIDE/2) */
+	Vec2 utak;           /* believed position of Utak's point, $floor frame */
+	int32_t impressions; /* impressions accommodated */
+	Impression last;     /* the last impression (its touch names a held object) */
+	Accommodation report;
+	int32_t next_ident; /* the last object number given */
+	bool clipped;       /* some impression reached past the evidence window */
+	/* The held object: its squares as offsets from Utak's square. */
+	bool holding;
+	int32_t held_count;
+	int32_t held_dx[WORLDMODEL_HELD_MAX], held_dy[WORLDMODEL_HELD_MAX];
+	/* The derived tree (paper 3.3): arrays linked by index. */
+	ModelNode *node;
+	int32_t node_count, node_cap;
+	ModelRing *ring;
+	int32_t ring_count, ring_cap;
+	ModelVertex *vertex;
+	int32_t vertex_count, vertex_cap;
+	/* The squares ever seen: how many, and their containing rectangle (x0..x1,
+	 * y0..y1, inclusive; meaningless when seen_count is 0). Kept by every change
+	 * to the grid, so that no reader has to scan the whole evidence window. */
+	int32_t seen_count, seen_x0, seen_y0, seen_x1, seen_y1;
+} WorldModel;
+
+/* worldmodel_init(m): the default world model (paper 3.4.3): Utak at the centre of
+ * his first square, a square $floor of WORLDMODEL_DEFAULT_FLOOR around him, no
+ * objects, nothing seen. worldmodel_free releases it. */
+void worldmodel_init(WorldModel *m);
+void worldmodel_free(WorldModel *m);
+
+/* worldmodel_accommodate_first(m, imp): accommodates the default model to the
+ * first impression (paper 3.4.3): records the evidence, fixes $floor's rectangle
+ * and shape, and makes a node for every isolated object. */
+void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
+
+/* worldmodel_accommodate(m, cmd, imp): accommodates to the impression received
+ * after the controller gave cmd (paper 3.5): builds the predicted model (Utak,
+ * and for a push or turn the held object, moved as cmd says), projects it through
+ * the eye into a predicted impression, compares. Differences in cells the model
+ * has not seen, or seen only coarser, are explained by updating the model;
+ * differences where the model is sure are a disparity: the positions within
+ * WORLDMODEL_DISPARITY_RADIUS of the predicted one, and along the commanded
+ * straight line (a move may have halted), are tried, and the best match becomes
+ * Utak's believed position. After a push every position is tried with the held
+ * object beside it (it moves with Utak, halted or not); it is put down beside the
+ * position found, and its squares then seen as floor leave the held set. Then the
+ * evidence is recorded there and the tree derived again. The result is in
+ * m->report. */
+void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impression *imp);
+
+/* worldmodel_predict(m, x, y, pred, known): the impression the model predicts with
+ * Utak on square (x, y); known[i] false where cell i's squares are not all known
+ * and definite (then pred->level[i] is 0). Touch is not predicted ('?'). */
+void worldmodel_predict(const WorldModel *m, int32_t x, int32_t y, Impression *pred,
+                        bool known[RETINA_CELLS]);
+
+/* worldmodel_mismatch(m, x, y, imp, &compared): mean |predicted - actual| / 7 over
+ * the cells known to the model with Utak on (x, y); 1 when none are. */
+double worldmodel_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impression *imp,
+                           int32_t *compared);
+
+/* worldmodel_belief(m, x, y): what the model believes of square (x, y). */
+Belief worldmodel_belief(const WorldModel *m, int32_t x, int32_t y);
+/* worldmodel_known_squares(m): the squares whose belief is not unknown (those seen,
+ * and Utak's own). */
+int32_t worldmodel_known_squares(const WorldModel *m);
+/* worldmodel_evidence(m, x, y): the square's evidence (all zero outside the window). */
+Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y);
+
+/* worldmodel_utak_square(m, &x, &y): the square holding Utak's believed point. */
+void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y);
+/* worldmodel_set_position(m, p): overrides the belief (tests give a wrong one). */
+void worldmodel_set_position(WorldModel *m, Vec2 p);
+
+/* worldmodel_dump(m, f): the report of the last accommodation, the tree (nodes,
+ * relations, rectangles, rings with vertices and segment confidences, at 2
+ * decimals), then the belief map of the seen window, the row farthest north
+ * first: '.' floor, '#' occupied, '?' unknown, '@' Utak. */
+void worldmodel_dump(const WorldModel *m, FILE *f);
+
+/* worldmodel_validate(m, why, size): the tree's invariants: $org the root with one
+ * son $floor; parents and sons agree; rings closed with >= 4 axis-aligned segments
+ * and inside their node's rectangle. */
+bool worldmodel_validate(const WorldModel *m, char *why, size_t size);
+
+#endif

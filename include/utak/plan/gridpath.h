@@ -1,0 +1,103 @@
+/* gridpath.h - A* on the 8-connected grid: the paper's second alternative (paper 4.1).
+ *
+ * The screen becomes a graph: every free cell is a vertex, joined to its 4 edge
+ * neighbours at cost 1 and to its 4 diagonal neighbours at cost sqrt 2. A diagonal
+ * step is allowed only when BOTH orthogonally adjacent cells are free (no cutting
+ * past an occupied corner: the Moving AI convention, see
+ * ../shared/data/movingai/README.md). The search is A* (Hart, Nilsson and Raphael
+ * 1968), the paper's reference [8], with the exact octile heuristic.
+ *
+ * Usage:
+ *	GridPathSearch s;
+ *	gridpath_init(&s, &grid);            // copies the grid; O(w h)
+ *	double len;
+ *	Path path; path_init(&path);
+ *	if (gridpath_find(&s, sx, sy, gx, gy, &path, &len) == GRIDPATH_FOUND) ...
+ *	path_free(&path); gridpath_free(&s);
+ * One GridPathSearch serves any number of queries on the same grid; it must not be
+ * shared between threads. The Path holds the cell centres (x + 0.5, y + 0.5) from
+ * start to goal, one per step, and path.expanded the number of cells expanded.
+ *
+ * MEMORY: 16 bytes per cell of the grid with a one-cell border, plus the open list
+ * (16 bytes per pushed entry; at most 8 pushes per cell, far fewer in practice),
+ * kept between queries.
+ *
+ * PERFORMANCE (pathbench --corner, this 2-core machine, one thread, thread CPU time,
+ * best of 5): corner to corner on 1024 x 1024 maps, Boston_0_1024 29 ms (190 239
+ * cells expanded), 8room_000 enlarged twice 51 ms (353 284), maze512-1-0 enlarged
+ * twice 44 ms (406 361), random512-10-0 enlarged twice 19 ms (110 894). */
+#ifndef UTAK_GRIDPATH_H
+#define UTAK_GRIDPATH_H
+
+#include <stdint.h>
+
+#include "utak/plan/grid.h"
+#include "utak/plan/path.h"
+
+typedef enum GridPathStatus {
+	GRIDPATH_FOUND = 0,    /* a shortest path was found */
+	GRIDPATH_NO_PATH,      /* start and goal are free but not connected */
+	GRIDPATH_BAD_ENDPOINT, /* start or goal is outside the grid or blocked */
+} GridPathStatus;
+
+/* One entry of the open list: a cell and its priority. Public only so that the
+ * search state below can be allocated by the caller; treat it as opaque. */
+typedef struct GridPathOpen {
+	double f;     /* g + h: the priority, smallest first */
+	float g;      /* cost so far: ties in f go to the larger g (a float keeps the
+	                 entry at 16 bytes; it only orders ties, so rounding is harmless) */
+	int32_t cell; /* index into the padded grid */
+} GridPathOpen;
+
+/* One bucket of the open list (opaque, see below). */
+typedef struct GridPathBucket {
+	GridPathOpen *e;
+	int count, cap;
+} GridPathBucket;
+
+/* The state of one cell, kept together so that a visit touches one cache line. */
+typedef struct GridPathNode {
+	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
+	int32_t straight; /* straight steps of the best known path to the cell */
+	int32_t diagonal; /* diagonal steps of the best known path to the cell */
+	uint8_t free;     /* 1 when free; the border cells are 0 */
+	uint8_t from;     /* direction (0..7) of the step that reached it */
+} GridPathNode;
+
+/* The search state for one grid. Cells are indexed in a copy of the grid with a
+ * blocked border one cell wide (width w + 2), so neighbours need no bounds tests. */
+typedef struct GridPathSearch {
+	int32_t w, h;       /* size of the grid searched, in cells */
+	int32_t pw;         /* padded width: w + 2 */
+	GridPathNode *node; /* (w + 2) (h + 2) cells */
+	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
+	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
+	 * the start's f; the current bucket is a binary heap, later ones are unsorted. */
+	GridPathBucket *bucket;
+	int bucket_cap;  /* buckets allocated */
+	int bucket_used; /* buckets touched this query: 0..bucket_used-1 */
+	int bucket_now;  /* the current bucket; no entry lies in an earlier one */
+	double f_start;  /* f of the start cell: the origin of bucket numbers */
+	/* Entries whose f equals that of the cell being expanded, the least in the open
+	 * list: they may be expanded next in any order, so they skip the heap. */
+	GridPathOpen *stack;
+	int stack_count, stack_cap;
+} GridPathSearch;
+
+/* gridpath_init(s, grid): prepares a search on a copy of grid (w, h >= 1). */
+void gridpath_init(GridPathSearch *s, const Grid *grid);
+void gridpath_free(GridPathSearch *s);
+
+/* gridpath_find(s, sx, sy, gx, gy, path, length): a shortest 8-connected path from
+ * cell (sx, sy) to cell (gx, gy). On GRIDPATH_FOUND, path holds the cell centres
+ * and *length the exact length (straight + diagonal sqrt 2, computed from step
+ * counts, not by summing). On other results path is empty and *length is -1.
+ * path->expanded counts the cells expanded (closed) in every case. */
+GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t gx, int32_t gy,
+                             Path *path, double *length);
+
+/* gridpath_octile(dx, dy): the octile distance, the exact 8-connected length on an
+ * empty grid: max - min straight steps plus min diagonal steps. */
+double gridpath_octile(int32_t dx, int32_t dy);
+
+#endif

@@ -1,0 +1,51 @@
+/* util.c - allocation that fails loudly (see util.h). Not from the paper: plumbing. */
+#include "utak/base/util.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void util_out_of_memory(size_t n, size_t size)
+{
+	fprintf(stderr, "utak: out of memory (%zu x %zu bytes)\n", n, size);
+	exit(3);
+}
+
+void *util_alloc(size_t n, size_t size)
+{
+	if (n == 0 || size == 0)
+		n = size = 1;
+	if (n > SIZE_MAX / size)
+		util_out_of_memory(n, size);
+	void *p = calloc(n, size);
+	if (!p)
+		util_out_of_memory(n, size);
+	return p;
+}
+
+void *util_realloc(void *p, size_t n, size_t size)
+{
+	if (n == 0 || size == 0)
+		n = size = 1;
+	if (n > SIZE_MAX / size)
+		util_out_of_memory(n, size);
+	void *q = realloc(p, n * size);
+	if (!q)
+		util_out_of_memory(n, size);
+	return q;
+}
+
+void *util_grow(void *p, int *cap, int need, size_t size)
+{
+	if (need <= *cap)
+		return p;
+	int c = *cap > 0 ? *cap : 8;
+	while (c < need) {
+		if (c > INT32_MAX / 2)
+			util_out_of_memory((size_t)need, size);
+		c *= 2;
+	}
+	*cap = c;
+	return util_realloc(p, (size_t)c, size);
+}

@@ -1,0 +1,237 @@
+/* judge.c - the ground-truth verdict on a task (paper 2.3). SIMULATOR SIDE: it reads
+ * the real world, which the controller never does. The rules are in judge.h. */
+#include "utak/body/judge.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/plan/pathgraph.h"
+#include "utak/mind/rooms.h"
+#include "utak/mind/shape.h"
+#include "utak/plan/skeleton.h"
+#include "utak/base/util.h"
+
+/* The fixed space and its rooms. The pathgraph borrows the grid and skeleton. */
+typedef struct Fixed {
+	Grid grid;
+	Skeleton skeleton;
+	Pathgraph pathgraph;
+	Rooms rooms;
+} Fixed;
+
+static void fixed_build(Fixed *f, const Table *t)
+{
+	grid_init(&f->grid, t->w, t->h, GRID_FREE);
+	for (int64_t i = 0; i < (int64_t)t->w * t->h; i++)
+		if (t->owner[i] == TABLE_VERGE)
+			f->grid.cells[i] = GRID_BLOCKED;
+	skeleton_init(&f->skeleton);
+	pathgraph_init(&f->pathgraph);
+	rooms_init(&f->rooms);
+	skeleton_compute(&f->skeleton, &f->grid);
+	pathgraph_build(&f->pathgraph, &f->skeleton, &f->grid);
+	rooms_find(&f->rooms, &f->pathgraph);
+}
+
+static void fixed_free(Fixed *f)
+{
+	rooms_free(&f->rooms);
+	pathgraph_free(&f->pathgraph);
+	skeleton_free(&f->skeleton);
+	grid_free(&f->grid);
+}
+
+/* own(h, x, y): a TABLE square's coordinates in Utak's frame (inverse of
+ * world_own_to_table), for compass scores. */
+static void own(Heading h, int32_t x, int32_t y, int64_t *ox, int64_t *oy)
+{
+	switch (h) {
+	case HEADING_NORTH:
+		*ox = x, *oy = y;
+		break;
+	case HEADING_EAST:
+		*ox = -(int64_t)y, *oy = x;
+		break;
+	case HEADING_SOUTH:
+		*ox = -(int64_t)x, *oy = -(int64_t)y;
+		break;
+	case HEADING_WEST:
+		*ox = y, *oy = -(int64_t)x;
+		break;
+	}
+}
+
+static int64_t score(Heading h, Corner k, int32_t x, int32_t y)
+{
+	int64_t ox = 0, oy = 0;
+	own(h, x, y, &ox, &oy);
+	int sx, sy;
+	task_corner_signs(k, &sx, &sy);
+	return sx * ox + sy * oy;
+}
+
+/* Squares of object k on the table, as a mask of its containing rectangle. */
+typedef struct ObjectSquares {
+	int32_t x0, y0, x1, y1;
+	int64_t count;
+	double cx, cy;	/* centre of its squares */
+} ObjectSquares;
+
+static ObjectSquares object_squares(const Table *t, int32_t k)
+{
+	ObjectSquares o = {t->w, t->h, -1, -1, 0, 0, 0};
+	for (int32_t y = 0; y < t->h; y++)
+		for (int32_t x = 0; x < t->w; x++)
+			if (t->owner[(int64_t)y * t->w + x] == k + 1) {
+				o.x0 = x < o.x0 ? x : o.x0;
+				o.y0 = y < o.y0 ? y : o.y0;
+				o.x1 = x > o.x1 ? x : o.x1;
+				o.y1 = y > o.y1 ? y : o.y1;
+				o.count++;
+				o.cx += x + 0.5;
+				o.cy += y + 0.5;
+			}
+	if (o.count) {
+		o.cx /= (double)o.count;
+		o.cy /= (double)o.count;
+	}
+	return o;
+}
+
+static Shape object_shape(const Table *t, int32_t k)
+{
+	ObjectSquares o = object_squares(t, k);
+	if (o.count == 0)
+		return SHAPE_NONE;
+	int32_t w = o.x1 - o.x0 + 1, h = o.y1 - o.y0 + 1;
+	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
+	for (int32_t y = 0; y < h; y++)
+		for (int32_t x = 0; x < w; x++)
+			mask[y * w + x] = t->owner[(int64_t)(y + o.y0) * t->w + x + o.x0] == k + 1;
+	Shape s = shape_classify(mask, w, h);
+	free(mask);
+	return s;
+}
+
+/* target(start, table0, shape): the object of that shape nearest Utak at the start. */
+static int32_t target(const World *start, const Table *t0, Shape shape)
+{
+	int32_t best = -1;
+	double best_d = INFINITY;
+	for (int32_t k = 0; k < start->object_count; k++) {
+		if (object_shape(t0, k) != shape)
+			continue;
+		ObjectSquares o = object_squares(t0, k);
+		double d = hypot(o.cx - start->utak.x, o.cy - start->utak.y);
+		if (d < best_d) {
+			best_d = d;
+			best = k;
+		}
+	}
+	return best;
+}
+
+bool judge_task(const World *start, const World *end, const Table *table, const Task *task, const Vec2 *trail,
+		int n, char *why, size_t size)
+{
+	Table t0;
+	Diag d;
+	if (table_build(&t0, start, &d)) {
+		snprintf(why, size, "cannot rebuild the starting TABLE: %s", d.msg);
+		return false;
+	}
+	Fixed f;
+	fixed_build(&f, table);
+	Heading h = start->heading;
+	const char *shape = task_shape_name(task->shape);
+	int32_t sx, sy, ex, ey;
+	table_square_of(start->utak, &sx, &sy);
+	table_square_of(end->utak, &ex, &ey);
+	int32_t start_room = rooms_at(&f.rooms, sx, sy), end_room = rooms_at(&f.rooms, ex, ey);
+	bool ok = false;
+	int32_t k = task->shape == SHAPE_NONE ? -1 : target(start, &t0, task->shape);
+	if (task->shape != SHAPE_NONE && k < 0) {
+		snprintf(why, size, "there is no %s in this world", shape);
+		goto done;
+	}
+	switch (task->kind) {
+	case TASK_GO_CORNER:
+	case TASK_PUSH_CORNER: {
+		int64_t best = INT64_MIN;
+		for (int32_t y = 0; y < table->h; y++)
+			for (int32_t x = 0; x < table->w; x++)
+				if (rooms_at(&f.rooms, x, y) == start_room)
+					best = fmax(best, score(h, task->corner, x, y));
+		int64_t got = INT64_MIN;
+		if (task->kind == TASK_GO_CORNER) {
+			got = end_room == start_room ? score(h, task->corner, ex, ey) : INT64_MIN;
+		} else {
+			for (int32_t y = 0; y < table->h; y++)
+				for (int32_t x = 0; x < table->w; x++)
+					if (table->owner[(int64_t)y * table->w + x] == k + 1 && rooms_at(&f.rooms, x, y) == start_room)
+						got = fmax(got, score(h, task->corner, x, y));
+		}
+		ok = got != INT64_MIN && got >= best - JUDGE_SLACK;
+		if (got == INT64_MIN)
+			snprintf(why, size, "%s%s is not in the room Utak started in",
+				 task->kind == TASK_GO_CORNER ? "Utak" : "the ", task->kind == TASK_GO_CORNER ? "" : shape);
+		else
+			snprintf(why, size, "%s %s %lld short of the %s (slack %d)",
+				 task->kind == TASK_GO_CORNER ? "Utak" : "the", task->kind == TASK_GO_CORNER ? "is" : shape,
+				 (long long)(best - got), task_corner_name(task->corner), JUDGE_SLACK);
+		break;
+	}
+	case TASK_GO_NEXT_ROOM:
+		ok = end_room >= 0 && end_room != start_room;
+		snprintf(why, size, ok ? "Utak is in another room than he started in" : "Utak is still in the room he started in");
+		break;
+	case TASK_GO_SHAPE:
+		for (int i = 0; i < 8 && !ok; i++) {
+			int32_t x, y;
+			world_touch_square(end, i, &x, &y);
+			ok = table_owner(table, x, y) == k + 1;
+		}
+		snprintf(why, size, ok ? "Utak touches the %s" : "Utak does not touch the %s", shape);
+		break;
+	case TASK_GO_ROUND: {
+		ObjectSquares o = object_squares(&t0, k);
+		double turns = n >= 3 ? geom_winding(trail, n, vec2(o.cx, o.cy)) : 0;
+		double home = hypot(end->utak.x - start->utak.x, end->utak.y - start->utak.y);
+		ok = fabs(turns) > 0.99 && home <= JUDGE_HOME;
+		snprintf(why, size, "Utak's path winds %.2f times round the %s and ends %.2f from its start", fabs(turns),
+			 shape, home);
+		break;
+	}
+	case TASK_PUSH_NEXT_ROOM:
+	case TASK_PUSH_THROUGH_DOOR: {
+		ObjectSquares o0 = object_squares(&t0, k);
+		int32_t from = rooms_at(&f.rooms, (int32_t)floor(o0.cx), (int32_t)floor(o0.cy)), room = -2;
+		bool one_room = true;
+		for (int32_t y = 0; y < table->h; y++)
+			for (int32_t x = 0; x < table->w; x++)
+				if (table->owner[(int64_t)y * table->w + x] == k + 1) {
+					int32_t r = rooms_at(&f.rooms, x, y);
+					if (room == -2)
+						room = r;
+					else if (r != room)
+						one_room = false;
+				}
+		ok = one_room && room >= 0 && room != from;
+		snprintf(why, size, ok ? "the %s is wholly in another room" : "the %s is not wholly in another room", shape);
+		break;
+	}
+	case TASK_PUSH_AROUND_CORNER: {
+		ObjectSquares o0 = object_squares(&t0, k), o1 = object_squares(table, k);
+		ok = !pathgraph_segment_free(&f.grid, vec2(o0.cx, o0.cy), vec2(o1.cx, o1.cy));
+		snprintf(why, size, ok ? "the %s is out of sight of where it was" : "the %s can still be seen from where it was",
+			 shape);
+		break;
+	}
+	}
+done:
+	fixed_free(&f);
+	table_free(&t0);
+	return ok;
+}
