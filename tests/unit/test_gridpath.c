@@ -1,7 +1,7 @@
 /* test_gridpath.c - grid A* (gridpath.h, paper 4.1) against two independent oracles:
  * a plain Dijkstra over the same 8-connected graph on random grids, and the
- * published optima of Moving AI scenarios (../shared/data/movingai, which CI has:
- * missing data is a failure, not a skip). */
+ * published optima of Moving AI scenarios (the copies in tests/data/movingai, so a
+ * fresh clone tests itself: missing data is a failure, not a skip). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -169,9 +169,9 @@ TEST_CASE(gridpath_matches_published_optima)
 	Path p;
 	path_init(&p);
 	for (size_t m = 0; m < sizeof maps / sizeof maps[0]; m++) {
-		snprintf(mpath, sizeof mpath, "../shared/data/movingai/maps/mapf/%s.map", maps[m]);
+		snprintf(mpath, sizeof mpath, "tests/data/movingai/maps/mapf/%s.map", maps[m]);
 		snprintf(spath, sizeof spath,
-		         "../shared/data/movingai/scenarios/mapf/scen-even/%s-even-1.scen",
+		         "tests/data/movingai/scenarios/mapf/scen-even/%s-even-1.scen",
 		         maps[m]);
 		Grid g;
 		MovingAiScen scen;
