@@ -22,7 +22,8 @@
 #include "utak/base/util.h"
 #include "utak/body/world.h"
 
-#define UTAK_VERSION "0.1.0"
+/* The Makefile reads the version from this line (utak-plan.pc). */
+#define UTAK_VERSION "0.2.0"
 /* The default limit on action cycles: several times what any task in worlds/
  * needs, small enough that a hopeless task ends within a second or two. */
 #define UTAK_MAX_CYCLES 300
@@ -46,7 +47,7 @@ static const char usage_text[] =
 	"  -o FILE           write the final state as a world file\n"
 	"  -n, --dry-run     read WORLD and TASK, say how the task reads, and stop\n"
 	"  -h, --help        this text\n"
-	"  -V, --version     the version\n"
+	"  -V, --version     the version and the licence\n"
 	"See utak(1) and, for the world file, utak(5).\n";
 
 typedef struct Body {
@@ -331,7 +332,10 @@ int main(int argc, char **argv)
 			fputs(usage_text, stdout);
 			return 0;
 		case 'V':
-			puts("utak " UTAK_VERSION);
+			fputs("utak " UTAK_VERSION "\n"
+			      "Copyright (c) 2026 the utak authors. MIT licence: see LICENSE.\n"
+			      "After R. S. Rosenberg and P. F. Jenkin, \"Spatial problems in a simulated robot\".\n",
+			      stdout);
 			return 0;
 		case ':':
 			return usage_error("option '%s' needs an argument", argv[optind - 1]);
