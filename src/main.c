@@ -41,6 +41,9 @@ static const char usage_text[] =
 	"                    model, screen, skeleton, pathgraph, rooms, path\n"
 	"  --planner NAME    skeleton (the paper's, default), grid or visibility\n"
 	"  --max-cycles N    give up a task after N action cycles (default 300)\n"
+	"  --noise SIGMA     noisy motion: each move and push goes astray by a Gaussian\n"
+	"                    of SIGMA squares per square moved, each turn likewise\n"
+	"  --seed N          the seed of the noise (default 1)\n"
 	"  --svg FILE        draw the run as an SVG picture\n"
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
@@ -53,6 +56,7 @@ static const char usage_text[] =
 typedef struct Body {
 	World world;
 	Table table;
+	MotionNoise noise; /* the simulator's motor noise (sigma 0: exact) */
 	Impression sensed; /* what the senses gave after the last halt */
 } Body;
 
@@ -183,6 +187,8 @@ typedef struct Options {
 	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose;
 	PlannerKind planner;
 	long max_cycles;
+	double noise;          /* --noise SIGMA */
+	unsigned long long seed; /* --seed N */
 } Options;
 
 /* act(o, body, ctl, cmds, n): the --act run: each command, its outcome, and the
@@ -191,7 +197,7 @@ static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCo
 {
 	for (int i = 0; i < n; i++) {
 		MotorOutcome out;
-		motion_execute(&body->world, &body->table, &cmds[i], &out);
+		motion_execute_noisy(&body->world, &body->table, &cmds[i], &body->noise, &out);
 		printf("act %d: ", i + 1);
 		motion_print(&cmds[i], &out, stdout);
 		putchar('\n');
@@ -214,8 +220,11 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 	task_short_form(task, form, sizeof form);
 	if (!o->quiet) {
 		const char *number = task_paper_number(task);
-		printf("task: %s%s%s, planner %s\n", form, number ? ", the paper's task " : "", number ? number : "",
+		printf("task: %s%s%s, planner %s", form, number ? ", the paper's task " : "", number ? number : "",
 		       planner_name(o->planner));
+		if (o->noise > 0)
+			printf(", noise %g seed %llu", o->noise, o->seed);
+		putchar('\n');
 		bool first[DUMP_COUNT] = {[DUMP_TABLE] = true, [DUMP_RETINA] = true};
 		print_dumps(o->any_dump || o->verbose ? o->want : first, body, ctl);
 	}
@@ -232,7 +241,7 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 		}
 		cycle++;
 		MotorOutcome out;
-		motion_execute(&body->world, &body->table, &cmd, &out);
+		motion_execute_noisy(&body->world, &body->table, &cmd, &body->noise, &out);
 		trail = util_grow(trail, &cap, count + 1, sizeof *trail);
 		trail[count++] = body->world.utak;
 		retina_sense(&body->world, &body->table, &body->sensed);
@@ -287,9 +296,10 @@ int main(int argc, char **argv)
 		{"svg", required_argument, NULL, 's'},	      {"quiet", no_argument, NULL, 'q'},
 		{"verbose", no_argument, NULL, 'v'},	      {"help", no_argument, NULL, 'h'},
 		{"dry-run", no_argument, NULL, 'n'},	      {"version", no_argument, NULL, 'V'},
+		{"noise", required_argument, NULL, 'N'},      {"seed", required_argument, NULL, 'S'},
 		{NULL, 0, NULL, 0},
 	};
-	Options o = {.planner = PLANNER_SKELETON, .max_cycles = UTAK_MAX_CYCLES};
+	Options o = {.planner = PLANNER_SKELETON, .max_cycles = UTAK_MAX_CYCLES, .seed = 1};
 	int c;
 	opterr = 0;
 	while ((c = getopt_long(argc, argv, ":o:hnqvV", longopts, NULL)) != -1) {
@@ -312,6 +322,19 @@ int main(int argc, char **argv)
 			o.max_cycles = strtol(optarg, &end, 10);
 			if (errno || end == optarg || *end || o.max_cycles < 0 || o.max_cycles > UTAK_MAX_CYCLES_LIMIT)
 				return usage_error("--max-cycles: '%s' is not a whole number from 0 to 100000", optarg);
+			break;
+		case 'N':
+			errno = 0;
+			o.noise = strtod(optarg, &end);
+			if (errno || end == optarg || *end || !(o.noise >= 0 && o.noise <= MOTION_NOISE_MAX))
+				return usage_error("--noise: '%s' is not a number from 0 to 1", optarg);
+			break;
+		case 'S':
+			errno = 0;
+			o.seed = strtoull(optarg, &end, 10);
+			if (errno || end == optarg || *end || optarg[0] == '-' || optarg[0] == '+')
+				return usage_error("--seed: '%s' is not a whole number from 0 to 18446744073709551615",
+						   optarg);
 			break;
 		case 's':
 			o.svgfile = optarg;
@@ -374,6 +397,7 @@ int main(int argc, char **argv)
 		free(cmds);
 		return 2;
 	}
+	motion_noise_init(&body.noise, o.noise, o.seed);
 	int status = 0;
 	if (o.dry_run) {
 		if (o.task_text) {
