@@ -48,7 +48,7 @@ OBJ      = $(LIBSRC:src/%.c=build/rel/%.o)
 CHECKOBJ = $(LIBSRC:src/%.c=build/chk/%.o)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/chk/unit/%)
 
-all: utak build/rel/libutak-plan.a build/rel/utak-plan.pc
+all: utak build/rel/libutak-plan.a
 
 utak: build/rel/main.o build/rel/libutak.a
 	$(CC) $(ALLCFLAGS) $(LDFLAGS) -o $@ build/rel/main.o build/rel/libutak.a $(LDLIBS)
@@ -59,11 +59,14 @@ build/rel/libutak.a: $(OBJ)
 build/rel/libutak-plan.a: $(PLANOBJ)
 	rm -f $@; ar rcs $@ $(PLANOBJ)
 
-# The pkg-config file names the directories the library is installed in.
-build/rel/utak-plan.pc: utak-plan.pc.in Makefile
+# The pkg-config file names the directories the library is installed in, so it is
+# made afresh by every install (FORCE): PREFIX and LIBDIR may differ each time.
+build/rel/utak-plan.pc: utak-plan.pc.in FORCE
 	@mkdir -p $(@D)
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
 	    -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' utak-plan.pc.in >$@
+
+FORCE:
 
 build/rel/%.o: src/%.c $(HDR)
 	@mkdir -p $(@D)
@@ -155,7 +158,7 @@ format:
 clean:
 	rm -rf build utak
 
-.PHONY: all check check-deps golden readme bench install uninstall format clean
+.PHONY: FORCE all check check-deps golden readme bench install uninstall format clean
 .SUFFIXES:
 
 # ---- reliability (issue 6): fuzzing and the Box2D cross-check ------------------
