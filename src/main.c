@@ -45,6 +45,7 @@ static const char usage_text[] =
 	"                    of SIGMA squares per square moved, each turn likewise\n"
 	"  --seed N          the seed of the noise (default 1)\n"
 	"  --svg FILE        draw the run as an SVG picture\n"
+
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
 	"  -o FILE           write the final state as a world file\n"
@@ -191,6 +192,46 @@ typedef struct Options {
 	unsigned long long seed; /* --seed N */
 } Options;
 
+/* write_file(path, fn, ctx): writes an output file with fn, every write checked.
+ * Returns 0, or 2 after "utak: PATH: reason" on stderr. */
+typedef int WriteFn(FILE *f, void *ctx);
+static int write_file(const char *path, WriteFn *fn, void *ctx)
+{
+	FILE *f = fopen(path, "w");
+	if (!f) {
+		fprintf(stderr, "utak: %s: %s\n", path, strerror(errno));
+		return 2;
+	}
+	errno = 0;
+	bool failed = fn(f, ctx) != 0 || ferror(f);
+	int why = errno;
+	if (fclose(f) != 0 && !failed) {
+		failed = true;
+		why = errno;
+	}
+	if (failed) {
+		fprintf(stderr, "utak: %s: %s\n", path, why ? strerror(why) : "write error");
+		return 2;
+	}
+	return 0;
+}
+
+/* What the picture is drawn from (write_file's ctx). */
+typedef struct SvgOut {
+	const Body *body;
+	const Controller *ctl;
+	const Vec2 *trail;
+	int count;
+	const char *title, *verdict;
+} SvgOut;
+
+static int write_svg(FILE *f, void *ctx)
+{
+	const SvgOut *s = ctx;
+	svg_draw(f, &s->body->world, &s->body->table, s->ctl, s->trail, s->count, s->title, s->verdict);
+	return 0;
+}
+
 /* act(o, body, ctl, cmds, n): the --act run: each command, its outcome, and the
  * mind perceiving the impression that follows (paper 3.1 steps 10-11). */
 static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
@@ -258,34 +299,32 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 		bool last[DUMP_COUNT] = {[DUMP_TABLE] = true};
 		print_dumps(last, body, ctl);
 	}
-	if (o->svgfile) {
-		FILE *f = fopen(o->svgfile, "w");
-		if (f) {
-			svg_draw(f, &body->world, &body->table, ctl, trail, count);
-			fclose(f);
-		} else {
-			fprintf(stderr, "utak: %s: cannot write: %s\n", o->svgfile, strerror(errno));
-		}
-	}
-	char why[256];
+	char why[256], verdict[640];
 	bool achieved = judge_task(start, &body->world, &body->table, task, trail, count, why, sizeof why);
-	free(trail);
 	const char *belief = ctl->phase == PHASE_DONE ? "achieved" : "not achieved";
-	if (achieved) {
-		if (ctl->phase == PHASE_DONE)
-			printf("task: achieved (%s, %ld cycles)\n", why, cycle);
-		else
-			printf("task: achieved (%s, %ld cycles; Utak believes it not achieved: %s)\n", why, cycle,
-			       ctl->phase == PHASE_FAILED ? ctl->why : "he was still at work");
-		return 0;
-	}
-	if (out_of_cycles)
-		printf("task: failed: out of cycles (%ld); %s\n", o->max_cycles, why);
+	if (achieved && ctl->phase == PHASE_DONE)
+		snprintf(verdict, sizeof verdict, "task: achieved (%s, %ld cycles)", why, cycle);
+	else if (achieved)
+		snprintf(verdict, sizeof verdict, "task: achieved (%s, %ld cycles; Utak believes it not achieved: %s)", why,
+			 cycle, ctl->phase == PHASE_FAILED ? ctl->why : "he was still at work");
+	else if (out_of_cycles)
+		snprintf(verdict, sizeof verdict, "task: failed: out of cycles (%ld); %s", o->max_cycles, why);
 	else if (ctl->phase == PHASE_FAILED)
-		printf("task: failed: %s; %s\n", ctl->why, why);
+		snprintf(verdict, sizeof verdict, "task: failed: %s; %s", ctl->why, why);
 	else
-		printf("task: failed: %s (Utak believes it %s)\n", why, belief);
-	return 1;
+		snprintf(verdict, sizeof verdict, "task: failed: %s (Utak believes it %s)", why, belief);
+	int status = achieved ? 0 : 1;
+	if (o->svgfile) {
+		char title[400];
+		const char *number = task_paper_number(task);
+		snprintf(title, sizeof title, "%s%s%s in %s", form, number ? ", the paper's task " : "",
+			 number ? number : "", body->world.file);
+		if (write_file(o->svgfile, write_svg, &(SvgOut){body, ctl, trail, count, title, verdict}))
+			status = 2;
+	}
+	free(trail);
+	printf("%s\n", verdict);
+	return status;
 }
 
 int main(int argc, char **argv)
