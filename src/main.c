@@ -16,6 +16,7 @@
 #include "utak/body/judge.h"
 #include "utak/body/motion.h"
 #include "utak/body/retina.h"
+#include "utak/replay.h"
 #include "utak/svg.h"
 #include "utak/body/table.h"
 #include "utak/base/task.h"
@@ -45,7 +46,7 @@ static const char usage_text[] =
 	"                    of SIGMA squares per square moved, each turn likewise\n"
 	"  --seed N          the seed of the noise (default 1)\n"
 	"  --svg FILE        draw the run as an SVG picture\n"
-
+	"  --html FILE       write a replay of the run, cycle by cycle, as one HTML page\n"
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
 	"  -o FILE           write the final state as a world file\n"
@@ -184,7 +185,7 @@ static void print_dumps(const bool want[DUMP_COUNT], const Body *b, Controller *
 /* ---- the run ------------------------------------------------------------------------ */
 
 typedef struct Options {
-	const char *act, *outfile, *svgfile, *task_text;
+	const char *act, *outfile, *svgfile, *htmlfile, *task_text;
 	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose;
 	PlannerKind planner;
 	long max_cycles;
@@ -216,6 +217,18 @@ static int write_file(const char *path, WriteFn *fn, void *ctx)
 	return 0;
 }
 
+/* What the replay's page is written from (write_file's ctx). */
+typedef struct ReplayOut {
+	Replay *rec;
+	const char *verdict;
+} ReplayOut;
+
+static int write_replay(FILE *f, void *ctx)
+{
+	const ReplayOut *r = ctx;
+	return replay_write(r->rec, r->verdict, f);
+}
+
 /* What the picture is drawn from (write_file's ctx). */
 typedef struct SvgOut {
 	const Body *body;
@@ -234,8 +247,11 @@ static int write_svg(FILE *f, void *ctx)
 
 /* act(o, body, ctl, cmds, n): the --act run: each command, its outcome, and the
  * mind perceiving the impression that follows (paper 3.1 steps 10-11). */
-static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
+static int run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
 {
+	Replay *rec = o->htmlfile ? replay_new(&body->world, &body->table, NULL, planner_name(o->planner)) : NULL;
+	if (rec)
+		replay_start(rec, &body->world, &body->table, &body->sensed, ctl);
 	for (int i = 0; i < n; i++) {
 		MotorOutcome out;
 		motion_execute_noisy(&body->world, &body->table, &cmds[i], &body->noise, &out);
@@ -244,6 +260,8 @@ static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCo
 		putchar('\n');
 		retina_sense(&body->world, &body->table, &body->sensed);
 		controller_perceive(ctl, &cmds[i], &body->sensed);
+		if (rec)
+			replay_cycle(rec, &body->world, &body->table, &body->sensed, ctl, &cmds[i], &out);
 	}
 	if (!o->any_dump) {
 		bool table_only[DUMP_COUNT] = {[DUMP_TABLE] = true};
@@ -251,6 +269,14 @@ static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCo
 	} else {
 		print_dumps(o->want, body, ctl);
 	}
+	int status = 0;
+	if (rec) {
+		char verdict[64];
+		snprintf(verdict, sizeof verdict, "%d motor commands carried out", n);
+		status = write_file(o->htmlfile, write_replay, &(ReplayOut){rec, verdict});
+		replay_free(rec);
+	}
+	return status;
 }
 
 /* run_task(o, body, ctl, task): the action cycle on a task, then the verdict of the
@@ -269,6 +295,9 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 		bool first[DUMP_COUNT] = {[DUMP_TABLE] = true, [DUMP_RETINA] = true};
 		print_dumps(o->any_dump || o->verbose ? o->want : first, body, ctl);
 	}
+	Replay *rec = o->htmlfile ? replay_new(&body->world, &body->table, form, planner_name(o->planner)) : NULL;
+	if (rec)
+		replay_start(rec, &body->world, &body->table, &body->sensed, ctl);
 	int cap = 64, count = 0;
 	Vec2 *trail = util_alloc((size_t)cap, sizeof *trail);
 	trail[count++] = body->world.utak;
@@ -281,12 +310,16 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 			break;
 		}
 		cycle++;
+		if (rec)
+			replay_decided(rec, ctl);
 		MotorOutcome out;
 		motion_execute_noisy(&body->world, &body->table, &cmd, &body->noise, &out);
 		trail = util_grow(trail, &cap, count + 1, sizeof *trail);
 		trail[count++] = body->world.utak;
 		retina_sense(&body->world, &body->table, &body->sensed);
 		controller_perceive(ctl, &cmd, &body->sensed);
+		if (rec)
+			replay_cycle(rec, &body->world, &body->table, &body->sensed, ctl, &cmd, &out);
 		if (!o->quiet) {
 			printf("cycle %ld: ", cycle);
 			motion_print(&cmd, &out, stdout);
@@ -322,6 +355,11 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 		if (write_file(o->svgfile, write_svg, &(SvgOut){body, ctl, trail, count, title, verdict}))
 			status = 2;
 	}
+	if (rec) {
+		if (write_file(o->htmlfile, write_replay, &(ReplayOut){rec, verdict}))
+			status = 2;
+		replay_free(rec);
+	}
 	free(trail);
 	printf("%s\n", verdict);
 	return status;
@@ -336,6 +374,7 @@ int main(int argc, char **argv)
 		{"verbose", no_argument, NULL, 'v'},	      {"help", no_argument, NULL, 'h'},
 		{"dry-run", no_argument, NULL, 'n'},	      {"version", no_argument, NULL, 'V'},
 		{"noise", required_argument, NULL, 'N'},      {"seed", required_argument, NULL, 'S'},
+		{"html", required_argument, NULL, 'H'},
 		{NULL, 0, NULL, 0},
 	};
 	Options o = {.planner = PLANNER_SKELETON, .max_cycles = UTAK_MAX_CYCLES, .seed = 1};
@@ -377,6 +416,9 @@ int main(int argc, char **argv)
 			break;
 		case 's':
 			o.svgfile = optarg;
+			break;
+		case 'H':
+			o.htmlfile = optarg;
 			break;
 		case 'o':
 			o.outfile = optarg;
@@ -462,7 +504,7 @@ int main(int argc, char **argv)
 		if (o.task_text)
 			status = run_task(&o, &body, ctl, &task, &start);
 		else
-			run_act(&o, &body, ctl, cmds, ncmds);
+			status = run_act(&o, &body, ctl, cmds, ncmds);
 		controller_free(ctl);
 		free(ctl);
 		free(start.objects);
