@@ -47,6 +47,7 @@ static const char usage_text[] =
 	"  --seed N          the seed of the noise (default 1)\n"
 	"  --svg FILE        draw the run as an SVG picture\n"
 	"  --html FILE       write a replay of the run, cycle by cycle, as one HTML page\n"
+	"  --step            print every dump after each cycle and wait for Enter\n"
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
 	"  -o FILE           write the final state as a world file\n"
@@ -186,7 +187,7 @@ static void print_dumps(const bool want[DUMP_COUNT], const Body *b, Controller *
 
 typedef struct Options {
 	const char *act, *outfile, *svgfile, *htmlfile, *task_text;
-	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose;
+	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose, step;
 	PlannerKind planner;
 	long max_cycles;
 	double noise;          /* --noise SIGMA */
@@ -245,6 +246,19 @@ static int write_svg(FILE *f, void *ctx)
 	return 0;
 }
 
+/* step_wait(stepping): --step: waits for a line on standard input; "q" or the end
+ * of the input stops the waiting (the run goes on to its end). */
+static void step_wait(bool *stepping)
+{
+	if (!*stepping)
+		return;
+	fputs("-- Enter: the next cycle; q: run to the end --\n", stderr);
+	fflush(stdout);
+	char line[64];
+	if (!fgets(line, sizeof line, stdin) || line[0] == 'q')
+		*stepping = false;
+}
+
 /* act(o, body, ctl, cmds, n): the --act run: each command, its outcome, and the
  * mind perceiving the impression that follows (paper 3.1 steps 10-11). */
 static int run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
@@ -293,8 +307,10 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 			printf(", noise %g seed %llu", o->noise, o->seed);
 		putchar('\n');
 		bool first[DUMP_COUNT] = {[DUMP_TABLE] = true, [DUMP_RETINA] = true};
-		print_dumps(o->any_dump || o->verbose ? o->want : first, body, ctl);
+		print_dumps(o->any_dump || o->verbose || o->step ? o->want : first, body, ctl);
 	}
+	bool stepping = o->step && !o->quiet;
+	step_wait(&stepping);
 	Replay *rec = o->htmlfile ? replay_new(&body->world, &body->table, form, planner_name(o->planner)) : NULL;
 	if (rec)
 		replay_start(rec, &body->world, &body->table, &body->sensed, ctl);
@@ -324,8 +340,9 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 			printf("cycle %ld: ", cycle);
 			motion_print(&cmd, &out, stdout);
 			printf(" | %s\n", ctl->note);
-			if (o->verbose)
+			if (o->verbose || o->step)
 				print_dumps(o->want, body, ctl);
+			step_wait(&stepping);
 		}
 	}
 	if (!o->quiet) {
@@ -374,7 +391,7 @@ int main(int argc, char **argv)
 		{"verbose", no_argument, NULL, 'v'},	      {"help", no_argument, NULL, 'h'},
 		{"dry-run", no_argument, NULL, 'n'},	      {"version", no_argument, NULL, 'V'},
 		{"noise", required_argument, NULL, 'N'},      {"seed", required_argument, NULL, 'S'},
-		{"html", required_argument, NULL, 'H'},
+		{"html", required_argument, NULL, 'H'},       {"step", no_argument, NULL, 'T'},
 		{NULL, 0, NULL, 0},
 	};
 	Options o = {.planner = PLANNER_SKELETON, .max_cycles = UTAK_MAX_CYCLES, .seed = 1};
@@ -420,6 +437,9 @@ int main(int argc, char **argv)
 		case 'H':
 			o.htmlfile = optarg;
 			break;
+		case 'T':
+			o.step = true;
+			break;
 		case 'o':
 			o.outfile = optarg;
 			break;
@@ -453,7 +473,7 @@ int main(int argc, char **argv)
 		return usage_error("too many arguments, from '%s' (quote the TASK)", argv[optind + 2]);
 	const char *path = argv[optind];
 	o.task_text = optind + 1 < argc ? argv[optind + 1] : NULL;
-	if (o.verbose && !o.any_dump)
+	if ((o.verbose || o.step) && !o.any_dump)
 		for (int i = 0; i < DUMP_COUNT; i++)
 			o.want[i] = true;
 	Diag d;
