@@ -34,7 +34,7 @@
  * REPLAY_DATA_MARK. */
 static const char *const replay_viewer[] = {
 #include "replay_viewer.inc"
-	NULL,
+    NULL,
 };
 #define REPLAY_DATA_MARK "@UTAK_REPLAY_DATA@"
 
@@ -65,9 +65,15 @@ static void text_add(Text *t, const char *s, int n)
 	t->s[t->len] = 0;
 }
 
-static void text_puts(Text *t, const char *s) { text_add(t, s, (int)strlen(s)); }
+static void text_puts(Text *t, const char *s)
+{
+	text_add(t, s, (int)strlen(s));
+}
 
-static void text_putc(Text *t, char c) { text_add(t, &c, 1); }
+static void text_putc(Text *t, char c)
+{
+	text_add(t, &c, 1);
+}
 
 static void text_printf(Text *t, const char *fmt, ...)
 {
@@ -159,14 +165,14 @@ static void text_run(Text *t, char c, int64_t n)
 /* ---- the recording ---------------------------------------------------------------- */
 
 struct Replay {
-	Text head;      /* the fields known at the start */
-	Text frames;    /* the frames so far, each ending with ",\n" */
-	Text plans;     /* the plans so far, likewise */
+	Text head;   /* the fields known at the start */
+	Text frames; /* the frames so far, each ending with ",\n" */
+	Text plans;  /* the plans so far, likewise */
 	int frame_count, plan_count;
 	int plans_seen; /* the controller's plans_made when the last plan was recorded */
 	bool act;       /* an --act run: no task, no plans */
 	/* What the last frame showed, to record only changes. */
-	char *belief;   /* WORLDMODEL_SIDE^2 codes, '?' until seen */
+	char *belief;                               /* WORLDMODEL_SIDE^2 codes, '?' until seen */
 	int32_t scan_x0, scan_y0, scan_x1, scan_y1; /* squares scanned so far (inclusive) */
 	bool scanned;
 	Polygon *shapes; /* each object's polygon */
@@ -204,7 +210,8 @@ static char table_code(const World *w, const Table *t, int32_t x, int32_t y)
 
 /* table_runs(t, w, tab, x0, y0, x1, y1): the squares of the box (x1, y1 exclusive)
  * as RUNS. */
-static void table_runs(Text *t, const World *w, const Table *tab, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+static void table_runs(Text *t, const World *w, const Table *tab, int32_t x0, int32_t y0,
+                       int32_t x1, int32_t y1)
 {
 	char cur = 0;
 	int64_t n = 0;
@@ -224,7 +231,8 @@ static void table_runs(Text *t, const World *w, const Table *tab, int32_t x0, in
 
 static const char *phase_name(ControllerPhase p)
 {
-	static const char *const names[] = {"travel", "grasp", "push", "seat", "release", "done", "failed"};
+	static const char *const names[] = {"travel",  "grasp", "push",  "seat",
+	                                    "release", "done",  "failed"};
 	return (unsigned)p < sizeof names / sizeof names[0] ? names[p] : "?";
 }
 
@@ -258,7 +266,8 @@ Replay *replay_new(const World *w, const Table *t, const char *task, const char 
 		text_printf(h, ", \"colour\": \"%c\"}", w->objects[k].colour);
 	}
 	text_printf(h, "],\n\"heading\": \"%s\",\n", world_heading_name(w->heading));
-	text_printf(h, "\"origin\": [%d, %d],\n\"eye\": [", (int)floor(w->utak.x), (int)floor(w->utak.y));
+	text_printf(h, "\"origin\": [%d, %d],\n\"eye\": [", (int)floor(w->utak.x),
+	            (int)floor(w->utak.y));
 	for (int32_t i = 0; i < RETINA_CELLS; i++) {
 		EyeCell e = eye_cell(i);
 		text_printf(h, "%s[%d,%d,%d]", i ? "," : "", e.ox, e.oy, e.size);
@@ -324,11 +333,13 @@ static void record_plan(Replay *r, const Controller *c, const char *step, int cy
 	const Planner *p = &c->planner;
 	Text *t = &r->plans;
 	Vec2 origin = vec2(c->plan_x0, c->plan_y0);
-	text_printf(t, "{\"cycle\": %d, \"step\": \"%s\", \"planner\": \"%s\", \"x0\": %d, \"y0\": %d, \"w\": %d, \"h\": %d",
-		    cycle, step, planner_name(p->kind), (int)c->plan_x0, (int)c->plan_y0, (int)p->grid.w,
-		    (int)p->grid.h);
-	text_printf(t, ", \"ok\": %s, \"exploring\": %s, \"goal\": ", p->found.count > 0 ? "true" : "false",
-		    c->exploring ? "true" : "false");
+	text_printf(t,
+	            "{\"cycle\": %d, \"step\": \"%s\", \"planner\": \"%s\", \"x0\": %d, \"y0\": "
+	            "%d, \"w\": %d, \"h\": %d",
+	            cycle, step, planner_name(p->kind), (int)c->plan_x0, (int)c->plan_y0,
+	            (int)p->grid.w, (int)p->grid.h);
+	text_printf(t, ", \"ok\": %s, \"exploring\": %s, \"goal\": ",
+	            p->found.count > 0 ? "true" : "false", c->exploring ? "true" : "false");
 	text_point(t, c->goal);
 	view_add(r, c->plan_x0, c->plan_y0, c->plan_x0 + p->grid.w - 1, c->plan_y0 + p->grid.h - 1);
 	if (p->have_graph && p->skeleton.w == p->grid.w && p->skeleton.h == p->grid.h) {
@@ -347,20 +358,21 @@ static void record_plan(Replay *r, const Controller *c, const char *step, int cy
 		for (int32_t j = 0; j < s->h; j++)
 			for (int32_t i = 0; i < s->w; i++)
 				if (skeleton_on(s, i, j) && !covered[j * s->w + i]) {
-					text_printf(t, "%s[%d,%d]", first ? "" : ",", (int)i, (int)j);
+					text_printf(t, "%s[%d,%d]", first ? "" : ",", (int)i,
+					            (int)j);
 					first = false;
 				}
 		free(covered);
 		text_puts(t, "],\n  \"vertices\": [");
 		for (int32_t v = 0; v < pg->vertex_count; v++)
-			text_printf(t, "%s[%d,%d,\"%c\"]", v ? "," : "", (int)pg->vertices[v].x, (int)pg->vertices[v].y,
-				    kind_letter[pg->vertices[v].kind & 3]);
+			text_printf(t, "%s[%d,%d,\"%c\"]", v ? "," : "", (int)pg->vertices[v].x,
+			            (int)pg->vertices[v].y, kind_letter[pg->vertices[v].kind & 3]);
 		text_puts(t, "],\n  \"edges\": [");
 		for (int32_t k = 0; k < pg->edge_count; k++) {
 			const PathgraphEdge *e = &pg->edges[k];
 			int32_t c0 = pg->cells[e->first];
-			text_printf(t, "%s[%d,%d,%d,%d,\"", k ? "," : "", (int)e->v0, (int)e->v1, (int)(c0 % pg->w),
-				    (int)(c0 / pg->w));
+			text_printf(t, "%s[%d,%d,%d,%d,\"", k ? "," : "", (int)e->v0, (int)e->v1,
+			            (int)(c0 % pg->w), (int)(c0 / pg->w));
 			plan_edge_steps(t, pg, e);
 			text_puts(t, "\"]");
 		}
@@ -461,7 +473,10 @@ static void record_belief(Replay *r, Text *t, const WorldModel *m)
 
 static const char *node_kind(NodeKind k)
 {
-	return k == NODE_FLOOR ? "floor" : k == NODE_OBJECT ? "object" : k == NODE_UNCERTAIN ? "uncertain" : "org";
+	return k == NODE_FLOOR       ? "floor"
+	       : k == NODE_OBJECT    ? "object"
+	       : k == NODE_UNCERTAIN ? "uncertain"
+	                             : "org";
 }
 
 /* node_text(t, m, node): one node of the tree with its rings (worldmodel.h). A
@@ -473,8 +488,9 @@ static void node_text(Text *t, const WorldModel *m, const ModelNode *node)
 	text_string(t, node_kind(node->kind));
 	text_puts(t, ", \"name\": ");
 	text_string(t, node->name);
-	text_printf(t, ", \"ident\": %d, \"held\": %s, \"squares\": %d, \"conf\": ", (int)node->ident,
-		    node->held ? "true" : "false", (int)node->squares);
+	text_printf(t,
+	            ", \"ident\": %d, \"held\": %s, \"squares\": %d, \"conf\": ", (int)node->ident,
+	            node->held ? "true" : "false", (int)node->squares);
 	text_num(t, node->conf);
 	text_puts(t, ", \"rect\": [");
 	text_num(t, node->rect.lo.x);
@@ -488,9 +504,11 @@ static void node_text(Text *t, const WorldModel *m, const ModelNode *node)
 	bool first = true;
 	for (int32_t k = 0; k < node->ring_count; k++) {
 		const ModelRing *ring = &m->ring[node->first_ring + k];
-		if (node->kind == NODE_FLOOR && worldmodel_ring_outlines_object(m, node->first_ring + k))
+		if (node->kind == NODE_FLOOR &&
+		    worldmodel_ring_outlines_object(m, node->first_ring + k))
 			continue;
-		text_printf(t, "%s{\"hole\": %s, \"v\": [", first ? "" : ", ", ring->hole ? "true" : "false");
+		text_printf(t, "%s{\"hole\": %s, \"v\": [", first ? "" : ", ",
+		            ring->hole ? "true" : "false");
 		first = false;
 		for (int32_t i = 0; i < ring->count; i++) {
 			const ModelVertex *v = &m->vertex[ring->first + i];
@@ -526,21 +544,26 @@ static void record_model(Replay *r, Text *t, const WorldModel *m)
 	text_num(head, a->mismatch);
 	text_puts(head, ", \"best_mismatch\": ");
 	text_num(head, a->best_mismatch);
-	text_printf(head, ", \"compared\": %d, \"corrected\": %s, \"new\": %d, \"finer\": %d, \"nodes\": [",
-		    (int)a->compared, a->corrected ? "true" : "false", (int)a->new_squares, (int)a->finer_squares);
+	text_printf(
+	    head, ", \"compared\": %d, \"corrected\": %s, \"new\": %d, \"finer\": %d, \"nodes\": [",
+	    (int)a->compared, a->corrected ? "true" : "false", (int)a->new_squares,
+	    (int)a->finer_squares);
 	int count = 0;
 	for (int32_t n = 0; n < m->node_count; n++)
 		if (m->node[n].kind != NODE_ORG) {
 			if (count == r->nodes_now_cap) {
 				int old_cap = r->nodes_now_cap;
-				r->nodes_now = util_grow(r->nodes_now, &r->nodes_now_cap, count + 1, sizeof *r->nodes_now);
-				memset(r->nodes_now + old_cap, 0, sizeof *r->nodes_now * (size_t)(r->nodes_now_cap - old_cap));
+				r->nodes_now = util_grow(r->nodes_now, &r->nodes_now_cap, count + 1,
+				                         sizeof *r->nodes_now);
+				memset(r->nodes_now + old_cap, 0,
+				       sizeof *r->nodes_now * (size_t)(r->nodes_now_cap - old_cap));
 			}
 			Text *nt = &r->nodes_now[count++];
 			text_clear(nt);
 			node_text(nt, m, &m->node[n]);
 		}
-	bool same = r->frame_count > 0 && count == r->nodes_before_count && strcmp(head->s, r->last_model.s) == 0;
+	bool same = r->frame_count > 0 && count == r->nodes_before_count &&
+	            strcmp(head->s, r->last_model.s) == 0;
 	for (int i = 0; same && i < count; i++)
 		same = strcmp(r->nodes_now[i].s, r->nodes_before[i].s) == 0;
 	if (!same) {
@@ -588,8 +611,8 @@ static char screen_code(const Controller *c, int32_t i, int32_t j)
 static void screen_text(Text *t, const Controller *c)
 {
 	const Screen *s = &c->screen;
-	text_printf(t, "{\"x0\": %d, \"y0\": %d, \"w\": %d, \"h\": %d, \"cells\": \"", (int)s->x0, (int)s->y0, (int)s->w,
-		    (int)s->h);
+	text_printf(t, "{\"x0\": %d, \"y0\": %d, \"w\": %d, \"h\": %d, \"cells\": \"", (int)s->x0,
+	            (int)s->y0, (int)s->w, (int)s->h);
 	char cur = 0;
 	int64_t n = 0;
 	for (int32_t j = 0; j < s->h; j++)
@@ -669,14 +692,15 @@ static void table_changes(Replay *r, Text *t, const World *w, const Table *tab)
 	x1 = x1 > tab->w ? tab->w : x1, y1 = y1 > tab->h ? tab->h : y1;
 	if (x0 >= x1 || y0 >= y1)
 		return;
-	text_printf(t, ",\n \"table\": [[%d,%d,%d,%d,\"", (int)x0, (int)y0, (int)(x1 - x0), (int)(y1 - y0));
+	text_printf(t, ",\n \"table\": [[%d,%d,%d,%d,\"", (int)x0, (int)y0, (int)(x1 - x0),
+	            (int)(y1 - y0));
 	table_runs(t, w, tab, x0, y0, x1, y1);
 	text_puts(t, "\"]]");
 }
 
 /* record_frame(r, ...): one frame (replay.h, frames); line is the trace line. */
-static void record_frame(Replay *r, const World *w, const Table *tab, const Impression *imp, const Controller *c,
-			 int cycle, const char *line)
+static void record_frame(Replay *r, const World *w, const Table *tab, const Impression *imp,
+                         const Controller *c, int cycle, const char *line)
 {
 	Text *t = &r->frames;
 	text_printf(t, "{\"cycle\": %d,\n \"line\": ", cycle);
@@ -709,31 +733,35 @@ static void record_frame(Replay *r, const World *w, const Table *tab, const Impr
 			text_clear(&r->last_screen);
 			text_add(&r->last_screen, r->part.s, r->part.len);
 		}
-		view_add(r, c->screen.x0, c->screen.y0, c->screen.x0 + c->screen.w - 1, c->screen.y0 + c->screen.h - 1);
+		view_add(r, c->screen.x0, c->screen.y0, c->screen.x0 + c->screen.w - 1,
+		         c->screen.y0 + c->screen.h - 1);
 	}
 	if (!r->act) {
-		text_printf(t, ",\n \"plan\": %d, \"next\": %d", c->have_plan ? r->plan_count - 1 : -1, c->next);
+		text_printf(t, ",\n \"plan\": %d, \"next\": %d",
+		            c->have_plan ? r->plan_count - 1 : -1, c->next);
 		carry_text(t, c);
 	}
 	text_puts(t, "},\n");
 	r->frame_count++;
 }
 
-void replay_start(Replay *r, const World *w, const Table *t, const Impression *imp, const Controller *c)
+void replay_start(Replay *r, const World *w, const Table *t, const Impression *imp,
+                  const Controller *c)
 {
 	record_plan(r, c, "7", 0);
-	record_frame(r, w, t, imp, c, 0, r->act ? "start: the first impression" : "start: steps 1-7");
+	record_frame(r, w, t, imp, c, 0,
+	             r->act ? "start: the first impression" : "start: steps 1-7");
 }
 
 void replay_decided(Replay *r, const Controller *c)
 {
 	record_plan(r, c, "9", c->cycle);
-	snprintf(r->decided, sizeof r->decided, "{\"phase\": \"%s\", \"plan\": %d, \"next\": %d}", phase_name(c->phase),
-		 c->have_plan ? r->plan_count - 1 : -1, c->next);
+	snprintf(r->decided, sizeof r->decided, "{\"phase\": \"%s\", \"plan\": %d, \"next\": %d}",
+	         phase_name(c->phase), c->have_plan ? r->plan_count - 1 : -1, c->next);
 }
 
-void replay_cycle(Replay *r, const World *w, const Table *t, const Impression *imp, const Controller *c,
-		  const MotorCommand *cmd, const MotorOutcome *out)
+void replay_cycle(Replay *r, const World *w, const Table *t, const Impression *imp,
+                  const Controller *c, const MotorCommand *cmd, const MotorOutcome *out)
 {
 	record_plan(r, c, "13", c->cycle);
 	/* The trace line, as main.c prints it. */
@@ -762,8 +790,9 @@ int replay_write(Replay *r, const char *verdict, FILE *f)
 	Text tail = {0};
 	text_puts(&tail, "\"verdict\": ");
 	text_string(&tail, verdict ? verdict : "");
-	text_printf(&tail, ",\n\"cycles\": %d,\n\"view\": [%d, %d, %d, %d],\n\"plans\": [\n", r->frame_count - 1,
-		    (int)r->view_x0, (int)r->view_y0, (int)r->view_x1 + 1, (int)r->view_y1 + 1);
+	text_printf(&tail, ",\n\"cycles\": %d,\n\"view\": [%d, %d, %d, %d],\n\"plans\": [\n",
+	            r->frame_count - 1, (int)r->view_x0, (int)r->view_y0, (int)r->view_x1 + 1,
+	            (int)r->view_y1 + 1);
 	/* The lists' last ",\n" is written as "\n": JSON allows no trailing comma. */
 	int plans_len = r->plans.len >= 2 ? r->plans.len - 2 : 0;
 	int frames_len = r->frames.len >= 2 ? r->frames.len - 2 : 0;
@@ -771,7 +800,8 @@ int replay_write(Replay *r, const char *verdict, FILE *f)
 	    fwrite(tail.s, 1, (size_t)tail.len, f) != (size_t)tail.len ||
 	    fwrite(r->plans.s ? r->plans.s : "", 1, (size_t)plans_len, f) != (size_t)plans_len ||
 	    fputs(plans_len ? "\n],\n\"frames\": [\n" : "],\n\"frames\": [\n", f) == EOF ||
-	    fwrite(r->frames.s ? r->frames.s : "", 1, (size_t)frames_len, f) != (size_t)frames_len ||
+	    fwrite(r->frames.s ? r->frames.s : "", 1, (size_t)frames_len, f) !=
+	        (size_t)frames_len ||
 	    fputs("\n]}\n", f) == EOF)
 		status = -1;
 	text_free(&tail);

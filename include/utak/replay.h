@@ -94,13 +94,14 @@ Replay *replay_new(const World *w, const Table *t, const char *task, const char 
 void replay_free(Replay *r);
 /* replay_start(r, w, t, imp, c): frame 0, after controller_start: the first impression
  * accommodated and, with a task, the first plan (steps 1-7). */
-void replay_start(Replay *r, const World *w, const Table *t, const Impression *imp, const Controller *c);
+void replay_start(Replay *r, const World *w, const Table *t, const Impression *imp,
+                  const Controller *c);
 /* replay_decided(r, c): after controller_decide gave a command (steps 8-9). */
 void replay_decided(Replay *r, const Controller *c);
 /* replay_cycle(r, w, t, imp, c, cmd, out): a frame after the simulator carried out cmd
  * (step 10) and the controller perceived imp (steps 11-13). */
-void replay_cycle(Replay *r, const World *w, const Table *t, const Impression *imp, const Controller *c,
-		  const MotorCommand *cmd, const MotorOutcome *out);
+void replay_cycle(Replay *r, const World *w, const Table *t, const Impression *imp,
+                  const Controller *c, const MotorCommand *cmd, const MotorOutcome *out);
 /* replay_write(r, verdict, f): the page, with the verdict line. Returns 0, or -1 when
  * a write failed (errno says why). */
 int replay_write(Replay *r, const char *verdict, FILE *f);

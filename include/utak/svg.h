@@ -21,16 +21,16 @@
 
 #include <stdio.h>
 
-#include "utak/mind/controller.h"
 #include "utak/body/table.h"
 #include "utak/body/world.h"
+#include "utak/mind/controller.h"
 
 #define SVG_SCALE 12
 
 /* svg_draw(f, w, t, c, trail, n, title, verdict): the picture of a run that ended
  * with world w (TABLE t) and controller c; trail holds Utak's n >= 1 true positions,
  * the start first; title names the task, verdict is the verdict line. */
-void svg_draw(FILE *f, const World *w, const Table *t, const Controller *c, const Vec2 *trail, int n,
-	      const char *title, const char *verdict);
+void svg_draw(FILE *f, const World *w, const Table *t, const Controller *c, const Vec2 *trail,
+              int n, const char *title, const char *verdict);
 
 #endif
