@@ -1,0 +1,565 @@
+/* test_carry.c - carrying a held object in (x, y, theta) (carry.h, sweep.h; paper 2.2,
+ * 3.6, 5).
+ *
+ * Two oracles. THE SIMULATOR: on fully known worlds (a World and its TABLE, built
+ * with the body's own functions; a test may see both sides) the planner plans on a
+ * grid made from the TABLE in Utak's frame, and its motor commands are carried out
+ * by motion.c: no command may be refused or halt, the TABLE's invariant must hold
+ * after each, and the object and Utak must be where the plan says, so every pose
+ * the plan checked is one the simulator found free. BRUTE FORCE: on generated door
+ * problems, a plain Dijkstra over the same lattice (the same angles, the same
+ * exact and tolerant poses, the same sweeps), whose every configuration is tested
+ * naively square by square (projection_oracle.h for the TABLE's rule, a
+ * segment-to-segment distance for the tolerant one), must find a path exactly when
+ * the planner does, and the planner without the route's pruning must find one of
+ * the same cost. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "oracle.h"
+#include "projection_oracle.h"
+#include "test.h"
+#include "world_fixture.h"
+#include "utak/plan/carry.h"
+#include "utak/plan/sweep.h"
+
+/* ---- Utak's frame and the TABLE -------------------------------------------------- */
+
+/* own_of_table(h, p): a TABLE point in Utak's frame (x right, y ahead), placed so
+ * that the TABLE maps onto [0, W'] x [0, H'] (W' x H' = W x H, or H x W sideways). */
+static Vec2 own_of_table(Heading hd, Vec2 p)
+{
+	double W = table.w, H = table.h;
+	switch (hd) {
+	case HEADING_NORTH:
+		return p;
+	case HEADING_EAST:
+		return vec2(H - p.y, p.x);
+	case HEADING_SOUTH:
+		return vec2(W - p.x, H - p.y);
+	case HEADING_WEST:
+		return vec2(p.y, W - p.x);
+	}
+	return p;
+}
+
+static Vec2 table_of_own(Heading hd, Vec2 p)
+{
+	double W = table.w, H = table.h;
+	switch (hd) {
+	case HEADING_NORTH:
+		return p;
+	case HEADING_EAST:
+		return vec2(p.y, H - p.x);
+	case HEADING_SOUTH:
+		return vec2(W - p.x, H - p.y);
+	case HEADING_WEST:
+		return vec2(W - p.y, p.x);
+	}
+	return p;
+}
+
+/* own_square(hd, i, j, &x, &y): the TABLE square of Utak-frame cell (i, j). */
+static void own_square(Heading hd, int32_t i, int32_t j, int32_t *x, int32_t *y)
+{
+	Vec2 t = table_of_own(hd, vec2(i + 0.5, j + 0.5));
+	*x = (int32_t)floor(t.x);
+	*y = (int32_t)floor(t.y);
+}
+
+typedef bool GoalSquareFn(int32_t x, int32_t y); /* a TABLE square in the goal */
+
+/* A problem on the loaded world: Utak holds object 0. */
+typedef struct Scene {
+	Grid grid, goal;
+	CarryObject obj;
+	Heading hd;
+} Scene;
+
+/* scene_make(s, goal): grasps, then the grid in Utak's frame from the TABLE (floor,
+ * the held object's squares and Utak's square free) and the goal region. */
+static void scene_make(Scene *s, GoalSquareFn *goal)
+{
+	TEST_CHECK(!act(MOTOR_GRASP, 0, 0).refused && world.held == 0);
+	Heading hd = world.heading;
+	s->hd = hd;
+	bool sideways = hd == HEADING_EAST || hd == HEADING_WEST;
+	int32_t w = sideways ? table.h : table.w, h = sideways ? table.w : table.h;
+	grid_init(&s->grid, w, h, GRID_BLOCKED);
+	grid_init(&s->goal, w, h, GRID_BLOCKED);
+	int32_t ux, uy;
+	table_square_of(world.utak, &ux, &uy);
+	for (int32_t j = 0; j < h; j++)
+		for (int32_t i = 0; i < w; i++) {
+			int32_t x, y;
+			own_square(hd, i, j, &x, &y);
+			int32_t who = table_owner(&table, x, y);
+			if (who == TABLE_FLOOR || who == world.held + 1 || (x == ux && y == uy))
+				s->grid.cells[j * w + i] = GRID_FREE;
+			if (goal(x, y))
+				s->goal.cells[j * w + i] = GRID_FREE;
+		}
+	s->obj.shape = world.objects[0].shape;
+	for (int32_t i = 0; i < s->obj.shape.count; i++)
+		s->obj.shape.v[i] = own_of_table(hd, s->obj.shape.v[i]);
+	s->obj.at = own_of_table(hd, world.utak);
+	s->obj.name = "the object";
+}
+
+static void scene_free(Scene *s)
+{
+	grid_free(&s->grid);
+	grid_free(&s->goal);
+}
+
+static double vertex_gap(const Polygon *a, const Polygon *b)
+{
+	double worst = 0;
+	for (int32_t i = 0; i < a->count; i++)
+		worst = fmax(worst, hypot(a->v[i].x - b->v[i].x, a->v[i].y - b->v[i].y));
+	return worst;
+}
+
+/* execute(s, plan, goal): carries the plan out in TABLETOP. Every command must run
+ * to its end, and the world must then be in the plan's pose; at the end the object
+ * must lie wholly in the goal (the TABLE's squares of it). */
+static void execute(const Scene *s, const CarryPlan *plan, GoalSquareFn *goal)
+{
+	Polygon rel = s->obj.shape;
+	for (int32_t i = 0; i < rel.count; i++)
+		rel.v[i] = vec2_sub(s->obj.shape.v[i], s->obj.at);
+	for (int i = 0; i + 1 < plan->count; i++) {
+		const MotorCommand *c = &plan->cmd[i];
+		MotorOutcome out = c->kind == MOTOR_TURN ? act(MOTOR_TURN, c->deg, 0) : act(MOTOR_PUSH, c->dx, c->dy);
+		if (out.refused || out.halted) {
+			MotorCommand shown = *c;
+			fprintf(stderr, "  command %d of %d: ", i + 1, plan->count - 1);
+			motion_print(&shown, &out, stderr);
+			fputc('\n', stderr);
+		}
+		TEST_CHECK(!out.refused && !out.halted);
+		const CarryPose *p = &plan->pose[i + 1];
+		Polygon want = sweep_turned(&rel, p->at, p->deg);
+		for (int32_t v = 0; v < want.count; v++)
+			want.v[v] = table_of_own(s->hd, want.v[v]);
+		TEST_CHECK(vertex_gap(&want, &world.objects[0].shape) < 1e-9);
+		Vec2 u = table_of_own(s->hd, p->at);
+		TEST_CHECK(hypot(u.x - world.utak.x, u.y - world.utak.y) < 1e-9);
+	}
+	for (int32_t y = 0; y < table.h; y++)
+		for (int32_t x = 0; x < table.w; x++)
+			if (table_owner(&table, x, y) == 1)
+				TEST_CHECK(goal(x, y));
+}
+
+/* plan_and_carry(goal, params, turned_at_least): plans on the loaded world, checks
+ * the plan in TABLETOP; returns the plan's total turning. */
+static int32_t plan_and_carry(GoalSquareFn *goal, const CarryParams *params)
+{
+	Scene s;
+	scene_make(&s, goal);
+	CarryPlanner cp;
+	carry_init(&cp, &s.grid, params);
+	CarryResult r;
+	carry_result_init(&r);
+	CarryGoal goal_region = {.inside = &s.goal};
+	CarryStatus st = carry_plan(&cp, &s.obj, &goal_region, &r);
+	if (st != CARRY_FOUND)
+		fprintf(stderr, "  %s\n", r.why);
+	TEST_CHECK(st == CARRY_FOUND);
+	execute(&s, &r.plan, goal);
+	int32_t turned = r.plan.turned;
+	carry_result_free(&r);
+	carry_free(&cp);
+	scene_free(&s);
+	return turned;
+}
+
+
+/* ---- the brute force ------------------------------------------------------------- */
+
+/* The lattice of carry.h, written out plainly: configurations (x, y, layer), layers
+ * 0 .. N - 1 tolerant at angle `layer`, N .. N + 3 exact at the quarter turns. */
+typedef struct Brute {
+	const Grid *grid, *goal;
+	Polygon rel;
+	Vec2 frac;
+	int n;
+	double reach;
+	int deg[CARRY_ANGLES_MAX + 1];
+} Brute;
+
+static bool brute_blocked(const Brute *b, int x, int y) { return !grid_free_at(b->grid, x, y); }
+
+/* segments_distance(a, b, c, d): between two closed segments. */
+static double segments_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d)
+{
+	if (geom_segments_meet(a, b, c, d))
+		return 0;
+	return fmin(fmin(geom_point_segment_distance(a, c, d), geom_point_segment_distance(b, c, d)),
+		    fmin(geom_point_segment_distance(c, a, b), geom_point_segment_distance(d, a, b)));
+}
+
+/* near_square(p, x, y, r): the closed square (x, y) comes nearer than r to p. */
+static bool near_square(const Polygon *p, int x, int y, double r)
+{
+	Box b = geom_polygon_box(p);
+	if (b.lo.x >= x + 1 + r || b.hi.x <= x - r || b.lo.y >= y + 1 + r || b.hi.y <= y - r)
+		return false;
+	if (oracle(p, x, y))
+		return true;
+	Vec2 sq[4] = {vec2(x, y), vec2(x + 1, y), vec2(x + 1, y + 1), vec2(x, y + 1)};
+	for (int k = 0; k < 4; k++)
+		if (geom_point_in_polygon(p, sq[k]))
+			return true;
+	double least = INFINITY;
+	for (int i = 0; i < p->count; i++) {
+		Vec2 a = p->v[i], c = p->v[(i + 1) % p->count];
+		if (a.x >= x && a.x <= x + 1 && a.y >= y && a.y <= y + 1)
+			return true;
+		for (int k = 0; k < 4; k++)
+			least = fmin(least, segments_distance(a, c, sq[k], sq[(k + 1) % 4]));
+	}
+	return least < r;
+}
+
+static Polygon brute_pose(const Brute *b, int x, int y, double deg)
+{
+	double c, s;
+	geom_cos_sin(deg, &c, &s);
+	Polygon p = b->rel;
+	for (int i = 0; i < p.count; i++) {
+		Vec2 d = b->rel.v[i];
+		p.v[i] = vec2(x + b->frac.x + c * d.x - s * d.y, y + b->frac.y + s * d.x + c * d.y);
+	}
+	return p;
+}
+
+/* covers(b, p, r, want_free, region): every square p covers (r == 0: the TABLE's
+ * rule; r > 0: within r) is free (region NULL) or in the region. */
+static bool covers_only(const Brute *b, const Polygon *p, double r, const Grid *region)
+{
+	Box box = geom_polygon_box(p);
+	for (int y = (int)floor(box.lo.y) - 1; y <= (int)floor(box.hi.y) + 1; y++)
+		for (int x = (int)floor(box.lo.x) - 1; x <= (int)floor(box.hi.x) + 1; x++) {
+			bool covered = r == 0 ? oracle(p, x, y) : near_square(p, x, y, r);
+			if (covered && (region ? !grid_free_at(region, x, y) : brute_blocked(b, x, y)))
+				return false;
+		}
+	return true;
+}
+
+static int brute_angle(const Brute *b, int layer) { return layer < b->n ? layer : (layer - b->n) * b->n / 4; }
+
+static bool brute_body(const Brute *b, int x, int y, int layer)
+{
+	Polygon p = brute_pose(b, x, y, b->deg[brute_angle(b, layer)]);
+	return !brute_blocked(b, x, y) && covers_only(b, &p, layer < b->n ? SWEEP_EPS : 0, NULL);
+}
+
+static bool brute_goal(const Brute *b, int x, int y, int layer)
+{
+	Polygon p = brute_pose(b, x, y, b->deg[brute_angle(b, layer)]);
+	return covers_only(b, &p, layer < b->n ? SWEEP_EPS : 0, b->goal);
+}
+
+/* brute_turn(b, x, y, k): the step from angle k to k + 1, by samples no vertex moves
+ * more than a quarter square between, each within half that of every square it
+ * covers, is free. */
+static bool brute_turn(const Brute *b, int x, int y, int k)
+{
+	double d0 = b->deg[k], d1 = b->deg[k + 1];
+	double travel = b->reach * (d1 - d0) * 3.14159265358979323846 / 180;
+	int m = (int)fmax(1, ceil(travel / 0.25));
+	for (int j = 0; j <= m; j++) {
+		Polygon p = brute_pose(b, x, y, j == m ? d1 : d0 + (d1 - d0) * j / m);
+		if (!covers_only(b, &p, travel / (2.0 * m) + SWEEP_EPS, NULL))
+			return false;
+	}
+	return !brute_blocked(b, x, y);
+}
+
+static int64_t brute_turn_cost(const Brute *b, int k)
+{
+	double c = floor(CARRY_UNIT * b->reach * (b->deg[k + 1] - b->deg[k]) * 3.14159265358979323846 / 180 + 0.5);
+	return c < 1 ? 1 : (int64_t)c;
+}
+
+/* A plain binary heap of (cost, configuration) for the brute force's Dijkstra. */
+typedef struct BruteEntry {
+	int64_t cost;
+	size_t id;
+} BruteEntry;
+
+typedef struct BruteHeap {
+	BruteEntry *e;
+	size_t count, cap;
+} BruteHeap;
+
+static bool brute_less(BruteEntry a, BruteEntry b) { return a.cost < b.cost || (a.cost == b.cost && a.id < b.id); }
+
+static void brute_heap_push(BruteHeap *hp, int64_t cost, size_t id)
+{
+	if (hp->count == hp->cap) {
+		hp->cap = hp->cap ? 2 * hp->cap : 256;
+		hp->e = realloc(hp->e, hp->cap * sizeof *hp->e);
+	}
+	size_t i = hp->count++;
+	BruteEntry v = {cost, id};
+	while (i > 0 && brute_less(v, hp->e[(i - 1) / 2])) {
+		hp->e[i] = hp->e[(i - 1) / 2];
+		i = (i - 1) / 2;
+	}
+	hp->e[i] = v;
+}
+
+static BruteEntry brute_heap_pop(BruteHeap *hp)
+{
+	BruteEntry top = hp->e[0], last = hp->e[--hp->count];
+	size_t i = 0;
+	for (;;) {
+		size_t c = 2 * i + 1;
+		if (c >= hp->count)
+			break;
+		if (c + 1 < hp->count && brute_less(hp->e[c + 1], hp->e[c]))
+			c++;
+		if (!brute_less(hp->e[c], last))
+			break;
+		hp->e[i] = hp->e[c];
+		i = c;
+	}
+	if (hp->count > 0)
+		hp->e[i] = last;
+	return top;
+}
+
+/* brute_cost(b, obj, n): the least cost of a carry to the goal by Dijkstra over the
+ * whole lattice at n angles, -1 when none. */
+static int64_t brute_cost(Brute *b, const CarryObject *obj, int n)
+{
+	int w = b->grid->w, h = b->grid->h, layers = n + 4;
+	b->n = n;
+	b->rel = obj->shape;
+	for (int i = 0; i < b->rel.count; i++)
+		b->rel.v[i] = vec2_sub(obj->shape.v[i], obj->at);
+	b->frac = vec2(obj->at.x - floor(obj->at.x), obj->at.y - floor(obj->at.y));
+	b->reach = 0;
+	for (int i = 0; i < b->rel.count; i++)
+		b->reach = fmax(b->reach, hypot(b->rel.v[i].x, b->rel.v[i].y));
+	for (int k = 0; k <= n; k++)
+		b->deg[k] = (int)floor(k * 360.0 / n + 0.5);
+	size_t total = (size_t)layers * w * h;
+	int64_t *dist = malloc(total * sizeof *dist);
+	uint8_t *done = calloc(total, 1), *body = calloc(total, 1), *turn = calloc((size_t)n * w * h, 1);
+	for (size_t i = 0; i < total; i++)
+		dist[i] = INT64_MAX;
+	int sx = (int)floor(obj->at.x), sy = (int)floor(obj->at.y);
+	size_t start = ((size_t)n * h + sy) * w + sx;
+	int64_t answer = -1;
+	BruteHeap open = {0};
+	if (brute_body(b, sx, sy, n)) {
+		dist[start] = 0;
+		brute_heap_push(&open, 0, start);
+	}
+	while (open.count > 0) {
+		size_t best = brute_heap_pop(&open).id;
+		if (done[best])
+			continue;
+		done[best] = 1;
+		int layer = (int)(best / ((size_t)w * h)), cell = (int)(best % ((size_t)w * h));
+		int x = cell % w, y = cell / w, a = brute_angle(b, layer);
+		if (brute_goal(b, x, y, layer)) {
+			answer = dist[best];
+			break;
+		}
+		/* (successor, cost) pairs */
+		size_t next[8];
+		int64_t cost[8];
+		int count = 0;
+		static const int dx[4] = {1, 0, -1, 0}, dy[4] = {0, 1, 0, -1};
+		for (int m = 0; m < 4; m++) {
+			int nx = x + dx[m], ny = y + dy[m];
+			if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+				continue;
+			size_t id = ((size_t)layer * h + ny) * w + nx;
+			if (!body[id])
+				body[id] = brute_body(b, nx, ny, layer) ? 1 : 2;
+			if (body[id] == 1) {
+				next[count] = id;
+				cost[count++] = CARRY_UNIT;
+			}
+		}
+		/* turn_ok(k): the step k -> k + 1 here, memoised */
+#define TURN_OK(k) (turn[((size_t)(k) * h + y) * w + x] ? turn[((size_t)(k) * h + y) * w + x] == 1 \
+		    : (turn[((size_t)(k) * h + y) * w + x] = brute_turn(b, x, y, (k)) ? 1 : 2) == 1)
+		int up = (a + 1) % n, down = (a + n - 1) % n;
+		if (TURN_OK(a)) {
+			next[count] = ((size_t)up * h + y) * w + x;
+			cost[count++] = brute_turn_cost(b, a);
+		}
+		if (TURN_OK(down)) {
+			next[count] = ((size_t)down * h + y) * w + x;
+			cost[count++] = brute_turn_cost(b, down);
+		}
+		if (layer >= n) {
+			int q = n / 4;
+			bool ccw = true, cw = true;
+			int64_t cu = 0, cd = 0;
+			for (int i = 0; i < q; i++) {
+				ccw = ccw && TURN_OK((a + i) % n);
+				cw = cw && TURN_OK((a + n - 1 - i) % n);
+				cu += brute_turn_cost(b, (a + i) % n);
+				cd += brute_turn_cost(b, (a + n - 1 - i) % n);
+			}
+			if (ccw) {
+				next[count] = ((size_t)(n + (layer - n + 1) % 4) * h + y) * w + x;
+				cost[count++] = cu;
+			}
+			if (cw) {
+				next[count] = ((size_t)(n + (layer - n + 3) % 4) * h + y) * w + x;
+				cost[count++] = cd;
+			}
+		}
+#undef TURN_OK
+		for (int i = 0; i < count; i++)
+			if (!done[next[i]] && dist[best] + cost[i] < dist[next[i]]) {
+				dist[next[i]] = dist[best] + cost[i];
+				brute_heap_push(&open, dist[next[i]], next[i]);
+			}
+	}
+	free(open.e);
+	free(dist);
+	free(done);
+	free(body);
+	free(turn);
+	return answer;
+}
+
+/* ---- worlds ------------------------------------------------------------------------ */
+
+static bool east_of_21(int32_t x, int32_t y) { return (void)y, x >= 21; }
+
+/* A 40 x 30 TABLE cut by a wall at x = 20..21 with a door from y = lo to hi. */
+static void load_door(double lo, double hi, const char *object, const char *utak)
+{
+	char text[1024];
+	snprintf(text, sizeof text,
+		 "table 40 30\nwall 20 1 21 1 21 %g 20 %g\nwall 20 %g 21 %g 21 29 20 29\nobject held C %s\nutak %s\n", lo,
+		 lo, hi, hi, object, utak);
+	load(text);
+}
+
+TEST_CASE(square_into_the_next_room_every_heading)
+{
+	static const char *const headings[] = {"north", "east", "south", "west"};
+	for (int h = 0; h < 4; h++) {
+		char utak[64];
+		snprintf(utak, sizeof utak, "9.5 12.5 %s", headings[h]);
+		load_door(13, 17, "10 11 13 11 13 14 10 14", utak);
+		plan_and_carry(east_of_21, NULL);
+		unload();
+	}
+}
+
+TEST_CASE(brick_must_turn_to_pass_the_door)
+{
+	/* A brick 2 x 6 standing north-south, a door 3 high: it passes only lying down. */
+	load_door(13, 16, "10 10 12 10 12 16 10 16", "9.5 12.5 north");
+	int32_t turned = plan_and_carry(east_of_21, NULL);
+	TEST_CHECK(turned >= 90);
+	unload();
+}
+
+/* ---- generated door problems ------------------------------------------------------- */
+
+/* door_shape(kind, x0, yc, out): an object of the kind (0 square, 1 brick, 2 L-shape,
+ * 3 triangle) of random size, its west side at x0, about row yc. */
+static void door_shape(int kind, double x0, double yc, Polygon *p)
+{
+	double y0 = yc - 1 - oracle_rand_below(2);
+	if (kind == 0) {
+		double s = 1 + oracle_rand_below(4);
+		*p = (Polygon){4, {{x0, y0}, {x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}}};
+	} else if (kind == 1) {
+		double a = 1 + oracle_rand_below(2), b = 3 + oracle_rand_below(4);
+		if (oracle_rand_below(2)) {
+			double t = a;
+			a = b;
+			b = t;
+		}
+		*p = (Polygon){4, {{x0, y0}, {x0 + a, y0}, {x0 + a, y0 + b}, {x0, y0 + b}}};
+	} else if (kind == 2) {
+		double A = 3 + oracle_rand_below(3), B = 3 + oracle_rand_below(3), t = 1 + oracle_rand_below(2);
+		*p = (Polygon){6, {{x0, y0}, {x0 + A, y0}, {x0 + A, y0 + t}, {x0 + t, y0 + t}, {x0 + t, y0 + B}, {x0, y0 + B}}};
+	} else {
+		double a = 2 + oracle_rand_below(7) * 0.5, b = 2 + oracle_rand_below(7) * 0.5;
+		*p = (Polygon){3, {{x0, y0}, {x0 + a, y0}, {x0, y0 + b}}};
+	}
+}
+
+/* door_grid(g, goal, w, h, wall, lo, width): a walled grid cut by the column `wall`
+ * with a door of `width` cells from row lo; the goal is everything east of it. */
+static void door_grid(Grid *g, Grid *goal, int w, int h, int wall, int lo, int width)
+{
+	grid_init(g, w, h, GRID_FREE);
+	grid_init(goal, w, h, GRID_BLOCKED);
+	for (int y = 0; y < h; y++)
+		for (int x = 0; x < w; x++) {
+			bool ring = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+			if (ring || (x == wall && (y < lo || y >= lo + width)))
+				g->cells[y * w + x] = GRID_BLOCKED;
+			if (x > wall)
+				goal->cells[y * w + x] = GRID_FREE;
+		}
+}
+
+TEST_CASE(door_problems_agree_with_brute_force)
+{
+	/* Found exactly when the brute force finds a path; without the route's
+	 * pruning at the same least cost, with it at no less. */
+	oracle_seed = 2026;
+	int found = 0, none = 0;
+	for (int t = 0; t < 40; t++) {
+		int w = 17, h = 12, wall = 9, width = 1 + oracle_rand_below(5);
+		Grid grid, goal;
+		door_grid(&grid, &goal, w, h, wall, 1 + oracle_rand_below(h - 1 - width), width);
+		CarryObject obj = {.at = vec2(2.5 + oracle_rand_below(2), 5.5 + oracle_rand_below(2))};
+		door_shape(t % 4, floor(obj.at.x) + 1, obj.at.y, &obj.shape);
+		int n = t % 3 == 0 ? 8 : 12;
+		Brute b = {.grid = &grid, .goal = &goal};
+		int64_t want = brute_cost(&b, &obj, n);
+		CarryParams pr = carry_params_default();
+		pr.angles = n;
+		CarryGoal g = {.inside = &goal};
+		CarryResult r;
+		carry_result_init(&r);
+		for (int route = 0; route < 2; route++) {
+			pr.use_route = route;
+			CarryPlanner cp;
+			carry_init(&cp, &grid, &pr);
+			CarryStatus st = carry_plan(&cp, &obj, &g, &r);
+			carry_free(&cp);
+			if ((st == CARRY_FOUND) != (want >= 0) || (st == CARRY_FOUND && !route && r.plan.cost != want))
+				fprintf(stderr, "  problem %d route %d: status %d cost %lld, brute force %lld (%s)\n", t,
+					route, st, (long long)r.plan.cost, (long long)want, r.why);
+			TEST_CHECK((st == CARRY_FOUND) == (want >= 0));
+			TEST_CHECK(st != CARRY_FOUND || (route ? r.plan.cost >= want : r.plan.cost == want));
+			TEST_CHECK(st == CARRY_FOUND || r.why[0] != '\0');
+		}
+		found += want >= 0;
+		none += want < 0;
+		carry_result_free(&r);
+		grid_free(&grid);
+		grid_free(&goal);
+	}
+	fprintf(stderr, "  door problems: %d with a path, %d without\n", found, none);
+	TEST_CHECK(found >= 8 && none >= 8);
+}
+
+int main(void)
+{
+	TEST_RUN(square_into_the_next_room_every_heading);
+	TEST_RUN(brick_must_turn_to_pass_the_door);
+	TEST_RUN(door_problems_agree_with_brute_force);
+	return TEST_EXIT();
+}
