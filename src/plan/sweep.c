@@ -74,23 +74,34 @@ static bool sweep_segment_meets_box(Vec2 a, Vec2 b, Vec2 lo)
 	return t0 <= t1;
 }
 
-/* sweep_point_box_distance(q, lo): from q to the closed square [lo, lo+1]^2. */
-static double sweep_point_box_distance(Vec2 q, Vec2 lo)
+/* sweep_point_box_distance2(q, lo): the squared distance from q to the closed square
+ * [lo, lo+1]^2 (squared, so that the inner loops need no square root). */
+static double sweep_point_box_distance2(Vec2 q, Vec2 lo)
 {
 	double dx = fmax(0, fmax(lo.x - q.x, q.x - (lo.x + 1)));
 	double dy = fmax(0, fmax(lo.y - q.y, q.y - (lo.y + 1)));
-	return hypot(dx, dy);
+	return dx * dx + dy * dy;
 }
 
-/* sweep_segment_box_distance(a, b, lo): from segment ab to the closed square. */
-static double sweep_segment_box_distance(Vec2 a, Vec2 b, Vec2 lo)
+/* sweep_point_segment_distance2(q, a, b): the squared distance from q to segment ab. */
+static double sweep_point_segment_distance2(Vec2 q, Vec2 a, Vec2 b)
+{
+	Vec2 ab = vec2_sub(b, a), aq = vec2_sub(q, a);
+	double len2 = vec2_dot(ab, ab), f = len2 > 0 ? vec2_dot(aq, ab) / len2 : 0;
+	f = f < 0 ? 0 : f > 1 ? 1 : f;
+	Vec2 d = vec2_sub(aq, vec2_scale(ab, f));
+	return vec2_dot(d, d);
+}
+
+/* sweep_segment_box_distance2(a, b, lo): squared, from segment ab to the closed square. */
+static double sweep_segment_box_distance2(Vec2 a, Vec2 b, Vec2 lo)
 {
 	if (sweep_segment_meets_box(a, b, lo))
 		return 0;
-	double d = fmin(sweep_point_box_distance(a, lo), sweep_point_box_distance(b, lo));
+	double d = fmin(sweep_point_box_distance2(a, lo), sweep_point_box_distance2(b, lo));
 	const Vec2 corner[4] = {lo, vec2(lo.x + 1, lo.y), vec2(lo.x + 1, lo.y + 1), vec2(lo.x, lo.y + 1)};
 	for (int k = 0; k < 4; k++)
-		d = fmin(d, geom_point_segment_distance(corner[k], a, b));
+		d = fmin(d, sweep_point_segment_distance2(corner[k], a, b));
 	return d;
 }
 
@@ -125,7 +136,7 @@ static void sweep_near_polygon(const Polygon *p, double r, SweepSpanFn *fn, void
 			Vec2 lo = vec2(x, y);
 			bool near = geom_point_in_polygon(p, vec2(x + 0.5, y + 0.5));
 			for (int32_t i = 0; i < p->count && !near; i++)
-				near = sweep_segment_box_distance(p->v[i], p->v[(i + 1) % p->count], lo) < r;
+				near = sweep_segment_box_distance2(p->v[i], p->v[(i + 1) % p->count], lo) < r * r;
 			if (near && run == SWEEP_NO_RUN)
 				run = x;
 			else if (!near)
@@ -155,7 +166,7 @@ void sweep_cover_segment(Vec2 a, Vec2 b, double r, SweepSpanFn *fn, void *ctx)
 	for (int32_t y = y0; y <= y1; y++) {
 		int32_t run = SWEEP_NO_RUN;
 		for (int32_t x = x0; x <= x1; x++) {
-			bool near = sweep_segment_box_distance(a, b, vec2(x, y)) < r;
+			bool near = sweep_segment_box_distance2(a, b, vec2(x, y)) < r * r;
 			if (near && run == SWEEP_NO_RUN)
 				run = x;
 			else if (!near)
