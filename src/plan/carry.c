@@ -125,7 +125,7 @@ typedef struct CarryWork {
 CarryParams carry_params_default(void)
 {
 	return (CarryParams){.angles = CARRY_ANGLES_DEFAULT, .turn_weight = 1.0, .exact_start = true,
-			     .use_route = true, .use_clearance = true};
+			     .use_route = true, .use_clearance = true, .use_disc = true};
 }
 
 static int32_t layer_angle(const CarryWork *k, int32_t layer)
@@ -182,6 +182,35 @@ static double carry_narrowest(const Polygon *p)
 			far = fmax(far, fabs(geom_orient(a, b, hull[j])) / len);
 		best = fmin(best, far);
 	}
+	return best;
+}
+
+/* CARRY_DISC_SAMPLES: the inscribed disc is sought at this many sample points
+ * across the object's box (per axis): any disc inside the object serves the proof
+ * below, a larger one proves more. */
+#define CARRY_DISC_SAMPLES 64
+
+/* carry_inscribed(p, &centre): a large disc inside p: the sample point inside p
+ * farthest from its edges (a grid of samples over the box); its radius, 0 when no
+ * sample falls inside. */
+static double carry_inscribed(const Polygon *p, Vec2 *centre)
+{
+	Box b = geom_polygon_box(p);
+	double best = 0, step = fmax(b.hi.x - b.lo.x, b.hi.y - b.lo.y) / CARRY_DISC_SAMPLES;
+	*centre = p->v[0];
+	for (double y = b.lo.y + step / 2; y < b.hi.y; y += step)
+		for (double x = b.lo.x + step / 2; x < b.hi.x; x += step) {
+			Vec2 q = vec2(x, y);
+			if (!geom_point_in_polygon(p, q))
+				continue;
+			double d = INFINITY;
+			for (int32_t i = 0; i < p->count; i++)
+				d = fmin(d, geom_point_segment_distance(q, p->v[i], p->v[(i + 1) % p->count]));
+			if (d > best) {
+				best = d;
+				*centre = q;
+			}
+		}
 	return best;
 }
 
@@ -472,10 +501,11 @@ static void estimate(CarryWork *k)
 
 /* ---- the route ---------------------------------------------------------------------- */
 
-/* corridor(k, grid, at, narrowest, reach): k->allowed := the Utak cells within reach
- * + CARRY_CORRIDOR_MARGIN of the skeleton route from at to the deepest cell of the
- * goal region (see ALGORITHM). False, with allowed untouched, when there is none. */
-static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double narrowest, double reach)
+/* corridor(k, grid, at, radius, reach): k->allowed := the Utak cells within reach +
+ * CARRY_CORRIDOR_MARGIN of the skeleton route from at to the deepest cell of the
+ * goal region (see ALGORITHM), a route on skeleton edges wide enough for the disc of
+ * that radius inside the object. False, with allowed untouched, when there is none. */
+static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double radius, double reach)
 {
 	if (!k->have_graph) {
 		skeleton_compute(&k->skeleton, grid);
@@ -498,9 +528,11 @@ static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double narrowest, 
 	Path route;
 	path_init(&route);
 	if (d2[deepest] > 0) {
-		/* A door d cells wide has a skeleton cell of clearance (d + 1) / 2
-		 * (rounded down): skip the edges narrower than the object's width. */
-		double need = floor((ceil(narrowest - 1e-9) + 1) / 2) - 0.01;
+		/* The disc inside the object fits about no point of a cell whose centre is
+		 * less than radius - 0.21 from a blocked centre (disc_cannot_pass says
+		 * why): skip the skeleton edges with such cells. (The hull's narrowest
+		 * width would be no bound: an L-shape passes doors narrower than it.) */
+		double need = radius - (sqrt(2.0) / 2 - 0.5);
 		PathgraphQuery q = {.min_clearance = need > 0 ? need : 0};
 		Vec2 to = vec2((double)(deepest % (size_t)w) + 0.5, (double)(deepest / (size_t)w) + 0.5);
 		found = pathgraph_find_path(&k->graph, at, to, &q, &route);
@@ -531,6 +563,82 @@ static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double narrowest, 
 	free(d2);
 	grid_free(&scratch);
 	return found;
+}
+
+/* ---- the disc ------------------------------------------------------------------------ */
+
+/* CARRY_DISC_REFINE: the disc's proof works on cells this many times finer than the
+ * grid's, so that its bound (below) is loose by at most 0.21 / CARRY_DISC_REFINE. */
+#define CARRY_DISC_REFINE 2
+
+/* refined_edt(k, in_goal, d2): the distance transform of the grid refined by
+ * CARRY_DISC_REFINE (a fine cell blocked when its grid cell is blocked, or with
+ * in_goal when it is outside the goal region), into d2 (fine cells, row-major). */
+static void refined_edt(const CarryWork *k, bool in_goal, int32_t *d2)
+{
+	int32_t m = CARRY_DISC_REFINE, fw = k->w * m, fh = k->h * m;
+	Grid fine;
+	grid_init(&fine, fw, fh, GRID_BLOCKED);
+	for (int32_t y = 0; y < fh; y++)
+		for (int32_t x = 0; x < fw; x++) {
+			size_t c = (size_t)(y / m) * k->w + (size_t)(x / m);
+			bool open = k->grid_cells[c] == GRID_FREE && (!in_goal || k->goal->inside->cells[c] == GRID_FREE);
+			fine.cells[(size_t)y * fw + x] = open ? GRID_FREE : GRID_BLOCKED;
+		}
+	skeleton_edt(&fine, d2);
+	grid_free(&fine);
+}
+
+/* disc_cannot_pass(k, centre, radius): the shape's proof (carry.h, PRUNING): true
+ * when the disc of that radius at centre (inside the object, grid units) cannot get
+ * from where it is to anywhere it could lie wholly inside the goal region, so
+ * neither can the object. On the refined cells (side 1 / m): a point q of a cell
+ * whose centre is D fine cells from the nearest blocked fine cell's centre is at most
+ * (D - 1/2 + sqrt 2 / 2) / m from the blocked squares (q is within sqrt 2 / 2 of its
+ * centre, and the blocked cell holds the disc of radius 1/2 about its own); so the
+ * cells where that bound reaches the radius hold every place the disc's centre can
+ * be. The disc moves continuously (every pose along a push or a turn is checked), so
+ * its centre stays in their 8-connected component; the goal likewise, with the
+ * distance to the squares outside the goal region. */
+static bool disc_cannot_pass(CarryWork *k, Vec2 centre, double radius)
+{
+	int32_t m = CARRY_DISC_REFINE, fw = k->w * m, fh = k->h * m;
+	/* D reaches the radius when D >= radius m + 1/2 - sqrt 2 / 2. */
+	double need = radius * m + 0.5 - sqrt(2.0) / 2;
+	int32_t cx = (int32_t)floor(centre.x * m), cy = (int32_t)floor(centre.y * m);
+	if (need <= 1 || cx < 0 || cy < 0 || cx >= fw || cy >= fh)
+		return false;
+	size_t cells = (size_t)fw * (size_t)fh;
+	int32_t *d2 = util_alloc(cells, sizeof *d2), *gd2 = util_alloc(cells, sizeof *gd2);
+	refined_edt(k, false, d2);
+	refined_edt(k, true, gd2);
+	uint8_t *seen = util_alloc(cells, 1);
+	int32_t *queue = util_alloc(cells, sizeof *queue);
+	size_t head = 0, tail = 0;
+	bool through = false;
+	double need2 = need * need;
+	seen[(size_t)cy * fw + cx] = 1;
+	queue[tail++] = cy * fw + cx;
+	while (head < tail && !through) {
+		int32_t i = queue[head++], x = i % fw, y = i / fw;
+		through = (double)gd2[i] >= need2;
+		for (int32_t dy = -1; dy <= 1; dy++)
+			for (int32_t dx = -1; dx <= 1; dx++) {
+				int32_t nx = x + dx, ny = y + dy;
+				if (nx < 0 || ny < 0 || nx >= fw || ny >= fh)
+					continue;
+				size_t j = (size_t)ny * fw + nx;
+				if (!seen[j] && (double)d2[j] >= need2) {
+					seen[j] = 1;
+					queue[tail++] = (int32_t)j;
+				}
+			}
+	}
+	free(d2);
+	free(gd2);
+	free(seen);
+	free(queue);
+	return !through;
 }
 
 /* ---- the search --------------------------------------------------------------------- */
@@ -1093,7 +1201,9 @@ CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal
 			 name);
 		goto done;
 	}
-	if (cp->params.use_route && corridor(k, cp->grid, obj->at, out->narrowest, out->reach)) {
+	Vec2 centre;
+	out->disc = carry_inscribed(&obj->shape, &centre);
+	if (cp->params.use_route && corridor(k, cp->grid, obj->at, out->disc, out->reach)) {
 		out->stats.routed = true;
 		estimate(k);
 		if (k->steps[(size_t)sy * k->w + sx] >= 0)
@@ -1101,6 +1211,14 @@ CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal
 		out->stats.found_in_corridor = found >= 0;
 		if (found < 0)
 			reset_search(k);
+	}
+	/* Before the whole grid is searched, the disc may prove it in vain. */
+	if (found < 0 && cp->params.use_disc && disc_cannot_pass(k, centre, out->disc)) {
+		out->stats.disc_proof = true;
+		memset(k->allowed, 1, k->cells);
+		estimate(k);
+		explain(k, start_layer, sx, sy, name, out);
+		goto done;
 	}
 	if (found < 0) {
 		memset(k->allowed, 1, k->cells);

@@ -2,14 +2,13 @@
  * for carry.c). See sweep.h for the rule and its guarantees.
  *
  * ALGORITHM. A pose with r == 0 is geom_project, the TABLE's own projection, so the
- * planner and the simulator cannot disagree about a pose. Within r > 0, each
- * square of the shape's box grown by r is tested: covered when the closed square
- * meets the polygon (its centre inside the polygon, or an edge meeting the closed
- * square: Liang-Barsky clipping, Liang and Barsky 1984), or when an edge passes
- * nearer than r; the distance between a segment and a box that do not meet is
- * attained at an end of one of them (both are convex), so it is the least of the
- * segment's ends to the box and the box's corners to the segment. A push adds the
- * poses at both ends and each edge's parallelogram; a turn adds its samples.
+ * planner and the simulator cannot disagree about a pose. Within r > 0: the
+ * projection, and along each edge, row by row, the squares nearer than r to it
+ * (the closed square meets the edge: Liang-Barsky clipping, Liang and Barsky 1984;
+ * else the distance between a segment and a box that do not meet is attained at an
+ * end of one of them, both being convex, so it is the least of the segment's ends
+ * to the box and the box's corners to the segment). A push adds the poses at both
+ * ends and each edge's parallelogram; a turn adds its samples.
  *
  * INVARIANT: win->cell[(y + radius) * side + x + radius] is 1 exactly when cell
  * (x, y) has been marked since the last clear. */
@@ -124,19 +123,31 @@ static void sweep_emit(SweepSpanFn *fn, void *ctx, int32_t y, int32_t x, int32_t
 	*run = SWEEP_NO_RUN;
 }
 
-static void sweep_near_polygon(const Polygon *p, double r, SweepSpanFn *fn, void *ctx)
+/* sweep_near_segment(a, b, r, fn, ctx): the cells whose closed square comes nearer
+ * than r to segment ab, row by row: in each row only the columns the segment,
+ * thickened by r, can reach are tested. */
+static void sweep_near_segment(Vec2 a, Vec2 b, double r, SweepSpanFn *fn, void *ctx)
 {
-	Box b = geom_polygon_box(p);
-	int32_t x0, x1, y0, y1;
-	sweep_range(b.lo.x, b.hi.x, r, &x0, &x1);
-	sweep_range(b.lo.y, b.hi.y, r, &y0, &y1);
+	int32_t y0, y1;
+	sweep_range(fmin(a.y, b.y), fmax(a.y, b.y), r, &y0, &y1);
 	for (int32_t y = y0; y <= y1; y++) {
-		int32_t run = SWEEP_NO_RUN;
+		/* The segment's x extent within the rows y - r .. y + 1 + r. */
+		double lo = y - r, hi = y + 1 + r, t0 = 0, t1 = 1, dy = b.y - a.y;
+		if (dy == 0) {
+			if (a.y < lo || a.y > hi)
+				continue;
+		} else {
+			double ta = (lo - a.y) / dy, tb = (hi - a.y) / dy;
+			t0 = fmax(0, fmin(ta, tb));
+			t1 = fmin(1, fmax(ta, tb));
+			if (t0 > t1)
+				continue;
+		}
+		double xa = a.x + t0 * (b.x - a.x), xb = a.x + t1 * (b.x - a.x);
+		int32_t x0, x1, run = SWEEP_NO_RUN;
+		sweep_range(fmin(xa, xb), fmax(xa, xb), r, &x0, &x1);
 		for (int32_t x = x0; x <= x1; x++) {
-			Vec2 lo = vec2(x, y);
-			bool near = geom_point_in_polygon(p, vec2(x + 0.5, y + 0.5));
-			for (int32_t i = 0; i < p->count && !near; i++)
-				near = sweep_segment_box_distance2(p->v[i], p->v[(i + 1) % p->count], lo) < r * r;
+			bool near = sweep_segment_box_distance2(a, b, vec2(x, y)) < r * r;
 			if (near && run == SWEEP_NO_RUN)
 				run = x;
 			else if (!near)
@@ -144,6 +155,16 @@ static void sweep_near_polygon(const Polygon *p, double r, SweepSpanFn *fn, void
 		}
 		sweep_emit(fn, ctx, y, x1 + 1, &run);
 	}
+}
+
+/* sweep_near_polygon(p, r, fn, ctx): a closed square comes nearer than r to p when
+ * it meets p's interior (its open interior meets p: the projection) or comes nearer
+ * than r to an edge (it touches p, or p's nearest point to it is on an edge). */
+static void sweep_near_polygon(const Polygon *p, double r, SweepSpanFn *fn, void *ctx)
+{
+	sweep_project(p, fn, ctx);
+	for (int32_t i = 0; i < p->count; i++)
+		sweep_near_segment(p->v[i], p->v[(i + 1) % p->count], r, fn, ctx);
 }
 
 /* ---- the covers ------------------------------------------------------------------ */
@@ -160,20 +181,7 @@ void sweep_cover_polygon(const Polygon *p, double r, SweepSpanFn *fn, void *ctx)
 void sweep_cover_segment(Vec2 a, Vec2 b, double r, SweepSpanFn *fn, void *ctx)
 {
 	assert(r > 0);
-	int32_t x0, x1, y0, y1;
-	sweep_range(fmin(a.x, b.x), fmax(a.x, b.x), r, &x0, &x1);
-	sweep_range(fmin(a.y, b.y), fmax(a.y, b.y), r, &y0, &y1);
-	for (int32_t y = y0; y <= y1; y++) {
-		int32_t run = SWEEP_NO_RUN;
-		for (int32_t x = x0; x <= x1; x++) {
-			bool near = sweep_segment_box_distance2(a, b, vec2(x, y)) < r * r;
-			if (near && run == SWEEP_NO_RUN)
-				run = x;
-			else if (!near)
-				sweep_emit(fn, ctx, y, x, &run);
-		}
-		sweep_emit(fn, ctx, y, x1 + 1, &run);
-	}
+	sweep_near_segment(a, b, r, fn, ctx);
 }
 
 void sweep_cover_push(const Polygon *p, Vec2 d, double r, SweepSpanFn *fn, void *ctx)

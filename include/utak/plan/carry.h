@@ -136,6 +136,7 @@ typedef struct CarryParams {
 	bool exact_start;	/* the object's coordinates are exactly the simulator's (see above) */
 	bool use_route;		/* prune by the skeleton route first (see PRUNING) */
 	bool use_clearance;	/* settle configurations by clearance (see PRUNING) */
+	bool use_disc;		/* prove impossibility by the inscribed disc (see PRUNING) */
 } CarryParams;
 
 /* carry_params_default(): N = CARRY_ANGLES_DEFAULT, turn_weight 1, exact start,
@@ -190,6 +191,7 @@ typedef struct CarryStats {
 	bool routed;		/* a skeleton route was found for the corridor */
 	bool found_in_corridor;	/* the plan came from the corridor search */
 	int64_t corridor_cells;	/* Utak cells in the corridor */
+	bool disc_proof;	/* no path, proved by the inscribed disc before any search */
 } CarryStats;
 
 typedef enum CarryStatus {
@@ -205,6 +207,7 @@ typedef struct CarryResult {
 	CarryStats stats;
 	double narrowest;	/* the object's narrowest width, squares */
 	double reach;		/* its farthest point from Utak's point, squares */
+	double disc;		/* the radius of a disc inside it (the largest found), squares */
 	int32_t way;		/* when no path: the widest square (side, squares) that passes
 				 * from the object to the goal region; -1 when not measured */
 } CarryResult;
