@@ -1,5 +1,6 @@
-/* carry.c - carrying a held object in (x, y, theta) (paper 2.2, 3.6, 5; see carry.h
- * for the model, the guarantees and the use).
+/* carry.c - carrying a held object in (x, y, theta): the lattice and its search
+ * (paper 2.2, 3.6, 4.3, 5; see carry.h for the model, the guarantees and the use;
+ * carrypath.c turns the path found into motor commands).
  *
  * ALGORITHM.
  *  1. Footprints (sweep.h), once per plan: for each of the N + 4 layers (N tolerant
@@ -8,19 +9,22 @@
  *     sweeps. Each layer's slice of the configuration space is the grid eroded by
  *     one footprint (Lozano-Perez 1983; cspace.c), here evaluated lazily: one range
  *     test on per-row prefix sums of blocked cells per run, memoised per
- *     configuration.
+ *     configuration; where the distance transform shows the reach about Utak clear,
+ *     no test at all.
  *  2. The estimate: the cells within Chebyshev distance s of the goal region, s the
  *     largest, over the layers, of the least distance from Utak's cell to a cell of
  *     the object (a configuration with the object wholly in the region has Utak
  *     within s of it); then the breadth-first steps from those cells through free
- *     cells: a lower bound on the pushes still needed.
+ *     cells: a lower bound on the pushes still needed, consistent.
  *  3. The route (paper 4.3): the pathgraph's shortest path from Utak to the deepest
- *     cell of the goal region through skeleton edges with clearance for the
- *     object's narrowest width; the corridor is the Utak cells near it.
- *  4. A* (Hart, Nilsson and Raphael 1968) in the corridor, then if need be on the
- *     whole grid; lazy deletion of stale heap entries.
- *  5. The plan: turns merged greedily, pushes string-pulled, every piece checked
- *     again with the same footprints and sweeps (carry.h, THE PLAN).
+ *     cell of the goal region through skeleton edges wide enough for the disc
+ *     inside the object; the corridor is the Utak cells near it.
+ *  4. A* (Hart, Nilsson and Raphael 1968) in the corridor; if that fails, the disc
+ *     inside the object may prove that nothing can pass (on cells twice as fine as
+ *     the grid's); else A* on the whole grid, exhaustive when there is no path.
+ *     Lazy deletion of stale heap entries.
+ *  5. The path, read back from the moves that reached each configuration, as items
+ *     for carrypath.c; when none, the reason (explain).
  *
  * INVARIANTS. A configuration's id is (layer h + y) w + x. g[id] is 0 until the
  * search reaches id, then its best cost + 1; from[id] the move that reached it,
@@ -31,6 +35,8 @@
  *
  * MEMORY and COMPLEXITY: see carry.h. */
 #include "utak/plan/carry.h"
+
+#include "carry_work.h"
 
 #include <assert.h>
 #include <math.h>
@@ -45,10 +51,6 @@
 #include "utak/plan/skeleton.h"
 #include "utak/plan/sweep.h"
 
-#define CARRY_PI 3.14159265358979323846
-/* The exact layers: the quarter turns 0, 90, 180, 270 degrees. */
-#define CARRY_QUARTERS 4
-#define CARRY_LAYERS_MAX (CARRY_ANGLES_MAX + CARRY_QUARTERS)
 /* Heap keys: f * 2^24 + (2^24 - 1 - g), so that of equal f the deeper state (larger
  * g) comes first; exact in a double while f < 2^29 (8 million squares of path). */
 #define CARRY_KEY_SHIFT 16777216.0
@@ -71,55 +73,6 @@ enum { KNOWN_BODY = 1, BODY_FREE = 2, KNOWN_GOAL = 4, GOAL_HOLDS = 8 };
 /* turned[] bits. */
 enum { KNOWN_TURN = 1, TURN_FREE = 2 };
 
-/* A growable list of ids. */
-typedef struct CarryIds {
-	int32_t *id;
-	int count, cap;
-} CarryIds;
-
-static void ids_push(CarryIds *l, int32_t id)
-{
-	l->id = util_grow(l->id, &l->cap, l->count + 1, sizeof *l->id);
-	l->id[l->count++] = id;
-}
-
-typedef struct CarryWork {
-	int32_t w, h;
-	size_t cells;			/* w h */
-	const uint8_t *grid_cells;	/* the grid's own */
-	/* The grid's caches. */
-	int32_t *blocked;		/* (w + 1) h: per row, blocked cells before column x */
-	int32_t *dist2;			/* w h: skeleton_edt of the grid */
-	Skeleton skeleton;
-	Pathgraph graph;
-	bool have_graph;
-	/* The plan's object. */
-	int32_t angles, layers;
-	int32_t deg[CARRY_ANGLES_MAX + 1];	/* deg[N] = 360 */
-	int32_t turn_cost[CARRY_ANGLES_MAX];	/* step k -> k + 1 */
-	CSpaceFootprint body[CARRY_LAYERS_MAX];
-	CSpaceFootprint object[CARRY_LAYERS_MAX];
-	CSpaceFootprint sweep[CARRY_ANGLES_MAX];
-	Polygon rel;			/* the object about Utak's point */
-	Vec2 frac;			/* Utak's point inside his cell */
-	int32_t settle_dist2;		/* dist2 above which everything is free */
-	bool exact_start;
-	/* The plan's goal. */
-	const CarryGoal *goal;
-	int32_t *outside;		/* (w + 1) h: per row, cells not in the goal before x */
-	int32_t *steps;			/* w h: the estimate's steps, -1 unreachable */
-	uint8_t *allowed;		/* w h: Utak cells the search may use */
-	/* Per configuration. */
-	uint32_t *g;
-	uint8_t *from;
-	uint8_t *known;
-	uint8_t *turned;		/* per (angle, cell) */
-	CarryIds touched_search, touched_known, touched_turned;
-	Heap heap;
-	CarryStats *stats;
-	const CarryParams *params;
-} CarryWork;
-
 /* ---- parameters ------------------------------------------------------------------ */
 
 CarryParams carry_params_default(void)
@@ -128,19 +81,6 @@ CarryParams carry_params_default(void)
 			     .use_route = true, .use_clearance = true, .use_disc = true};
 }
 
-static int32_t layer_angle(const CarryWork *k, int32_t layer)
-{
-	return layer < k->angles ? layer : (layer - k->angles) * (k->angles / CARRY_QUARTERS);
-}
-
-static bool layer_exact(const CarryWork *k, int32_t layer) { return layer >= k->angles; }
-
-/* exact_layer(k, angle): the exact layer of a quarter-turn angle. */
-static int32_t exact_layer(const CarryWork *k, int32_t angle)
-{
-	assert(angle % (k->angles / CARRY_QUARTERS) == 0);
-	return k->angles + angle / (k->angles / CARRY_QUARTERS);
-}
 
 /* ---- the shape ------------------------------------------------------------------- */
 
@@ -321,10 +261,10 @@ static void footprints(CarryWork *k)
 	SweepWindow win;
 	sweep_window_init(&win, (int32_t)ceil(sweep_reach(&k->rel)) + 3);
 	for (int32_t l = 0; l < k->layers; l++) {
-		int32_t angle = layer_angle(k, l);
+		int32_t angle = carry_layer_angle(k, l);
 		Polygon p = sweep_turned(&k->rel, k->frac, k->deg[angle]);
 		sweep_window_clear(&win);
-		sweep_cover_polygon(&p, layer_exact(k, l) ? 0 : SWEEP_EPS, sweep_window_span, &win);
+		sweep_cover_polygon(&p, carry_layer_exact(k, l) ? 0 : SWEEP_EPS, sweep_window_span, &win);
 		sweep_window_runs(&win, &k->object[l]);
 		sweep_window_span(&win, 0, 0, 0); /* Utak's square */
 		sweep_window_runs(&win, &k->body[l]);
@@ -345,8 +285,8 @@ static bool settled(const CarryWork *k, int32_t x, int32_t y)
 	return k->params->use_clearance && k->dist2[(size_t)y * (size_t)k->w + (size_t)x] > k->settle_dist2;
 }
 
-/* body_free(k, layer, x, y): the body fits at configuration (x, y, layer). */
-static bool body_free(CarryWork *k, int32_t layer, int32_t x, int32_t y)
+/* carry_body_free(k, layer, x, y): the body fits at configuration (x, y, layer). */
+bool carry_body_free(CarryWork *k, int32_t layer, int32_t x, int32_t y)
 {
 	size_t id = ((size_t)layer * (size_t)k->h + (size_t)y) * (size_t)k->w + (size_t)x;
 	uint8_t bits = k->known[id];
@@ -361,7 +301,7 @@ static bool body_free(CarryWork *k, int32_t layer, int32_t x, int32_t y)
 		k->stats->checked++;
 	}
 	if (!bits)
-		ids_push(&k->touched_known, (int32_t)id);
+		carry_ids_push(&k->touched_known, (int32_t)id);
 	k->known[id] = (uint8_t)(bits | KNOWN_BODY | (ok ? BODY_FREE : 0));
 	return ok;
 }
@@ -382,14 +322,14 @@ static bool turn_free(CarryWork *k, int32_t angle, int32_t x, int32_t y)
 		ok = fits(k->blocked, k->w, k->h, &k->sweep[angle], x, y);
 		k->stats->checked++;
 	}
-	ids_push(&k->touched_turned, (int32_t)id);
+	carry_ids_push(&k->touched_turned, (int32_t)id);
 	k->turned[id] = (uint8_t)(KNOWN_TURN | (ok ? TURN_FREE : 0));
 	return ok;
 }
 
-/* turn_run_free(k, angle, steps, x, y): a turn of steps angle steps (signed) from
+/* carry_turn_run_free(k, angle, steps, x, y): a turn of steps angle steps (signed) from
  * angle, at (x, y). */
-static bool turn_run_free(CarryWork *k, int32_t angle, int32_t steps, int32_t x, int32_t y)
+bool carry_turn_run_free(CarryWork *k, int32_t angle, int32_t steps, int32_t x, int32_t y)
 {
 	int32_t n = k->angles;
 	for (int32_t i = 0; i < abs(steps); i++) {
@@ -403,11 +343,11 @@ static bool turn_run_free(CarryWork *k, int32_t angle, int32_t steps, int32_t x,
 static CarryPose pose_of(const CarryWork *k, int32_t layer, int32_t x, int32_t y)
 {
 	return (CarryPose){.at = vec2(x + k->frac.x, y + k->frac.y), .x = x, .y = y,
-			   .deg = k->deg[layer_angle(k, layer)], .exact = layer_exact(k, layer)};
+			   .deg = k->deg[carry_layer_angle(k, layer)], .exact = carry_layer_exact(k, layer)};
 }
 
-/* goal_holds(k, layer, x, y): a free configuration is a goal. */
-static bool goal_holds(CarryWork *k, int32_t layer, int32_t x, int32_t y)
+/* carry_goal_holds(k, layer, x, y): a free configuration is a goal. */
+bool carry_goal_holds(CarryWork *k, int32_t layer, int32_t x, int32_t y)
 {
 	size_t id = ((size_t)layer * (size_t)k->h + (size_t)y) * (size_t)k->w + (size_t)x;
 	uint8_t bits = k->known[id];
@@ -421,7 +361,7 @@ static bool goal_holds(CarryWork *k, int32_t layer, int32_t x, int32_t y)
 		ok = goal->accept(goal->ctx, &pose);
 	}
 	if (!bits)
-		ids_push(&k->touched_known, (int32_t)id);
+		carry_ids_push(&k->touched_known, (int32_t)id);
 	k->known[id] = (uint8_t)(bits | KNOWN_GOAL | (ok ? GOAL_HOLDS : 0));
 	return ok;
 }
@@ -655,7 +595,7 @@ static void relax(CarryWork *k, int32_t id, int64_t g, int move)
 	if (old != 0 && ((k->from[id] & CARRY_CLOSED) || (int64_t)old - 1 <= g))
 		return;
 	if (old == 0)
-		ids_push(&k->touched_search, id);
+		carry_ids_push(&k->touched_search, id);
 	assert(g < UINT32_MAX - 1);
 	k->g[id] = (uint32_t)(g + 1);
 	k->from[id] = (uint8_t)move;
@@ -679,7 +619,7 @@ static int32_t search(CarryWork *k, int32_t start)
 		k->stats->expanded++;
 		int32_t layer = (int32_t)((size_t)id / k->cells), cell = (int32_t)((size_t)id % k->cells);
 		int32_t x = cell % k->w, y = cell / k->w;
-		if (goal_holds(k, layer, x, y))
+		if (carry_goal_holds(k, layer, x, y))
 			return id;
 		int64_t g = (int64_t)k->g[id] - 1;
 		size_t base = (size_t)layer * k->cells;
@@ -688,12 +628,12 @@ static int32_t search(CarryWork *k, int32_t start)
 			if (nx < 0 || ny < 0 || nx >= k->w || ny >= k->h)
 				continue;
 			size_t c = (size_t)ny * k->w + nx;
-			if (!k->allowed[c] || k->steps[c] < 0 || !body_free(k, layer, nx, ny))
+			if (!k->allowed[c] || k->steps[c] < 0 || !carry_body_free(k, layer, nx, ny))
 				continue;
 			relax(k, (int32_t)(base + c), g + CARRY_UNIT, m);
 		}
-		int32_t angle = layer_angle(k, layer);
-		bool exact = layer_exact(k, layer);
+		int32_t angle = carry_layer_angle(k, layer);
+		bool exact = carry_layer_exact(k, layer);
 		int32_t ccw = (angle + 1) % n, cw = (angle + n - 1) % n;
 		if (turn_free(k, angle, x, y))
 			relax(k, (int32_t)((size_t)ccw * k->cells + cell), g + k->turn_cost[angle],
@@ -708,11 +648,11 @@ static int32_t search(CarryWork *k, int32_t start)
 			up += k->turn_cost[(angle + i) % n];
 			down += k->turn_cost[(angle + n - 1 - i) % n];
 		}
-		if (turn_run_free(k, angle, quarter, x, y))
-			relax(k, (int32_t)((size_t)exact_layer(k, (angle + quarter) % n) * k->cells + cell), g + up,
+		if (carry_turn_run_free(k, angle, quarter, x, y))
+			relax(k, (int32_t)((size_t)carry_exact_layer(k, (angle + quarter) % n) * k->cells + cell), g + up,
 			      MOVE_QUARTER_CCW);
-		if (turn_run_free(k, angle, -quarter, x, y))
-			relax(k, (int32_t)((size_t)exact_layer(k, (angle + n - quarter) % n) * k->cells + cell),
+		if (carry_turn_run_free(k, angle, -quarter, x, y))
+			relax(k, (int32_t)((size_t)carry_exact_layer(k, (angle + n - quarter) % n) * k->cells + cell),
 			      g + down, MOVE_QUARTER_CW);
 	}
 	return -1;
@@ -724,7 +664,7 @@ static int32_t predecessor(const CarryWork *k, int32_t id, int32_t *turn)
 {
 	int32_t n = k->angles, quarter = n / CARRY_QUARTERS;
 	int32_t layer = (int32_t)((size_t)id / k->cells), cell = (int32_t)((size_t)id % k->cells);
-	int32_t angle = layer_angle(k, layer), move = k->from[id] & CARRY_MOVE_MASK, prev;
+	int32_t angle = carry_layer_angle(k, layer), move = k->from[id] & CARRY_MOVE_MASK, prev;
 	*turn = 0;
 	switch (move) {
 	case MOVE_EAST:
@@ -756,7 +696,7 @@ static int32_t predecessor(const CarryWork *k, int32_t id, int32_t *turn)
 	}
 	bool from_exact = move == MOVE_CCW_EXACT || move == MOVE_CW_EXACT || move == MOVE_QUARTER_CCW ||
 			  move == MOVE_QUARTER_CW;
-	int32_t prev_layer = from_exact ? exact_layer(k, prev) : prev;
+	int32_t prev_layer = from_exact ? carry_exact_layer(k, prev) : prev;
 	return (int32_t)((size_t)prev_layer * k->cells + (size_t)cell);
 }
 
@@ -780,195 +720,10 @@ static void reset_checks(CarryWork *k)
 
 /* ---- the plan ------------------------------------------------------------------------ */
 
-/* An item of the lattice plan: a turn of `turn` angle steps (signed) where Utak
- * stands, or (turn == 0) a push of one square to cell (x, y). */
-typedef struct CarryItem {
-	int32_t turn;
-	int32_t x, y;
-} CarryItem;
-
-typedef struct CarryItems {
-	CarryItem *item;
-	int count, cap;
-} CarryItems;
-
-static void items_push(CarryItems *l, CarryItem it)
+void carry_items_push(CarryItems *l, CarryItem it)
 {
 	l->item = util_grow(l->item, &l->cap, l->count + 1, sizeof *l->item);
 	l->item[l->count++] = it;
-}
-
-static int32_t angle_mod(const CarryWork *k, int32_t a) { return ((a % k->angles) + k->angles) % k->angles; }
-
-/* unwrapped_deg(k, a): degrees of angle index a, for any whole a (a full turn adds 360). */
-static int32_t unwrapped_deg(const CarryWork *k, int32_t a)
-{
-	int32_t turns = a >= 0 ? a / k->angles : -((-a + k->angles - 1) / k->angles);
-	return turns * 360 + k->deg[a - turns * k->angles];
-}
-
-/* replay(k, items, x0, y0): the lattice plan from (x0, y0) at angle 0 is still free
- * and ends in the goal, by the checks of the search, with the simulator's notion
- * of exactness: a turn keeps an exact pose exact only when it is whole quarters. */
-static bool replay(CarryWork *k, const CarryItems *l, int32_t x0, int32_t y0)
-{
-	int32_t x = x0, y = y0, angle = 0, quarter = k->angles / CARRY_QUARTERS;
-	bool exact = k->exact_start;
-	for (int i = 0; i < l->count; i++) {
-		const CarryItem *it = &l->item[i];
-		if (it->turn != 0) {
-			if (!turn_run_free(k, angle, it->turn, x, y))
-				return false;
-			angle = angle_mod(k, angle + it->turn);
-			exact = exact && it->turn % quarter == 0;
-			continue;
-		}
-		if (!body_free(k, exact ? exact_layer(k, angle) : angle, it->x, it->y))
-			return false;
-		x = it->x;
-		y = it->y;
-	}
-	return goal_holds(k, exact ? exact_layer(k, angle) : angle, x, y);
-}
-
-/* merge_turns(k, l, x0, y0): fewer turns (carry.h, THE PLAN): a turn, pushes and a
- * turn become one turn before the pushes or after them, where the plan stays free;
- * repeated until no pair merges. */
-static void merge_turns(CarryWork *k, CarryItems *l, int32_t x0, int32_t y0)
-{
-	CarryItems trial = {0};
-	bool changed = true;
-	while (changed) {
-		changed = false;
-		for (int i = 0; i < l->count && !changed; i++) {
-			if (l->item[i].turn == 0)
-				continue;
-			int j = i + 1;
-			while (j < l->count && l->item[j].turn == 0)
-				j++;
-			if (j == l->count)
-				break;
-			for (int where = 0; where < 2 && !changed; where++) {
-				/* where 0: the sum at i; 1: the sum at j. */
-				trial.count = 0;
-				int32_t sum = l->item[i].turn + l->item[j].turn;
-				for (int m = 0; m < l->count; m++) {
-					if ((m == i && where == 0) || (m == j && where == 1)) {
-						if (sum != 0)
-							items_push(&trial, (CarryItem){.turn = sum});
-					} else if (m != i && m != j) {
-						items_push(&trial, l->item[m]);
-					}
-				}
-				if (replay(k, &trial, x0, y0)) {
-					CarryItems t = *l;
-					*l = trial;
-					trial = t;
-					changed = true;
-				}
-			}
-		}
-	}
-	free(trial.item);
-}
-
-/* A sink for sweep covers that checks each span against the grid. */
-typedef struct CarrySink {
-	const CarryWork *k;
-	bool free;
-} CarrySink;
-
-static void carry_sink_span(void *ctx, int32_t y, int32_t x0, int32_t x1)
-{
-	CarrySink *s = ctx;
-	const CarryWork *k = s->k;
-	if (!s->free)
-		return;
-	if (y < 0 || y >= k->h || x0 < 0 || x1 >= k->w) {
-		s->free = false;
-		return;
-	}
-	const int32_t *row = k->blocked + (size_t)y * (size_t)(k->w + 1);
-	if (row[x1 + 1] != row[x0])
-		s->free = false;
-}
-
-/* leg_free(k, angle, exact, x0, y0, x1, y1): one straight push from lattice cell
- * (x0, y0) to (x1, y1) at angle sweeps only free cells (carry.h, THE PLAN). */
-static bool leg_free(CarryWork *k, int32_t angle, bool exact, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
-{
-	Vec2 a = vec2(x0 + k->frac.x, y0 + k->frac.y), d = vec2(x1 - x0, y1 - y0);
-	Polygon p = sweep_turned(&k->rel, a, k->deg[angle]);
-	bool axis = x0 == x1 || y0 == y1;
-	CarrySink sink = {k, true};
-	k->stats->checked++;
-	sweep_cover_push(&p, d, exact && axis ? 0 : SWEEP_EPS, carry_sink_span, &sink);
-	if (y0 == y1) /* his point stays in one row or column of squares */
-		carry_sink_span(&sink, y0, x0 < x1 ? x0 : x1, x0 < x1 ? x1 : x0);
-	else if (x0 == x1)
-		for (int32_t y = y0 < y1 ? y0 : y1; y <= (y0 < y1 ? y1 : y0); y++)
-			carry_sink_span(&sink, y, x0, x0);
-	else
-		sweep_cover_segment(a, vec2_add(a, d), SWEEP_EPS, carry_sink_span, &sink);
-	return sink.free;
-}
-
-static void plan_push(CarryPlan *plan, CarryPose pose, MotorCommand cmd)
-{
-	int cap = plan->cap;
-	plan->pose = util_grow(plan->pose, &cap, plan->count + 1, sizeof *plan->pose);
-	plan->cmd = util_grow(plan->cmd, &plan->cap, plan->count + 1, sizeof *plan->cmd);
-	if (plan->count > 0)
-		plan->cmd[plan->count - 1] = cmd;
-	plan->pose[plan->count++] = pose;
-}
-
-/* emit(k, l, x0, y0, plan): the commands and poses of the lattice plan, pushes
- * string-pulled. */
-static void emit(CarryWork *k, const CarryItems *l, int32_t x0, int32_t y0, CarryPlan *plan)
-{
-	int32_t x = x0, y = y0, angle = 0, quarter = k->angles / CARRY_QUARTERS;
-	bool exact = k->exact_start;
-	plan->count = 0;
-	plan_push(plan, (CarryPose){vec2(x + k->frac.x, y + k->frac.y), x, y, 0, exact}, (MotorCommand){0});
-	for (int i = 0; i < l->count;) {
-		const CarryItem *it = &l->item[i];
-		if (it->turn != 0) {
-			int32_t deg = unwrapped_deg(k, angle + it->turn) - unwrapped_deg(k, angle);
-			angle = angle_mod(k, angle + it->turn);
-			exact = exact && it->turn % quarter == 0;
-			plan_push(plan, (CarryPose){vec2(x + k->frac.x, y + k->frac.y), x, y, k->deg[angle], exact},
-				  (MotorCommand){.kind = MOTOR_TURN, .deg = deg});
-			plan->turns++;
-			plan->turned += abs(deg);
-			i++;
-			continue;
-		}
-		int j = i;
-		while (j < l->count && l->item[j].turn == 0)
-			j++;
-		/* Cells i .. j - 1 of the run, after (x, y): from each waypoint the farthest
-		 * cell before the first that one leg cannot reach, then on from there. */
-		int at = i - 1; /* i - 1 stands for (x, y) */
-		while (at < j - 1) {
-			int32_t ax = at < i ? x : l->item[at].x, ay = at < i ? y : l->item[at].y;
-			int best = at + 1;
-			for (int m = at + 2; m < j; m++) {
-				if (!leg_free(k, angle, exact, ax, ay, l->item[m].x, l->item[m].y))
-					break;
-				best = m;
-			}
-			int32_t bx = l->item[best].x, by = l->item[best].y;
-			plan_push(plan, (CarryPose){vec2(bx + k->frac.x, by + k->frac.y), bx, by, k->deg[angle], exact},
-				  (MotorCommand){.kind = MOTOR_PUSH, .dx = bx - ax, .dy = by - ay});
-			plan->pushes++;
-			plan->pushed += hypot(bx - ax, by - ay);
-			at = best;
-		}
-		x = l->item[j - 1].x;
-		y = l->item[j - 1].y;
-		i = j;
-	}
 }
 
 /* extract(k, start, goal_id, plan): the lattice path, merged and emitted. */
@@ -978,7 +733,7 @@ static void extract(CarryWork *k, int32_t start, int32_t goal_id, CarryPlan *pla
 	for (int32_t id = goal_id; id != start;) {
 		int32_t turn, cell = (int32_t)((size_t)id % k->cells);
 		int32_t prev = predecessor(k, id, &turn);
-		items_push(&rev, (CarryItem){turn, cell % k->w, cell / k->w});
+		carry_items_push(&rev, (CarryItem){turn, cell % k->w, cell / k->w});
 		id = prev;
 	}
 	for (int i = rev.count - 1; i >= 0; i--) {
@@ -986,17 +741,13 @@ static void extract(CarryWork *k, int32_t start, int32_t goal_id, CarryPlan *pla
 		if (it.turn != 0 && l.count > 0 && l.item[l.count - 1].turn != 0)
 			l.item[l.count - 1].turn += it.turn;
 		else
-			items_push(&l, it);
+			carry_items_push(&l, it);
 		if (l.item[l.count - 1].turn == 0 && it.turn != 0)
 			l.count--; /* a turn and its undoing */
 	}
 	int32_t sx = (int32_t)((size_t)start % k->cells) % k->w, sy = (int32_t)((size_t)start % k->cells) / k->w;
 	plan->cost = (int64_t)k->g[goal_id] - 1;
-	bool still = replay(k, &l, sx, sy);
-	assert(still);
-	(void)still;
-	merge_turns(k, &l, sx, sy);
-	emit(k, &l, sx, sy, plan);
+	carry_path_commands(k, &l, sx, sy, plan);
 	free(rev.item);
 	free(l.item);
 }
@@ -1086,8 +837,8 @@ static void explain(CarryWork *k, int32_t start_layer, int32_t sx, int32_t sy, c
 		if (k->steps[c] != 0)
 			continue;
 		for (int32_t l = 0; l < k->layers && !room; l++)
-			room = body_free(k, l, (int32_t)(c % (size_t)k->w), (int32_t)(c / (size_t)k->w)) &&
-			       goal_holds(k, l, (int32_t)(c % (size_t)k->w), (int32_t)(c / (size_t)k->w));
+			room = carry_body_free(k, l, (int32_t)(c % (size_t)k->w), (int32_t)(c / (size_t)k->w)) &&
+			       carry_goal_holds(k, l, (int32_t)(c % (size_t)k->w), (int32_t)(c / (size_t)k->w));
 	}
 	if (!room) {
 		snprintf(out->why, sizeof out->why, "the goal region has no room for %s at any of %d angles", name,
@@ -1192,11 +943,11 @@ CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal
 	const char *name = obj->name ? obj->name : "the object";
 	prepare(k, cp, obj, goal, out);
 	int32_t sx = (int32_t)floor(obj->at.x), sy = (int32_t)floor(obj->at.y);
-	int32_t start_layer = k->exact_start ? exact_layer(k, 0) : 0;
+	int32_t start_layer = k->exact_start ? carry_exact_layer(k, 0) : 0;
 	int32_t start = (int32_t)((size_t)start_layer * k->cells + (size_t)sy * k->w + sx);
 	int32_t found = -1;
 	out->status = CARRY_NO_PATH;
-	if (!body_free(k, start_layer, sx, sy)) {
+	if (!carry_body_free(k, start_layer, sx, sy)) {
 		snprintf(out->why, sizeof out->why, "%s does not fit where it stands: a square it or Utak covers is not free",
 			 name);
 		goto done;
@@ -1273,29 +1024,4 @@ int carry_grasp(CarryPlanner *cp, const Polygon *shape, const Vec2 *at, int n, c
 		carry_result_free(&keep);
 	}
 	return chosen;
-}
-
-bool carry_pose_free(const CarryPlanner *cp, const CarryObject *obj, Vec2 at, double deg)
-{
-	const CarryWork *k = cp->work;
-	Polygon rel = obj->shape;
-	for (int32_t i = 0; i < rel.count; i++)
-		rel.v[i] = vec2_sub(obj->shape.v[i], obj->at);
-	Polygon p = sweep_turned(&rel, at, deg);
-	CarrySink sink = {k, true};
-	sweep_cover_polygon(&p, 0, carry_sink_span, &sink);
-	return sink.free && grid_free_at(cp->grid, (int32_t)floor(at.x), (int32_t)floor(at.y));
-}
-
-void carry_plan_print(const CarryPlan *plan, FILE *f)
-{
-	for (int i = 0; i + 1 < plan->count; i++) {
-		const MotorCommand *c = &plan->cmd[i];
-		if (c->kind == MOTOR_TURN)
-			fprintf(f, "turn %d\n", (int)c->deg);
-		else
-			fprintf(f, "push %d %d\n", (int)c->dx, (int)c->dy);
-	}
-	fprintf(f, "carry: %d pushes (%.2f squares), %d turns (%d degrees)\n", plan->pushes, plan->pushed,
-		plan->turns, plan->turned);
 }

@@ -908,6 +908,81 @@ TEST_CASE(random_door_worlds_carried_out_in_tabletop)
 	TEST_CHECK(planned >= 16);
 }
 
+/* ---- poses off the lattice ----------------------------------------------------------- */
+
+TEST_CASE(poses_off_the_lattice_against_the_projection_oracle)
+{
+	/* carry_pose_free and carry_pose_inside at random poses (any point, any
+	 * angle), square by square against projection_oracle.h. */
+	oracle_seed = 99;
+	Grid grid, goal;
+	door_grid(&grid, &goal, 30, 20, 15, 8, 4);
+	CarryPlanner cp;
+	carry_init(&cp, &grid, NULL);
+	int free_count = 0, inside_count = 0;
+	for (int t = 0; t < 400; t++) {
+		CarryObject obj = {.at = vec2(4.5, 9.5)};
+		door_shape(t % 4, 5, 9.5, &obj.shape);
+		Vec2 at = vec2(1 + oracle_rand_below(2800) / 100.0, 1 + oracle_rand_below(1800) / 100.0);
+		double deg = t % 3 == 0 ? 90 * oracle_rand_below(4) : oracle_rand_below(36000) / 100.0;
+		Polygon rel = obj.shape;
+		for (int i = 0; i < rel.count; i++)
+			rel.v[i] = vec2_sub(obj.shape.v[i], obj.at);
+		Polygon p = sweep_turned(&rel, at, deg);
+		bool want_free = grid_free_at(&grid, (int)floor(at.x), (int)floor(at.y)), want_inside = true;
+		for (int y = -2; y < grid.h + 2; y++)
+			for (int x = -2; x < grid.w + 2; x++)
+				if (oracle(&p, x, y)) {
+					want_free &= grid_free_at(&grid, x, y);
+					want_inside &= grid_free_at(&goal, x, y);
+				}
+		TEST_CHECK(carry_pose_free(&cp, &obj, at, deg) == want_free);
+		TEST_CHECK(carry_pose_inside(&obj, &goal, at, deg) == want_inside);
+		free_count += want_free;
+		inside_count += want_inside;
+	}
+	TEST_CHECK(free_count > 50 && inside_count > 50);
+	carry_free(&cp);
+	grid_free(&grid);
+	grid_free(&goal);
+}
+
+TEST_CASE(same_problem_same_plan)
+{
+	/* A planner reused after other problems gives the plan a fresh one gives,
+	 * command for command: nothing of one plan leaks into the next, and ties
+	 * are broken the same way every time. */
+	Grid grid, goal;
+	door_grid(&grid, &goal, 30, 20, 15, 8, 3);
+	CarryObject a = {.shape = {4, {{5, 7}, {6, 7}, {6, 12}, {5, 12}}}, .at = vec2(4.5, 9.5)};
+	CarryObject b = {.shape = {3, {{5, 3}, {9, 3}, {5, 6}}}, .at = vec2(4.5, 3.5)};
+	CarryGoal g = {.inside = &goal};
+	CarryPlanner fresh, reused;
+	carry_init(&fresh, &grid, NULL);
+	carry_init(&reused, &grid, NULL);
+	CarryResult r1, r2, other;
+	carry_result_init(&r1);
+	carry_result_init(&r2);
+	carry_result_init(&other);
+	TEST_CHECK(carry_plan(&fresh, &a, &g, &r1) == CARRY_FOUND);
+	carry_plan(&reused, &b, &g, &other);
+	carry_plan(&reused, &a, &g, &other);
+	carry_plan(&reused, &b, &g, &other);
+	TEST_CHECK(carry_plan(&reused, &a, &g, &r2) == CARRY_FOUND);
+	TEST_CHECK(r1.plan.count == r2.plan.count && r1.plan.cost == r2.plan.cost);
+	for (int i = 0; i + 1 < r1.plan.count; i++)
+		TEST_CHECK(r1.plan.cmd[i].kind == r2.plan.cmd[i].kind && r1.plan.cmd[i].dx == r2.plan.cmd[i].dx &&
+			   r1.plan.cmd[i].dy == r2.plan.cmd[i].dy && r1.plan.cmd[i].deg == r2.plan.cmd[i].deg);
+	TEST_CHECK(r1.stats.expanded == r2.stats.expanded && r1.stats.checked == r2.stats.checked);
+	carry_result_free(&r1);
+	carry_result_free(&r2);
+	carry_result_free(&other);
+	carry_free(&fresh);
+	carry_free(&reused);
+	grid_free(&grid);
+	grid_free(&goal);
+}
+
 int main(void)
 {
 	TEST_RUN(square_into_the_next_room_every_heading);
@@ -918,5 +993,7 @@ int main(void)
 	TEST_RUN(impossible_carry_says_why);
 	TEST_RUN(grasp_choice_agrees_with_brute_force);
 	TEST_RUN(random_door_worlds_carried_out_in_tabletop);
+	TEST_RUN(poses_off_the_lattice_against_the_projection_oracle);
+	TEST_RUN(same_problem_same_plan);
 	return TEST_EXIT();
 }
