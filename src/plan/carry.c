@@ -441,11 +441,14 @@ static void estimate(CarryWork *k)
 
 /* ---- the route ---------------------------------------------------------------------- */
 
-/* corridor(k, grid, at, radius, reach): k->allowed := the Utak cells within reach +
- * CARRY_CORRIDOR_MARGIN of the skeleton route from at to the deepest cell of the
- * goal region (see ALGORITHM), a route on skeleton edges wide enough for the disc of
- * that radius inside the object. False, with allowed untouched, when there is none. */
-static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double radius, double reach)
+/* corridor(k, grid, at, radius, reach, &narrowest): k->allowed := the Utak cells
+ * within reach + CARRY_CORRIDOR_MARGIN of the skeleton route from at to the deepest
+ * cell of the goal region (see ALGORITHM), a route on skeleton edges wide enough for
+ * the disc of that radius inside the object; narrowest := the least clearance (cell
+ * centre to blocked centre) of the cells it crosses on the skeleton (not on its way
+ * from Utak to the skeleton and from it to the goal), if less. False, with allowed
+ * untouched, when there is none. */
+static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double radius, double reach, double *narrowest)
 {
 	if (!k->have_graph) {
 		skeleton_compute(&k->skeleton, grid);
@@ -487,8 +490,11 @@ static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double radius, dou
 			for (int32_t j = 0; j <= n; j++) {
 				Vec2 p = vec2_add(a, vec2_scale(vec2_sub(b, a), (double)j / n));
 				int32_t x = (int32_t)floor(p.x), y = (int32_t)floor(p.y);
-				if (x >= 0 && y >= 0 && x < k->w && y < k->h)
+				if (x >= 0 && y >= 0 && x < k->w && y < k->h) {
 					scratch.cells[(size_t)y * w + x] = GRID_BLOCKED;
+					if (i >= 1 && i + 2 < route.count) /* on the skeleton */
+						*narrowest = fmin(*narrowest, sqrt((double)k->dist2[(size_t)y * w + x]));
+				}
 			}
 		}
 		skeleton_edt(&scratch, d2);
@@ -510,6 +516,9 @@ static bool corridor(CarryWork *k, const Grid *grid, Vec2 at, double radius, dou
 /* CARRY_DISC_REFINE: the disc's proof works on cells this many times finer than the
  * grid's, so that its bound (below) is loose by at most 0.21 / CARRY_DISC_REFINE. */
 #define CARRY_DISC_REFINE 2
+/* A route whose narrowest place is less than this many squares wider (in clearance)
+ * than the disc's radius is tight: the proof is tried before the corridor search. */
+#define CARRY_DISC_TIGHT 1.0
 
 /* refined_edt(k, in_goal, d2): the distance transform of the grid refined by
  * CARRY_DISC_REFINE (a fine cell blocked when its grid cell is blocked, or with
@@ -954,7 +963,15 @@ CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal
 	}
 	Vec2 centre;
 	out->disc = carry_inscribed(&obj->shape, &centre);
-	if (cp->params.use_route && corridor(k, cp->grid, obj->at, out->disc, out->reach)) {
+	/* Where the route squeezes past a place hardly wider than the disc inside the
+	 * object, the disc's proof comes first: it is cheaper than a corridor search
+	 * that may find nothing. */
+	double narrowest = INFINITY;
+	bool routed = cp->params.use_route && corridor(k, cp->grid, obj->at, out->disc, out->reach, &narrowest);
+	bool tight = narrowest < out->disc + CARRY_DISC_TIGHT;
+	if (routed && tight && cp->params.use_disc && disc_cannot_pass(k, centre, out->disc))
+		goto disc_proof;
+	if (routed) {
 		out->stats.routed = true;
 		estimate(k);
 		if (k->steps[(size_t)sy * k->w + sx] >= 0)
@@ -964,7 +981,8 @@ CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal
 			reset_search(k);
 	}
 	/* Before the whole grid is searched, the disc may prove it in vain. */
-	if (found < 0 && cp->params.use_disc && disc_cannot_pass(k, centre, out->disc)) {
+	if (found < 0 && cp->params.use_disc && !(routed && tight) && disc_cannot_pass(k, centre, out->disc)) {
+	disc_proof:
 		out->stats.disc_proof = true;
 		memset(k->allowed, 1, k->cells);
 		estimate(k);
