@@ -140,9 +140,9 @@
  * in O(R) for a footprint of R row runs; O(N (S n + A)) to build the footprints of
  * an object of n vertices, perimeter S and area A squares, with S samples per turn
  * step; the route and the disc O(w h).
- * MEASURED (make bench-carry, README.md): at 64 angles, 1.5 to 8 ms for a carry on
- * a 128 x 128 screen, 19 to 65 ms on 512 x 512; impossible ones 3 to 61 ms with the
- * disc's proof, up to 2.5 s without it. */
+ * MEASURED (make bench-carry, README.md): at 64 angles, 1.5 to 7.5 ms for a carry on
+ * a 128 x 128 screen, 19 to 65 ms on 512 x 512; impossible ones 1.6 to 59 ms with
+ * the disc's proof, 2.2 s at 512 x 512 without it (an exhaustive search). */
 #ifndef UTAK_CARRY_H
 #define UTAK_CARRY_H
 
@@ -265,7 +265,9 @@ void carry_result_init(CarryResult *r);
 void carry_result_free(CarryResult *r);
 
 /* carry_plan(cp, obj, goal, out): the plan that carries obj into goal, as above.
- * Returns out->status. */
+ * out must have been carry_result_init'ed (its arrays are reused, and freed by
+ * carry_result_free). goal->accept is called lazily, at most once per free
+ * configuration wholly in the region. Returns out->status. */
 CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal *goal,
 		       CarryResult *out);
 
