@@ -81,7 +81,6 @@ CarryParams carry_params_default(void)
 			     .use_route = true, .use_clearance = true, .use_disc = true};
 }
 
-
 /* ---- the shape ------------------------------------------------------------------- */
 
 /* carry_narrowest(p): the least width of p's convex hull over all directions: for
@@ -156,16 +155,16 @@ static double carry_inscribed(const Polygon *p, Vec2 *centre)
 
 /* ---- the grid's caches ------------------------------------------------------------ */
 
-/* row_prefix(g, out, count_free): per row, how many cells before column x are
- * blocked (count_free false) or free (true). */
-static void row_prefix(const Grid *g, int32_t *out, bool count_free)
+/* row_prefix(g, out): per row, how many cells before column x are not free:
+ * out[y (w + 1) + x], for x = 0 .. w. */
+static void row_prefix(const Grid *g, int32_t *out)
 {
 	for (int32_t y = 0; y < g->h; y++) {
 		int32_t *row = out + (size_t)y * (size_t)(g->w + 1);
 		const uint8_t *c = g->cells + (size_t)y * (size_t)g->w;
 		row[0] = 0;
 		for (int32_t x = 0; x < g->w; x++)
-			row[x + 1] = row[x] + ((c[x] == GRID_FREE) == count_free);
+			row[x + 1] = row[x] + (c[x] != GRID_FREE);
 	}
 }
 
@@ -197,7 +196,7 @@ void carry_init(CarryPlanner *cp, const Grid *grid, const CarryParams *params)
 	k->cells = (size_t)grid->w * (size_t)grid->h;
 	k->grid_cells = grid->cells;
 	k->blocked = util_alloc((size_t)(grid->w + 1) * (size_t)grid->h, sizeof *k->blocked);
-	row_prefix(grid, k->blocked, false);
+	row_prefix(grid, k->blocked);
 	k->dist2 = util_alloc(k->cells, sizeof *k->dist2);
 	skeleton_edt(grid, k->dist2);
 	skeleton_init(&k->skeleton);
@@ -938,7 +937,7 @@ static void prepare(CarryWork *k, const CarryPlanner *cp, const CarryObject *obj
 		   sqrt(2.0) / 2;
 	k->settle_dist2 = r * r < INT32_MAX ? (int32_t)floor(r * r) : INT32_MAX;
 	footprints(k);
-	row_prefix(goal->inside, k->outside, false);
+	row_prefix(goal->inside, k->outside);
 }
 
 CarryStatus carry_plan(CarryPlanner *cp, const CarryObject *obj, const CarryGoal *goal, CarryResult *out)
