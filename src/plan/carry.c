@@ -907,7 +907,16 @@ static void prepare(CarryWork *k, const CarryPlanner *cp, const CarryObject *obj
 	k->goal = goal;
 	k->exact_start = pr->exact_start;
 	int32_t n = pr->angles;
+	if (k->g && k->allocated_angles != n) {
+		/* cp->params.angles changed since the last plan: arrays of a new size. */
+		free(k->g);
+		free(k->from);
+		free(k->known);
+		free(k->turned);
+		k->g = NULL;
+	}
 	if (!k->g) {
+		k->allocated_angles = n;
 		size_t configs = (size_t)(n + CARRY_QUARTERS) * k->cells;
 		k->g = util_alloc(configs, sizeof *k->g);
 		k->from = util_alloc(configs, 1);

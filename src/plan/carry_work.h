@@ -58,7 +58,9 @@ typedef struct CarryWork {
 	int32_t *outside;		/* (w + 1) h: per row, cells not in the goal before x */
 	int32_t *steps;			/* w h: the estimate's steps, -1 unreachable */
 	uint8_t *allowed;		/* w h: Utak cells the search may use */
-	/* Per configuration. */
+	/* Per configuration, for allocated_angles + 4 layers (allocated at the first
+	 * plan, zeroed, and kept clean between plans by the touched lists). */
+	int32_t allocated_angles;
 	uint32_t *g;
 	uint8_t *from;
 	uint8_t *known;
