@@ -1,19 +1,29 @@
 # Makefile - builds utak, its tests and its benchmarks (GNU make).
 #
-#   make            ./utak, optimised, with the warning list below and no warnings
+#   make            ./utak, optimised, with the warning list below and no warnings,
+#                   and build/rel/libutak-plan.a, the planner library (src/base and
+#                   src/plan alone: man/utak-plan.3)
 #   make check      everything again with AddressSanitizer + UBSan, then every test
 #   make bench      the path-finding benchmark on ../shared/data/movingai
 #   make bench-compare  the distance transform and skeleton against OpenCV and
 #                   scikit-image, in one run (the block at the end)
 #   make golden     regenerate golden files (a deliberate act: read the diff)
+#   make install    utak, its man pages, the planner library, its headers and
+#                   utak-plan.pc under DESTDIR PREFIX; make uninstall removes them
 #
 # Sources are found by wildcard: a new module is a new src/LAYER/NAME.c and
 # include/utak/LAYER/NAME.h (LAYER one of base, plan, body, mind: README.md,
 # "Architecture"), and a new unit test is a new tests/unit/test_NAME.c.
 
 CC      ?= cc
+VERSION := $(shell sed -n 's/^\#define UTAK_VERSION "\(.*\)"/\1/p' src/main.c)
 PREFIX  ?= /usr/local
 DESTDIR ?=
+BINDIR  ?= $(PREFIX)/bin
+LIBDIR  ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+MANDIR  ?= $(PREFIX)/share/man
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
 
 # -ffp-contract=off: no fused multiply-add, so printed numbers do not depend on
 # the compiler's choice of instructions (Box2D does the same).
@@ -21,27 +31,42 @@ WARN    = -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-prototy
           -Wpointer-arith -Wcast-qual -Wvla
 CSTD    = -std=c11 -D_POSIX_C_SOURCE=200809L -ffp-contract=off
 CFLAGS  ?= -O2 -g
-ALLCFLAGS = $(CSTD) $(WARN) -Iinclude $(CFLAGS)
+ALLCFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc $(CPPFLAGS) $(CFLAGS)
 LDLIBS  = -lm
 
 SAN     = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
-CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -O1 -g $(SAN)
+CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc -O1 -g $(SAN)
 
-LIBSRC  = $(wildcard src/*/*.c) src/svg.c
+LIBSRC  = $(wildcard src/*/*.c) src/svg.c src/replay.c
 HDR     = $(wildcard include/utak/*.h include/utak/*/*.h src/*/*.h)
 UNITSRC = $(wildcard tests/unit/test_*.c)
+# The planner library: the layers base and plan, which use nothing else (wall.test.sh).
+PLANSRC = $(wildcard src/base/*.c src/plan/*.c)
+PLANOBJ = $(PLANSRC:src/%.c=build/rel/%.o)
 
 OBJ      = $(LIBSRC:src/%.c=build/rel/%.o)
 CHECKOBJ = $(LIBSRC:src/%.c=build/chk/%.o)
 UNITBIN  = $(UNITSRC:tests/unit/%.c=build/chk/unit/%)
 
-all: utak
+all: utak build/rel/libutak-plan.a
 
 utak: build/rel/main.o build/rel/libutak.a
-	$(CC) $(ALLCFLAGS) -o $@ build/rel/main.o build/rel/libutak.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(LDFLAGS) -o $@ build/rel/main.o build/rel/libutak.a $(LDLIBS)
 
 build/rel/libutak.a: $(OBJ)
 	rm -f $@; ar rcs $@ $(OBJ)
+
+build/rel/libutak-plan.a: $(PLANOBJ)
+	rm -f $@; ar rcs $@ $(PLANOBJ)
+
+# The pkg-config file names the directories the library is installed in, so it is
+# made afresh by every install (FORCE): PREFIX and LIBDIR may differ each time.
+build/rel/utak-plan.pc: utak-plan.pc.in FORCE
+	@mkdir -p $(@D)
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
+	    -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' utak-plan.pc.in >$@
+
+FORCE:
 
 build/rel/%.o: src/%.c $(HDR)
 	@mkdir -p $(@D)
@@ -50,6 +75,15 @@ build/rel/%.o: src/%.c $(HDR)
 build/chk/%.o: src/%.c $(HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CHECKFLAGS) -c -o $@ $<
+
+# The replay's viewer (src/replay.html) is compiled into utak as C strings, one a
+# line (replay.c includes them): backslashes, double quotes and '?' are escaped, the
+# last so that no "??" followed by another character reads as a trigraph (-std=c11).
+build/inc/replay_viewer.inc: src/replay.html
+	@mkdir -p $(@D)
+	sed -e 's/[\\"?]/\\&/g' -e 's/^/"/' -e 's/$$/",/' src/replay.html >$@
+
+build/rel/replay.o build/chk/replay.o build/fuzz/lib/replay.o: build/inc/replay_viewer.inc
 
 build/chk/libutak.a: $(CHECKOBJ)
 	rm -f $@; ar rcs $@ $(CHECKOBJ)
@@ -63,8 +97,32 @@ build/chk/unit/%: tests/unit/%.c $(wildcard tests/unit/*.h) build/chk/libutak.a 
 build/chk/unit:
 	mkdir -p $@
 
-check: build/chk/utak $(UNITBIN)
+check: build/chk/utak $(UNITBIN) build/chk/examples/plan | check-deps
 	sh tests/run.sh build/chk/utak $(UNITBIN)
+
+# tests/install.test.sh builds the example with pkg-config (Debian's pkgconf),
+# installed here only when missing.
+check-deps:
+	@command -v pkg-config >/dev/null || sh tests/fuzz/need.sh pkgconf
+
+# examples/plan.c, built against the in-tree library (tests/example.test.sh runs it;
+# tests/install.test.sh builds it again against an installed copy).
+build/chk/libutak-plan.a: $(PLANSRC:src/%.c=build/chk/%.o)
+	rm -f $@; ar rcs $@ $^
+
+build/chk/examples/plan: examples/plan.c build/chk/libutak-plan.a
+	@mkdir -p $(@D)
+	$(CC) $(CHECKFLAGS) -o $@ examples/plan.c build/chk/libutak-plan.a $(LDLIBS)
+
+# The replay's browser test (tests/replay.test.sh) needs Debian's chromium and
+# playwright-core from npm (tests/browser/package-lock.json); this installs them
+# only when missing. Without them make check skips that test and says so; CI
+# (.ci/run) installs them first.
+browser-deps:
+	@sh tests/fuzz/need.sh chromium
+	@command -v npm >/dev/null || sh tests/fuzz/need.sh nodejs npm
+	@[ -d tests/browser/node_modules/playwright-core ] || \
+	    (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
 
 golden: utak
 	sh tests/regen.sh ./utak
@@ -85,11 +143,33 @@ build/rel/bench:
 bench: $(BENCHBIN)
 	sh bench/run.sh
 
-install: utak
-	mkdir -p $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 $(DESTDIR)$(PREFIX)/share/man/man5
-	cp utak $(DESTDIR)$(PREFIX)/bin/
-	cp man/utak.1 $(DESTDIR)$(PREFIX)/share/man/man1/
-	cp man/utak.5 $(DESTDIR)$(PREFIX)/share/man/man5/
+# The library's public headers: the layers it is built from, and the wall that
+# eye.h names.
+PLANHDR = include/utak/impression.h $(wildcard include/utak/base/*.h include/utak/plan/*.h)
+
+install: utak build/rel/libutak-plan.a build/rel/utak-plan.pc
+	install -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
+	    $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(MANDIR)/man3 $(DESTDIR)$(MANDIR)/man5 \
+	    $(DESTDIR)$(INCLUDEDIR)/utak/base $(DESTDIR)$(INCLUDEDIR)/utak/plan
+	install -m 755 utak $(DESTDIR)$(BINDIR)/utak
+	install -m 644 build/rel/libutak-plan.a $(DESTDIR)$(LIBDIR)/libutak-plan.a
+	install -m 644 build/rel/utak-plan.pc $(DESTDIR)$(PKGCONFIGDIR)/utak-plan.pc
+	install -m 644 man/utak.1 $(DESTDIR)$(MANDIR)/man1/utak.1
+	install -m 644 man/utak-plan.3 $(DESTDIR)$(MANDIR)/man3/utak-plan.3
+	install -m 644 man/utak.5 $(DESTDIR)$(MANDIR)/man5/utak.5
+	install -m 644 include/utak/impression.h $(DESTDIR)$(INCLUDEDIR)/utak/impression.h
+	install -m 644 $(wildcard include/utak/base/*.h) $(DESTDIR)$(INCLUDEDIR)/utak/base
+	install -m 644 $(wildcard include/utak/plan/*.h) $(DESTDIR)$(INCLUDEDIR)/utak/plan
+
+# Removes exactly what install put there, and the include/utak folders it made;
+# the standard folders (bin, lib, share/man/...) stay.
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/utak $(DESTDIR)$(LIBDIR)/libutak-plan.a \
+	    $(DESTDIR)$(PKGCONFIGDIR)/utak-plan.pc $(DESTDIR)$(MANDIR)/man1/utak.1 \
+	    $(DESTDIR)$(MANDIR)/man3/utak-plan.3 $(DESTDIR)$(MANDIR)/man5/utak.5 \
+	    $(PLANHDR:include/%=$(DESTDIR)$(INCLUDEDIR)/%)
+	-rmdir $(DESTDIR)$(INCLUDEDIR)/utak/base $(DESTDIR)$(INCLUDEDIR)/utak/plan \
+	    $(DESTDIR)$(INCLUDEDIR)/utak 2>/dev/null
 
 format:
 	clang-format -i src/*.c src/*/*.c include/utak/*.h include/utak/*/*.h tests/unit/*.c tests/unit/*.h
@@ -97,7 +177,7 @@ format:
 clean:
 	rm -rf build utak
 
-.PHONY: all check golden readme bench install format clean
+.PHONY: FORCE all check check-deps browser-deps golden readme bench install uninstall format clean
 .SUFFIXES:
 
 # ---- reliability (issue 6): fuzzing and the Box2D cross-check ------------------
@@ -116,7 +196,7 @@ FUZZCC  ?= clang
 FUZZSAN  = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 # The library gets coverage instrumentation only (fuzzer-no-link); the harness
 # links libFuzzer's main.
-FUZZFLAGS = $(CSTD) $(WARN) -Iinclude -O1 -g $(FUZZSAN)
+FUZZFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc -O1 -g $(FUZZSAN)
 FUZZSRC  = $(wildcard tests/fuzz/fuzz_*.c)
 FUZZBIN  = $(FUZZSRC:tests/fuzz/%.c=build/fuzz/%)
 FUZZOBJ  = $(LIBSRC:src/%.c=build/fuzz/lib/%.o)

@@ -6,10 +6,27 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void util_out_of_memory(size_t n, size_t size)
+static void util_default_out_of_memory(size_t n, size_t size, void *context)
 {
+	(void)context;
 	fprintf(stderr, "utak: out of memory (%zu x %zu bytes)\n", n, size);
 	exit(3);
+}
+
+static UtilOutOfMemory *util_handler = util_default_out_of_memory;
+static void *util_context;
+
+void util_set_out_of_memory(UtilOutOfMemory *handler, void *context)
+{
+	util_handler = handler ? handler : util_default_out_of_memory;
+	util_context = context;
+}
+
+static void util_out_of_memory(size_t n, size_t size)
+{
+	util_handler(n, size, util_context);
+	/* A handler that returns leaves its caller with no memory to go on with. */
+	abort();
 }
 
 void *util_alloc(size_t n, size_t size)

@@ -159,7 +159,38 @@ static void motion_run(Motion *m, int64_t steps, MotorOutcome *out)
 	out->done = out->asked * f;
 }
 
-static void motion_translate(World *w, Table *t, const MotorCommand *cmd, MotorOutcome *out)
+/* ---- noise (motion.h, "NOISY MOTION") ---------------------------------------------- */
+
+void motion_noise_init(MotionNoise *n, double sigma, uint64_t seed)
+{
+	n->sigma = sigma;
+	n->state = seed;
+}
+
+/* splitmix64(state): the next 64 random bits (Steele, Lea and Flood 2014). */
+static uint64_t splitmix64(uint64_t *state)
+{
+	uint64_t z = (*state += 0x9E3779B97F4A7C15u);
+	z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+	z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+	return z ^ (z >> 31);
+}
+
+double motion_noise_gaussian(MotionNoise *n)
+{
+	/* Box-Muller with u1 in (0, 1]: 53 random bits, never 0, so the log is finite.
+	 * One of the pair is used: the other would need state between calls. */
+	double u1 = ((double)(splitmix64(&n->state) >> 11) + 1.0) / 9007199254740992.0;
+	double u2 = (double)(splitmix64(&n->state) >> 11) / 9007199254740992.0;
+	return sqrt(-2.0 * log(u1)) * cos(2.0 * 3.14159265358979323846 * u2);
+}
+
+static bool motion_noisy(const MotionNoise *n) { return n && n->sigma > 0; }
+
+/* ---- the commands ------------------------------------------------------------------- */
+
+static void motion_translate(World *w, Table *t, const MotorCommand *cmd, MotionNoise *noise,
+			     MotorOutcome *out)
 {
 	Vec2 own = vec2(cmd->dx, cmd->dy);
 	double len = hypot(own.x, own.y);
@@ -177,12 +208,20 @@ static void motion_translate(World *w, Table *t, const MotorCommand *cmd, MotorO
 	}
 	Motion m = {.w = w, .t = t, .kind = cmd->kind, .utak0 = w->utak,
 		    .delta = world_own_to_table(w->heading, own)};
+	if (motion_noisy(noise) && len > 0) {
+		double ex = motion_noise_gaussian(noise), ey = motion_noise_gaussian(noise);
+		m.delta = vec2_add(m.delta, vec2_scale(vec2(ex, ey), noise->sigma * len));
+		len = hypot(m.delta.x, m.delta.y);
+	}
 	if (w->held >= 0)
 		m.shape0 = w->objects[w->held].shape;
+	double asked = out->asked;
+	out->asked = len;
 	motion_run(&m, (int64_t)fmax(1, ceil(len / MOTION_STEP)), out);
+	out->asked = asked;
 }
 
-static void motion_turn(World *w, Table *t, const MotorCommand *cmd, MotorOutcome *out)
+static void motion_turn_exact(World *w, Table *t, const MotorCommand *cmd, MotorOutcome *out)
 {
 	out->asked = cmd->deg;
 	if (w->held < 0) {
@@ -220,6 +259,16 @@ static void motion_turn(World *w, Table *t, const MotorCommand *cmd, MotorOutcom
 	out->done += skipped;
 }
 
+static void motion_turn(World *w, Table *t, const MotorCommand *cmd, MotionNoise *noise,
+			MotorOutcome *out)
+{
+	MotorCommand noisy = *cmd;
+	if (motion_noisy(noise) && w->held >= 0)
+		noisy.deg += motion_noise_gaussian(noise) * noise->sigma * fabs(cmd->deg);
+	motion_turn_exact(w, t, &noisy, out);
+	out->asked = cmd->deg;
+}
+
 static void motion_grasp(World *w, const Table *t, MotorOutcome *out)
 {
 	if (w->held >= 0) {
@@ -248,14 +297,20 @@ static void motion_grasp(World *w, const Table *t, MotorOutcome *out)
 
 void motion_execute(World *w, Table *t, const MotorCommand *cmd, MotorOutcome *out)
 {
+	motion_execute_noisy(w, t, cmd, NULL, out);
+}
+
+void motion_execute_noisy(World *w, Table *t, const MotorCommand *cmd, MotionNoise *noise,
+			  MotorOutcome *out)
+{
 	memset(out, 0, sizeof *out);
 	switch (cmd->kind) {
 	case MOTOR_MOVE:
 	case MOTOR_PUSH:
-		motion_translate(w, t, cmd, out);
+		motion_translate(w, t, cmd, noise, out);
 		break;
 	case MOTOR_TURN:
-		motion_turn(w, t, cmd, out);
+		motion_turn(w, t, cmd, noise, out);
 		break;
 	case MOTOR_GRASP:
 		motion_grasp(w, t, out);
