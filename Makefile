@@ -37,8 +37,10 @@ LDLIBS  = -lm
 SAN     = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc -O1 -g $(SAN)
 
-LIBSRC  = $(wildcard src/*/*.c) src/svg.c src/replay.c
-HDR     = $(wildcard include/utak/*.h include/utak/*/*.h)
+# Every module but main.c, which owns the process: src/*.c are the modules that own
+# both sides (the picture, the replay), src/*/*.c the layers.
+LIBSRC  = $(filter-out src/main.c,$(wildcard src/*.c src/*/*.c))
+HDR     = $(wildcard include/utak/*.h include/utak/*/*.h src/*/*.h)
 UNITSRC = $(wildcard tests/unit/test_*.c)
 # The planner library: the layers base and plan, which use nothing else (wall.test.sh).
 PLANSRC = $(wildcard src/base/*.c src/plan/*.c)
@@ -300,3 +302,34 @@ bench-compare: build/rel/bench/skelbench | bench-compare-deps
 	    build/compare $(MOVINGAI)/maps/cities/Boston_0_1024.map
 
 .PHONY: bench-compare bench-compare-deps
+
+# ---- carrying in (x, y, theta) (issue 12): make bench-carry -------------------------
+#
+#   make bench-carry   bench/carrybench.c on screens of 64 to 512 squares at 64
+#                      angles (the issue's targets: 50 ms at 128, 1 s at 512), with
+#                      each pruning turned off in turn; then the 128 and 512 problems
+#                      again beside OMPL's RRTConnect and RRT* (bench/carryompl.cpp,
+#                      C++ against Debian's libompl-dev, installed when missing, like
+#                      the Box2D cross-check): success within 1 s and 10 s, time and
+#                      path length as ratios measured in the same run. About three
+#                      minutes, most of it RRT* using its 10 s on each problem.
+#
+# Debian's ompl.pc names a C++ standard and a link directory that does not exist, so
+# the flags are spelled out here.
+OMPLFLAGS = -I/usr/include/ompl-1.5 -I/usr/include/eigen3
+CARRY_ANGLES ?= 64
+
+build/carry/carryompl: bench/carryompl.cpp build/rel/libutak.a $(HDR) | bench-carry-deps build/carry
+	$(CXX) $(XCHECKFLAGS) $(OMPLFLAGS) -o $@ bench/carryompl.cpp build/rel/libutak.a -lompl -lm
+
+build/carry:
+	mkdir -p $@
+
+bench-carry-deps:
+	@sh tests/fuzz/need.sh g++ libompl-dev
+
+bench-carry: build/rel/bench/carrybench build/carry/carryompl
+	build/rel/bench/carrybench --angles $(CARRY_ANGLES) --write build/carry
+	build/carry/carryompl build/carry/*-128.carry build/carry/*-512.carry
+
+.PHONY: bench-carry bench-carry-deps
