@@ -339,6 +339,11 @@ static int check_options(const Options *o)
 	const char *file = script_file(o);
 	if (file && strcmp(file, "-") == 0 && strcmp(o->world_path, "-") == 0)
 		return usage_error("%s", "standard input can be WORLD or the --act script, not both");
+	/* --step waits for Enter on standard input: a world or script read from it
+	 * would leave it at its end, and each Enter would be taken from the file. */
+	bool from_stdin = strcmp(o->world_path, "-") == 0 || (file && strcmp(file, "-") == 0);
+	if (o->step && !o->quiet && from_stdin)
+		return usage_error("%s", "--step waits on standard input, so WORLD or the script cannot be '-'");
 	for (int i = 0; i < OUT_COUNT; i++)
 		if (o->out_path[i] && !o->out_path[i][0])
 			return usage_error("%s: the file name is empty", output_option[i]);
