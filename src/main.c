@@ -63,7 +63,7 @@ static const char usage_text[] =
 	"  --step            print every dump after each cycle and wait for Enter\n"
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
-	"  -o FILE           write the final state as a world file\n"
+	"  -o FILE           write the final state as a world file (- standard output)\n"
 	"  -n, --dry-run     read WORLD and TASK (or the --act script), say how it reads,\n"
 	"                    check the output paths, and stop\n"
 	"  -h, --help        this text\n"
@@ -447,7 +447,7 @@ static void outputs_guard(void)
 static int outputs_open(const Options *o, Output out[OUT_COUNT])
 {
 	for (int i = 0; i < OUT_COUNT; i++)
-		out[i] = (Output){.stream = NULL, .slot = -1};
+		out[i] = (Output){.stream = NULL, .slot = -1, .standard = false};
 	for (int i = 0; i < OUT_COUNT; i++) {
 		Diag d;
 		if (o->out_path[i] && output_open(&out[i], o->out_path[i], &d)) {
