@@ -336,7 +336,11 @@ static int check_options(const Options *o)
 		return usage_error("%s", "give either --act or --act-file, not both");
 	if (o->dry_run && !o->task_text && !o->act && !o->act_file)
 		return usage_error("%s", "-n, --dry-run needs a TASK (or --act) to read");
+	if (!o->world_path[0])
+		return usage_error("%s", "WORLD: the file name is empty");
 	const char *file = script_file(o);
+	if (file && !file[0])
+		return usage_error("%s: the file name is empty", o->act_file ? "--act-file" : "--act @FILE");
 	if (file && strcmp(file, "-") == 0 && strcmp(o->world_path, "-") == 0)
 		return usage_error("%s", "standard input can be WORLD or the --act script, not both");
 	/* --step waits for Enter on standard input: a world or script read from it
