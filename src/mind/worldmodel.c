@@ -111,6 +111,15 @@ Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y)
 	return e ? *e : none;
 }
 
+int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y)
+{
+	x -= m->node_at_x0;
+	y -= m->node_at_y0;
+	if (!m->node_at || x < 0 || y < 0 || x >= m->node_at_w || y >= m->node_at_h)
+		return -1;
+	return m->node_at[(int64_t)y * m->node_at_w + x];
+}
+
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y)
 {
 	*x = (int32_t)floor(m->utak.x);
@@ -553,6 +562,7 @@ void worldmodel_free(WorldModel *m)
 	free(m->tile);
 	free(m->tile_list);
 	free(m->node);
+	free(m->node_at);
 	free(m->ring);
 	free(m->vertex);
 	memset(m, 0, sizeof *m);
