@@ -161,6 +161,7 @@ typedef struct Accommodation {
 	bool corrected;        /* the disparity search moved the belief */
 	int32_t new_squares;   /* squares seen for the first time */
 	int32_t finer_squares; /* squares seen at a finer resolution than before */
+	int32_t candidates;    /* positions the disparity search scored (its cost) */
 } Accommodation;
 
 typedef struct WorldModel {
@@ -263,5 +264,9 @@ void worldmodel_dump(const WorldModel *m, FILE *f);
  * son $floor; parents and sons agree; rings closed with >= 4 axis-aligned segments
  * and inside their node's rectangle. */
 bool worldmodel_validate(const WorldModel *m, char *why, size_t size);
+/* worldmodel_ring_outlines_object(m, r): ring r is a hole of $floor whose corners
+ * are those of a ring of an object (the object's outline seen from the floor): for
+ * readers that draw each outline once. */
+bool worldmodel_ring_outlines_object(const WorldModel *m, int32_t r);
 
 #endif
