@@ -6,14 +6,17 @@
  * The world, built in memory: a SIDE x SIDE TABLE (default 1024) with OBJECTS
  * objects (default 4096, utak(5)'s limit) on a lattice of cells, one per cell:
  * squares, bricks and right triangles by turns, 3 to 9 squares across (fixed
- * seed); Utak at (2.5, 2.5) facing north, next to the verge's south-west corner.
+ * seed); Utak at (5.5, 7.5) facing north, near the verge's south-west corner and
+ * touching the first object, a square.
  *
  * (1) A motor command and its perception (motion_execute, retina_sense,
  *     controller_perceive after controller_start, as utak --act runs them):
  *     'move -1000000 -1000000' against 'move -10 -10'. Both halt at the verge
- *     within two squares, so a cost that follows the distance actually travelled
+ *     within a few squares, so a cost that follows the distance actually travelled
  *     makes the ratio about 1; before issue 14 the world model walked the whole
- *     commanded line (about 20 s).
+ *     commanded line (about 20 s). Then, the square grasped, 'push -1000000 0'
+ *     against 'push -10 0' (both halt at the verge) and 'turn 1000000' against
+ *     'turn 10'.
  * (2) judge_task with Utak where he began: 'push square sw-corner' (the nearest
  *     square found) and 'push lshape sw-corner' (there is none: every object's
  *     shape is looked at) against 'go ne-corner'. The corner task's verdict is a
@@ -87,7 +90,7 @@ static char *world_text(int side, int objects, size_t *len)
 			n += (size_t)snprintf(text + n, cap - n, " %d %d %d %d %d %d %d %d\n", x, y, x + a, y, x + a,
 					      y + b, x, y + b);
 	}
-	n += (size_t)snprintf(text + n, cap - n, "utak 2.5 2.5 north\n");
+	n += (size_t)snprintf(text + n, cap - n, "utak 5.5 7.5 north\n");
 	*len = n;
 	return text;
 }
@@ -101,9 +104,10 @@ static void load(const char *text, size_t len, World *w, Table *t)
 	}
 }
 
-/* time_move(text, len, dx, dy, &travelled): one 'move dx dy' and its perception,
- * on the world afresh; the distance Utak actually went. */
-static double time_move(const char *text, size_t len, double dx, double dy, double *travelled)
+/* time_command(text, len, cmd, &travelled): one motor command and its perception,
+ * on the world afresh (for a push or turn, after a grasp); the distance Utak
+ * actually went. */
+static double time_command(const char *text, size_t len, MotorCommand cmd, double *travelled)
 {
 	World w;
 	Table t;
@@ -115,9 +119,14 @@ static double time_move(const char *text, size_t len, double dx, double dy, doub
 	Impression imp;
 	retina_sense(&w, &t, &imp);
 	controller_start(c, &imp);
-	Vec2 from = w.utak;
-	MotorCommand cmd = {.kind = MOTOR_MOVE, .dx = dx, .dy = dy};
 	MotorOutcome out;
+	if (cmd.kind != MOTOR_MOVE) {
+		MotorCommand grasp = {.kind = MOTOR_GRASP};
+		motion_execute(&w, &t, &grasp, &out);
+		retina_sense(&w, &t, &imp);
+		controller_perceive(c, &grasp, &imp);
+	}
+	Vec2 from = w.utak;
 	double t0 = now_ms();
 	motion_execute(&w, &t, &cmd, &out);
 	retina_sense(&w, &t, &imp);
@@ -158,18 +167,31 @@ int main(int argc, char **argv)
 	}
 	size_t len;
 	char *text = world_text(side, objects, &len);
-	printf("costbench: TABLE %d x %d, %d objects, Utak at (2.5, 2.5); medians of %d runs, ms\n", side, side,
+	printf("costbench: TABLE %d x %d, %d objects, Utak at (5.5, 7.5); medians of %d runs, ms\n", side, side,
 	       objects, reps);
 
-	double far[COSTBENCH_MAX_REPS], near[COSTBENCH_MAX_REPS], far_went = 0, near_went = 0;
-	for (int r = 0; r < reps; r++) {
-		far[r] = time_move(text, len, -1e6, -1e6, &far_went);
-		near[r] = time_move(text, len, -10, -10, &near_went);
+	/* Each pair: the long command, then the short one it is compared with. */
+	static const struct {
+		const char *text;
+		MotorCommand cmd;
+	} pairs[][2] = {
+	    {{"move -1000000 -1000000", {.kind = MOTOR_MOVE, .dx = -1e6, .dy = -1e6}},
+	     {"move -10 -10", {.kind = MOTOR_MOVE, .dx = -10, .dy = -10}}},
+	    {{"push -1000000 0", {.kind = MOTOR_PUSH, .dx = -1e6}}, {"push -10 0", {.kind = MOTOR_PUSH, .dx = -10}}},
+	    {{"turn 1000000", {.kind = MOTOR_TURN, .deg = 1e6}}, {"turn 10", {.kind = MOTOR_TURN, .deg = 10}}},
+	};
+	for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
+		double med[2], went[2] = {0, 0};
+		for (int i = 0; i < 2; i++) {
+			double ms[COSTBENCH_MAX_REPS];
+			for (int r = 0; r < reps; r++)
+				ms[r] = time_command(text, len, pairs[p][i].cmd, &went[i]);
+			med[i] = median(ms, reps);
+			printf("  %-22s (Utak went %5.2f squares) + perception: %8.2f\n", pairs[p][i].text, went[i],
+			       med[i]);
+		}
+		printf("  ratio long / short: %.2f\n", med[0] / med[1]);
 	}
-	double mf = median(far, reps), mn = median(near, reps);
-	printf("  move -1000000 -1000000 (went %.2f squares) + perception: %8.2f\n", far_went, mf);
-	printf("  move -10 -10           (went %.2f squares) + perception: %8.2f\n", near_went, mn);
-	printf("  ratio long / short move: %.2f\n", mf / mn);
 
 	World w;
 	Table t;
