@@ -295,7 +295,7 @@ DEBIAN_PYTHON ?= /usr/bin/python3
 MOVINGAI      ?= ../shared/data/movingai
 
 bench-compare-deps:
-	@sh tests/fuzz/need.sh python3-opencv python3-skimage
+	@sh tests/fuzz/need.sh python3-opencv python3-skimage libtcod-dev pkg-config
 
 bench-compare: build/rel/bench/skelbench | bench-compare-deps
 	OMP_NUM_THREADS=1 $(DEBIAN_PYTHON) bench/compare.py build/rel/bench/skelbench \

@@ -243,10 +243,20 @@ static bool skeleton_is_simple_mask(unsigned m)
 	return t4 == 1 && t8bar == 1;
 }
 
-static void skeleton_build_simple_table(bool table[256])
+/* What one deletion test needs from the 8-neighbourhood mask (one table load). */
+enum {
+	THIN_KEEP = 0,   /* not simple: deleting would change the topology */
+	THIN_DELETE = 1, /* simple, and not one edge neighbour: deletable */
+	THIN_RIDGE = 2   /* simple with exactly one edge neighbour: a ridge end or not */
+};
+
+/* skeleton_build_kind_table(kind): THIN_* of every mask (see the Thinner). */
+static void skeleton_build_kind_table(uint8_t kind[256])
 {
-	for (unsigned m = 0; m < 256; m++)
-		table[m] = skeleton_is_simple_mask(m);
+	for (unsigned m = 0; m < 256; m++) {
+		unsigned edge = (m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1);
+		kind[m] = !skeleton_is_simple_mask(m) ? THIN_KEEP : edge == 1 ? THIN_RIDGE : THIN_DELETE;
+	}
 }
 
 /* ---------------------------------------------------------------- thinning */
@@ -266,44 +276,52 @@ typedef struct Thinner {
 	int32_t *stack;   /* padded indices to try again */
 	int32_t top;
 	const int32_t *dist2; /* w * h, unpadded */
-	bool simple[256];
+	uint8_t kind[256];    /* THIN_* of each neighbourhood mask */
 } Thinner;
+
+/* thinner_mask_of(st, pi, pw): the neighbourhood mask, written out: the offsets are
+ * known shapes, so the eight loads issue together (a loop over t->off did not). */
+static inline unsigned thinner_mask_of(const uint8_t *st, int32_t pi, int32_t pw)
+{
+	return (unsigned)(st[pi + 1] & SKELETON_IN) | (unsigned)(st[pi + 1 + pw] & SKELETON_IN) << 1 |
+	       (unsigned)(st[pi + pw] & SKELETON_IN) << 2 |
+	       (unsigned)(st[pi - 1 + pw] & SKELETON_IN) << 3 | (unsigned)(st[pi - 1] & SKELETON_IN) << 4 |
+	       (unsigned)(st[pi - 1 - pw] & SKELETON_IN) << 5 |
+	       (unsigned)(st[pi - pw] & SKELETON_IN) << 6 | (unsigned)(st[pi + 1 - pw] & SKELETON_IN) << 7;
+}
 
 static inline unsigned thinner_mask(const Thinner *t, int32_t pi)
 {
-	unsigned m = 0;
-	for (int i = 0; i < 8; i++)
-		m |= (unsigned)(t->state[pi + t->off[i]] & SKELETON_IN) << i;
-	return m;
+	return thinner_mask_of(t->state, pi, t->pw);
 }
 
-/* thinner_dist2(t, pi): dist2 of the cell at padded index pi. */
-static int32_t thinner_dist2(const Thinner *t, int32_t pi)
+/* thinner_ridge_end(t, pi, m): pi, simple with one edge neighbour (mask m), is a
+ * ridge end. A ridge end has exactly one 4-neighbour in the set and no 8-neighbour in
+ * the set farther from the obstacles: it is the tip of a branch of the medial axis
+ * (the distance map has a local maximum there along the branch). Without the second
+ * condition every cell of the grassfire front that happens to lose its side
+ * neighbours first would be kept as an end, and grow a spur; with it, a branch whose
+ * distance rises from its tip (toward a convex corner of the space) burns back to its
+ * junction, as Blum's branches into corners carry no choice of route. One division
+ * finds the unpadded index; the neighbours are offsets from it. */
+static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
 {
-	return t->dist2[(size_t)(pi / t->pw - 1) * t->w + (pi % t->pw - 1)];
+	const int32_t w = t->w;
+	const int32_t *d2 = t->dist2 + (size_t)(pi / t->pw - 1) * w + (pi % t->pw - 1);
+	const int32_t d = d2[0];
+	const int32_t off[8] = {1, 1 + w, w, w - 1, -1, -1 - w, -w, 1 - w};
+	for (int i = 0; i < 8; i++)
+		if (((m >> i) & 1) && d2[off[i]] > d)
+			return false;
+	return true;
 }
 
-/* thinner_deletable(t, pi): pi is simple and not a ridge end. A ridge end has exactly
- * one 4-neighbour in the set and no 8-neighbour in the set farther from the obstacles:
- * it is the tip of a branch of the medial axis (the distance map has a local maximum
- * there along the branch). Without the second condition every cell of the grassfire
- * front that happens to lose its side neighbours first would be kept as an end, and
- * grow a spur; with it, a branch whose distance rises from its tip (toward a convex
- * corner of the space) burns back to its junction, as Blum's branches into corners
- * carry no choice of route. */
+/* thinner_deletable(t, pi): pi is simple and not a ridge end. */
 static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 {
 	unsigned m = thinner_mask(t, pi);
-	if (!t->simple[m])
-		return false;
-	int edge = (int)((m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1));
-	if (edge != 1)
-		return true;
-	int32_t d = thinner_dist2(t, pi);
-	for (int i = 0; i < 8; i++)
-		if (((m >> i) & 1) && thinner_dist2(t, pi + t->off[i]) > d)
-			return true;
-	return false;
+	uint8_t k = t->kind[m];
+	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, m));
 }
 
 /* thinner_delete_more(t, pi, top): deletes pi, then every visited cell that its
@@ -345,32 +363,29 @@ static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t,
  * runs for every free cell. */
 static void thinner_visit(Thinner *t, int32_t pi)
 {
-	uint8_t nb[8];
-	unsigned m = 0;
-	for (int i = 0; i < 8; i++) {
-		nb[i] = t->state[pi + t->off[i]];
-		m |= (unsigned)(nb[i] & SKELETON_IN) << i;
-	}
-	t->state[pi] = (uint8_t)(t->state[pi] | SKELETON_VISITED);
-	if (!t->simple[m])
+	uint8_t *st = t->state;
+	const unsigned m = thinner_mask_of(st, pi, t->pw);
+	st[pi] = (uint8_t)(st[pi] | SKELETON_VISITED);
+	const uint8_t k = t->kind[m];
+	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, m)))
 		return;
-	int edge = (int)((m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1));
-	if (edge == 1 && !thinner_deletable(t, pi))
-		return; /* a ridge end */
-	t->state[pi] &= (uint8_t)~SKELETON_IN;
+	st[pi] &= (uint8_t)~SKELETON_IN;
 	t->top = 0;
-	for (int i = 0; i < 8; i++)
-		if ((nb[i] & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
-		    (SKELETON_IN | SKELETON_VISITED)) {
-			int32_t qi = pi + t->off[i];
-			t->state[qi] = (uint8_t)(nb[i] | SKELETON_STACKED);
+	for (int i = 0; i < 8; i++) {
+		if (!((m >> i) & 1))
+			continue;
+		int32_t qi = pi + t->off[i];
+		uint8_t nb = st[qi];
+		if ((nb & (SKELETON_VISITED | SKELETON_STACKED)) == SKELETON_VISITED) {
+			st[qi] = (uint8_t)(nb | SKELETON_STACKED);
 			t->stack[t->top++] = qi;
 		}
+	}
 	for (;;) {
 		if (t->top == 0)
 			return;
 		int32_t qi = t->stack[--t->top];
-		t->state[qi] &= (uint8_t)~SKELETON_STACKED;
+		st[qi] &= (uint8_t)~SKELETON_STACKED;
 		if (thinner_deletable(t, qi)) {
 			/* rare: a cascade; the stack as it is now is taken over */
 			int32_t saved = t->top;
@@ -526,7 +541,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	t.stack = wk->stack;
 	for (int i = 0; i < 8; i++)
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
-	skeleton_build_simple_table(t.simple);
+	skeleton_build_kind_table(t.kind);
 
 	/* counting sort of the free cells by dist2, ties by index (the histogram came
 	 * with the distance transform) */
