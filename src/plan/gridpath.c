@@ -49,6 +49,14 @@
  * 1024 x 1024 maps, 1 was slowest and 16 to 256 within the noise; 64 keeps the
  * current heap at 56 entries on average (8room_000 x2; 101 with 16). */
 #define GRIDPATH_BUCKETS_PER_UNIT 64
+/* Buckets kept at once (a page, see gridpath.h): a path of length L would need
+ * L x GRIDPATH_BUCKETS_PER_UNIT of them (3.2 million, 51 MB, corner to corner in a
+ * 1024 x 1024 maze, whose path is 50 687 long), and walking the empty ones cost a
+ * fifth of the jump search's time there. A page covers 64 units of f, more than
+ * plain A*'s f grows in one step (at most 2 sqrt 2), so only long jumps overflow.
+ * Empty buckets are skipped 64 at a time by the nonempty bits. */
+#define GRIDPATH_PAGE 4096
+#define GRIDPATH_WORDS (GRIDPATH_PAGE / 64)
 
 /* The 8 steps: 0..3 straight (E, N, W, S), 4..7 diagonal (NE, NW, SW, SE); a
  * diagonal d = 4 + k lies between straight steps k and (k + 1) mod 4. "N" is +y. */
@@ -96,9 +104,12 @@ void gridpath_free(GridPathSearch *s)
 	free(s->node);
 	free(s->rows);
 	free(s->cols);
-	for (int i = 0; i < s->bucket_cap; i++)
-		free(s->bucket[i].e);
+	if (s->bucket)
+		for (int i = 0; i < GRIDPATH_PAGE; i++)
+			free(s->bucket[i].e);
 	free(s->bucket);
+	free(s->nonempty);
+	free(s->overflow);
 	free(s->stack);
 	*s = (GridPathSearch){0};
 }
@@ -127,43 +138,104 @@ static void gridpath_sift_down(GridPathOpen *h, int n, int i, GridPathOpen e)
 	h[i] = e;
 }
 
-/* gridpath_push: files e in its bucket; in the current one, by heap insertion. Since
- * the heuristic is consistent, f never decreases along a search, so an entry never
- * belongs before the current bucket (the clamp only guards rounding). */
+/* gridpath_bucket_of(s, f): the bucket number of f, never before the current one
+ * (the heuristic is consistent, so f never decreases along a search: the clamp only
+ * guards rounding). */
+static inline int64_t gridpath_bucket_of(const GridPathSearch *s, double f)
+{
+	double rel = (f - s->f_start) * GRIDPATH_BUCKETS_PER_UNIT;
+	return rel < (double)s->bucket_now ? s->bucket_now : (int64_t)rel;
+}
+
+/* gridpath_file(s, e, b): e into bucket b of the page, unsorted (b is not current). */
+static void gridpath_file(GridPathSearch *s, GridPathOpen e, int64_t b)
+{
+	int slot = (int)(b - s->page_base);
+	GridPathBucket *k = &s->bucket[slot];
+	k->e = util_grow(k->e, &k->cap, k->count + 1, sizeof *k->e);
+	k->e[k->count++] = e;
+	s->nonempty[slot / 64] |= (uint64_t)1 << (slot % 64);
+}
+
+/* gridpath_push: files e in its bucket; in the current one, by heap insertion; past
+ * the page, in the overflow. */
 static void gridpath_push(GridPathSearch *s, GridPathOpen e)
 {
-	double rel = (e.f - s->f_start) * GRIDPATH_BUCKETS_PER_UNIT;
-	int b = rel < (double)s->bucket_now ? s->bucket_now : (int)rel;
-	if (b >= s->bucket_cap) {
-		int old = s->bucket_cap;
-		s->bucket = util_grow(s->bucket, &s->bucket_cap, b + 1, sizeof *s->bucket);
-		memset(s->bucket + old, 0, (size_t)(s->bucket_cap - old) * sizeof *s->bucket);
+	int64_t b = gridpath_bucket_of(s, e.f);
+	if (b >= s->page_base + GRIDPATH_PAGE) {
+		s->overflow = util_grow(s->overflow, &s->overflow_cap, s->overflow_count + 1,
+		                        sizeof *s->overflow);
+		s->overflow[s->overflow_count++] = e;
+		return;
 	}
-	if (b >= s->bucket_used)
-		s->bucket_used = b + 1;
-	GridPathBucket *k = &s->bucket[b];
+	if (b != s->bucket_now) {
+		gridpath_file(s, e, b);
+		return;
+	}
+	int slot = (int)(b - s->page_base);
+	GridPathBucket *k = &s->bucket[slot];
 	k->e = util_grow(k->e, &k->cap, k->count + 1, sizeof *k->e);
+	s->nonempty[slot / 64] |= (uint64_t)1 << (slot % 64);
 	int i = k->count++;
-	if (b == s->bucket_now)
-		while (i > 0) {
-			int parent = (i - 1) / 2;
-			if (!gridpath_before(&e, &k->e[parent]))
-				break;
-			k->e[i] = k->e[parent];
-			i = parent;
-		}
+	while (i > 0) {
+		int parent = (i - 1) / 2;
+		if (!gridpath_before(&e, &k->e[parent]))
+			break;
+		k->e[i] = k->e[parent];
+		i = parent;
+	}
 	k->e[i] = e;
 }
 
+/* gridpath_next_slot(s, slot): the first bucket of the page at or after slot that
+ * holds entries, or GRIDPATH_PAGE. */
+static int gridpath_next_slot(const GridPathSearch *s, int slot)
+{
+	for (int w = slot / 64; w < GRIDPATH_WORDS; w++) {
+		uint64_t bits = s->nonempty[w];
+		if (w == slot / 64)
+			bits &= ~(uint64_t)0 << (slot % 64);
+		if (bits == 0)
+			continue;
+		int i = 0;
+		while (!((bits >> i) & 1))
+			i++;
+		return w * 64 + i;
+	}
+	return GRIDPATH_PAGE;
+}
+
 /* gridpath_pop: the first entry of the open list into *e; false when it is empty.
- * Moving to a new bucket turns it into a heap (Floyd's bottom-up build, O(n)). */
+ * Moving to a new bucket turns it into a heap (Floyd's bottom-up build, O(n)); an
+ * empty page is replaced by the one that starts at the overflow's least bucket. */
 static bool gridpath_pop(GridPathSearch *s, GridPathOpen *e)
 {
-	GridPathBucket *k = &s->bucket[s->bucket_now];
-	while (k->count == 0) {
-		if (++s->bucket_now >= s->bucket_used)
+	int slot = (int)(s->bucket_now - s->page_base);
+	int next = s->bucket[slot].count > 0 ? slot : gridpath_next_slot(s, slot);
+	if (next == GRIDPATH_PAGE) {
+		if (s->overflow_count == 0)
 			return false;
-		k = &s->bucket[s->bucket_now];
+		int64_t least = INT64_MAX;
+		for (int i = 0; i < s->overflow_count; i++) {
+			int64_t b = gridpath_bucket_of(s, s->overflow[i].f);
+			least = b < least ? b : least;
+		}
+		s->page_base = s->bucket_now = least;
+		int kept = 0;
+		for (int i = 0; i < s->overflow_count; i++) {
+			int64_t b = gridpath_bucket_of(s, s->overflow[i].f);
+			if (b < s->page_base + GRIDPATH_PAGE)
+				gridpath_file(s, s->overflow[i], b);
+			else
+				s->overflow[kept++] = s->overflow[i];
+		}
+		s->overflow_count = kept;
+		slot = -1; /* bucket 0 is new: make it a heap below */
+		next = gridpath_next_slot(s, 0);
+	}
+	GridPathBucket *k = &s->bucket[next];
+	if (next != slot) {
+		s->bucket_now = s->page_base + next;
 		for (int i = k->count / 2 - 1; i >= 0; i--)
 			gridpath_sift_down(k->e, k->count, i, k->e[i]);
 	}
@@ -171,7 +243,26 @@ static bool gridpath_pop(GridPathSearch *s, GridPathOpen *e)
 	k->count--;
 	if (k->count > 0)
 		gridpath_sift_down(k->e, k->count, 0, k->e[k->count]);
+	else
+		s->nonempty[next / 64] &= ~((uint64_t)1 << (next % 64));
 	return true;
+}
+
+/* gridpath_open_reset(s): an empty open list for a new query. */
+static void gridpath_open_reset(GridPathSearch *s)
+{
+	if (!s->bucket) {
+		s->bucket = util_alloc(GRIDPATH_PAGE, sizeof *s->bucket);
+		memset(s->bucket, 0, GRIDPATH_PAGE * sizeof *s->bucket);
+		s->nonempty = util_alloc(GRIDPATH_WORDS, sizeof *s->nonempty);
+		memset(s->nonempty, 0, GRIDPATH_WORDS * sizeof *s->nonempty);
+	}
+	for (int slot = gridpath_next_slot(s, 0); slot < GRIDPATH_PAGE;
+	     slot = gridpath_next_slot(s, slot + 1))
+		s->bucket[slot].count = 0;
+	memset(s->nonempty, 0, GRIDPATH_WORDS * sizeof *s->nonempty);
+	s->page_base = s->bucket_now = 0;
+	s->overflow_count = 0;
 }
 
 /* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. */
@@ -313,9 +404,7 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 	gridpath_next_round(s);
 	const uint32_t open_mark = 2 * s->round, closed_mark = 2 * s->round + 1;
 	GridPathNode *node = s->node;
-	for (int i = 0; i < s->bucket_used; i++)
-		s->bucket[i].count = 0;
-	s->bucket_used = s->bucket_now = 0;
+	gridpath_open_reset(s);
 	node[start].mark = open_mark;
 	node[start].straight = node[start].diagonal = 0;
 	node[start].from = GRIDPATH_FROM_START;
@@ -429,11 +518,10 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	gridpath_next_round(s);
 	const uint32_t open_mark = 2 * s->round, closed_mark = 2 * s->round + 1;
 	GridPathNode *node = s->node;
+	const uint8_t *rows = s->rows;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
 
-	for (int i = 0; i < s->bucket_used; i++)
-		s->bucket[i].count = 0;
-	s->bucket_used = s->bucket_now = 0;
+	gridpath_open_reset(s);
 	node[start].mark = open_mark;
 	node[start].straight = node[start].diagonal = 0;
 	{
@@ -470,15 +558,16 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			int32_t n = c + offset[d];
 			GridPathNode *nn = &node[n];
 			int32_t ns = nc->straight, nd = nc->diagonal;
+			/* free from the byte grid (a sixteenth of node's lines in cache): only
+			 * free neighbours touch their node */
 			if (d < 4) {
-				straight_free[d] = nn->free;
+				straight_free[d] = rows[n];
 				if (!straight_free[d])
 					continue;
 				ns++;
 			} else {
 				/* The no-corner-cutting rule: both orthogonal neighbours free. */
-				if (!nn->free || !straight_free[d - 4] ||
-				    !straight_free[(d - 3) & 3])
+				if (!straight_free[d - 4] || !straight_free[(d - 3) & 3] || !rows[n])
 					continue;
 				nd++;
 			}

@@ -111,12 +111,14 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 	 * the blocked columns at its two ends. Within a run, with F(u) = u^2 + g(u)^2, the
 	 * parabola of column u at x is F(u) - 2 u x + x^2, and two parabolas a < b cross at
 	 * (F(b) - F(a)) / (2 (b - a)). The lower envelope's columns are kept in the stack
-	 * v[0 .. top]; a column is dropped when the new one crosses its left neighbour no
+	 * vu[0 .. top]; a column is dropped when the new one crosses its left neighbour no
 	 * later than it does, compared by cross multiplication in 64 bits instead of
-	 * Meijster's integer division: exact, and no division on the critical path. */
+	 * Meijster's integer division: exact, and no division on the critical path. The
+	 * stack holds each column with its F beside it (vu, vF), so the envelope's loads
+	 * run along two arrays instead of through v into F. */
 	const int32_t n = w + 2;
-	int64_t *F = util_alloc((size_t)n, sizeof *F);
-	int32_t *v = util_alloc((size_t)n, sizeof *v);
+	int64_t *vF = util_alloc((size_t)n, sizeof *vF);
+	int32_t *vu = util_alloc((size_t)n, sizeof *vu);
 	for (int32_t y = 0; y < h; y++) {
 		int32_t *row = dist2 + (size_t)y * w;
 		int32_t x0 = 0;
@@ -140,30 +142,30 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 			/* columns lo = x0 - 1 .. hi = x1 + 1, blocked at both ends */
 			int32_t lo = x0 - 1, hi = x1 + 1;
 			int32_t top = 0;
-			v[0] = lo;
-			F[0] = (int64_t)lo * lo;
+			vu[0] = lo;
+			vF[0] = (int64_t)lo * lo;
 			for (int32_t u = x0; u <= hi; u++) {
 				int64_t Fu =
 				    (int64_t)u * u + (u <= x1 ? (int64_t)row[u] * row[u] : 0);
-				F[u - lo] = Fu;
 				while (top > 0) {
-					int32_t a = v[top - 1], b = v[top];
-					int64_t Fa = F[a - lo], Fb = F[b - lo];
+					int32_t a = vu[top - 1], b = vu[top];
+					int64_t Fa = vF[top - 1], Fb = vF[top];
 					/* cross(b, u) <= cross(a, b): b is nowhere lowest */
 					if ((Fu - Fb) * (b - a) > (Fb - Fa) * (u - b))
 						break;
 					top--;
 				}
-				v[++top] = u;
+				top++;
+				vu[top] = u;
+				vF[top] = Fu;
 			}
 			int32_t k = 0;
 			for (int32_t x = x0; x <= x1; x++) {
 				/* the lowest parabola at x moves right as x does */
-				while (k < top && F[v[k + 1] - lo] - F[v[k] - lo] <=
-				                      2 * (int64_t)x * (v[k + 1] - v[k]))
+				while (k < top && vF[k + 1] - vF[k] <= 2 * (int64_t)x * (vu[k + 1] - vu[k]))
 					k++;
-				int32_t d = x - v[k];
-				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
+				int32_t d = x - vu[k];
+				row[x] = (int32_t)(vF[k] - (int64_t)vu[k] * vu[k]) + d * d;
 				if (row[x] > largest)
 					largest = row[x];
 				if (count)
@@ -172,8 +174,8 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 			x0 = x1 + 1;
 		}
 	}
-	free(F);
-	free(v);
+	free(vF);
+	free(vu);
 	return largest;
 }
 

@@ -83,12 +83,16 @@ typedef struct GridPathSearch {
 	GridPathNode *node; /* (w + 2) (h + 2) cells */
 	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
 	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
-	 * the start's f; the current bucket is a binary heap, later ones are unsorted. */
-	GridPathBucket *bucket;
-	int bucket_cap;  /* buckets allocated */
-	int bucket_used; /* buckets touched this query: 0..bucket_used-1 */
-	int bucket_now;  /* the current bucket; no entry lies in an earlier one */
-	double f_start;  /* f of the start cell: the origin of bucket numbers */
+	 * the start's f; the current bucket is a binary heap, later ones are unsorted.
+	 * Only a page of GRIDPATH_PAGE buckets, from bucket page_base on, is kept;
+	 * entries past it wait unsorted in overflow until the page is empty. */
+	GridPathBucket *bucket; /* GRIDPATH_PAGE buckets, or NULL before the first query */
+	uint64_t *nonempty;     /* GRIDPATH_PAGE bits: bucket i holds entries */
+	int64_t page_base;      /* the bucket number of bucket[0] */
+	int64_t bucket_now;     /* the current bucket; no entry lies in an earlier one */
+	double f_start;         /* f of the start cell: the origin of bucket numbers */
+	GridPathOpen *overflow; /* entries of buckets >= page_base + GRIDPATH_PAGE */
+	int overflow_count, overflow_cap;
 	/* Entries whose f equals that of the cell being expanded, the least in the open
 	 * list: they may be expanded next in any order, so they skip the heap. */
 	GridPathOpen *stack;
