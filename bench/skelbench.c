@@ -9,21 +9,25 @@
  * Grids, all from a fixed seed: "rooms" (a lattice of rooms 64 cells wide whose walls
  * have doors), "rects" (random rectangles covering about a quarter of the grid), "maze"
  * (a perfect maze by randomised depth-first search, corridors 3 cells wide), each at
- * 1024, 2048 and 4096 cells a side. Each figure is the best of REPEATS runs (default
- * 3): the least disturbed by the rest of the machine. The first run of a size also pays
+ * 256, 512, 1024, 2048 and 4096 cells a side (linear costs show as even ns/c columns).
+ * Each figure is the best of REPEATS runs (default 3): the least disturbed by the rest of the machine. The first run of a size also pays
  * for first touching its memory; the later runs reuse the skeleton's working memory,
  * as a planner that recomputes the skeleton of a screen of one size would. The query runs from near
  * one corner to near the opposite one and reports the pathgraph vertices it expanded.
  *
  *   skelbench --compare DIR [MAP...]
- * The utak side of `make bench-compare` (bench/compare.py): writes the 1024 x 1024
- * rooms, rects and maze grids and each MAP into DIR as NAME.pgm (binary PGM, 255 free,
- * 0 blocked, first row y = 0) with NAME.d2 (the distance transform: w h int32_t dist2
- * values, native byte order, for compare.py to check OpenCV's against), and prints one
- * line per grid, "grid NAME W H EDT_MS SKEL_MS SKEL_CELLS", the best of
- * SKELBENCH_COMPARE_REPEAT runs of skeleton_edt and of skeleton_compute (its own
- * distance transform included), thread CPU time as above. compare.py times the peers
- * on the same files in the same run. */
+ * The utak side of `make bench-compare` (bench/compare.py): writes the rooms, rects and
+ * maze grids and each MAP (scaled by a whole factor and cut, bench_fit) at 1024 and
+ * 4096 cells a side into DIR as NAME-SIDE.pgm (binary PGM, 255 free, 0 blocked, first
+ * row y = 0) with NAME-SIDE.d2 (the distance transform: w h int32_t dist2 values,
+ * native byte order, for compare.py to check OpenCV's against), and prints one line
+ * per grid: "grid NAME W H ends SX SY GX GY len A* JPS exp A* JPS skcells N" and then,
+ * for each job, its key and the median, least and most of SKELBENCH_COMPARE_REPEAT
+ * runs (thread CPU ms): read (one pass reading the grid, the physical limit), edt,
+ * skel (its distance transform included), pg (pathgraph_build), astar and jps
+ * (gridpath_find between the ends by plain A* and by the jump-point search; the ends
+ * as bench_ends picks them). Exit 2 when the two searches' lengths differ.
+ * compare.py times the peers on the same files in the same run. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -558,8 +562,8 @@ int main(int argc, char **argv)
 	printf("%-6s %5s %9s | %7s %5s | %7s %5s | %6s %5s | %6s %6s %7s | %7s %6s %6s\n", "grid",
 	       "side", "cells", "edt ms", "ns/c", "skel ms", "ns/c", "pg ms", "ns/c", "q ms",
 	       "expand", "length", "skcells", "verts", "edges");
-	static const int32_t sides[] = {1024, 2048, 4096};
-	for (int k = 0; k < 3 && sides[k] <= largest; k++) {
+	static const int32_t sides[] = {256, 512, 1024, 2048, 4096};
+	for (int k = 0; k < 5 && sides[k] <= largest; k++) {
 		Grid g;
 		bench_seed = 2026;
 		bench_rooms(&g, sides[k]);

@@ -303,8 +303,10 @@ static void gridpath_next_round(GridPathSearch *s)
  * grid transposed) for runs along y, so both scan memory in order instead of a node
  * (16 bytes) or a row (pw bytes) per step. Only jump points touch node[].
  *
- * PATH: each jump point's node keeps the direction of the run that reached it. The
- * path is rebuilt from the goal by walking back along that direction to the first
+ * PATH: each jump point's node keeps the direction and length of the run that
+ * reached it, so the path is rebuilt from the goal run by run without touching the
+ * nodes between (on the 1024 maze they were 8% of the search's time, a cache miss
+ * each). A run longer than its 16-bit field is walked back instead, to the first
  * closed cell whose step counts are exactly the run's steps fewer: the run's start,
  * or another cell of the run as near the start, which serves as well (its cost is
  * final and the rest of the run from it is free). */
@@ -503,6 +505,7 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			nn->straight = ns;
 			nn->diagonal = nd;
 			nn->from = (uint8_t)d;
+			nn->run = steps <= UINT16_MAX ? (uint16_t)steps : 0;
 			int32_t ax = abs(gx - n % pw), ay = abs(gy - n / pw);
 			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
 			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
@@ -528,17 +531,22 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		const int d = node[c].from;
 		const int32_t back = gridpath_dy[d] * pw + gridpath_dx[d];
 		const int32_t cs = node[c].straight, cd = node[c].diagonal;
+		/* the run's start is known when it was short enough to keep; else the walk */
+		const int32_t known = node[c].run;
 		for (int32_t k = 1;; k++) {
 			int32_t r = c - k * back;
 			path->pts[i - k] =
 			    vec2((double)(r % pw - 1) + 0.5, (double)(r / pw - 1) + 0.5);
 			const GridPathNode *nr = &node[r];
-			if (nr->mark == closed_mark && nr->straight == cs - (d < 4 ? k : 0) &&
-			    nr->diagonal == cd - (d < 4 ? 0 : k)) {
-				c = r;
-				i -= k;
-				break;
-			}
+			bool run_start = known ? k == known
+			                       : nr->mark == closed_mark &&
+			                             nr->straight == cs - (d < 4 ? k : 0) &&
+			                             nr->diagonal == cd - (d < 4 ? 0 : k);
+			if (!run_start)
+				continue;
+			c = r;
+			i -= k;
+			break;
 		}
 	}
 	*length = gridpath_cost(node[goal].straight, node[goal].diagonal);

@@ -266,7 +266,8 @@ static void skeleton_build_kind_table(uint8_t kind[256])
 enum {
 	SKELETON_IN = 1,      /* still in the set */
 	SKELETON_VISITED = 2, /* reached in the distance order */
-	SKELETON_STACKED = 4  /* on the re-try stack */
+	SKELETON_STACKED = 4, /* on the re-try stack */
+	SKELETON_RECHECK = 8  /* next to a pruned cell: to test again after pruning */
 };
 
 /* The thinning works on a copy of the grid padded by one background cell on every
@@ -362,27 +363,37 @@ static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t,
 /* thinner_visit(t, pi): the visit of pi in the distance order: marks it visited and,
  * when deletable, deletes it (thinner_delete_from). The same as those two calls, with
  * the 8 neighbours loaded once for the deletion test and for the re-try stack: this
- * runs for every free cell. */
+ * runs for every free cell. The neighbours to try again, visited and in the set, come
+ * as a second mask from the same loads (none is stacked: the stack is empty between
+ * visits), so the usual deletion, with none, costs no loop over the neighbours.
+ * Every visit is a real one: on the benchmark grids no free cell is interior (all 8
+ * neighbours in the set) when its turn comes, as the distance order makes each cell
+ * part of the front then; so a border queue would save no visit, and was not built. */
 static void thinner_visit(Thinner *t, int32_t pi)
 {
 	uint8_t *st = t->state;
-	const unsigned m = thinner_mask_of(st, pi, t->pw);
+	const int32_t pw = t->pw;
+	const unsigned n[8] = {st[pi + 1],  st[pi + 1 + pw],  st[pi + pw],  st[pi - 1 + pw],
+	                       st[pi - 1], st[pi - 1 - pw], st[pi - pw], st[pi + 1 - pw]};
+	unsigned m = 0, again = 0;
+	for (int i = 0; i < 8; i++) {
+		m |= (n[i] & SKELETON_IN) << i;
+		again |= ((n[i] >> 1) & n[i] & 1u) << i; /* SKELETON_IN and SKELETON_VISITED */
+	}
 	st[pi] = (uint8_t)(st[pi] | SKELETON_VISITED);
 	const uint8_t k = t->kind[m];
 	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, m)))
 		return;
 	st[pi] &= (uint8_t)~SKELETON_IN;
+	if (again == 0)
+		return;
 	t->top = 0;
-	for (int i = 0; i < 8; i++) {
-		if (!((m >> i) & 1))
-			continue;
-		int32_t qi = pi + t->off[i];
-		uint8_t nb = st[qi];
-		if ((nb & (SKELETON_VISITED | SKELETON_STACKED)) == SKELETON_VISITED) {
-			st[qi] = (uint8_t)(nb | SKELETON_STACKED);
+	for (int i = 0; i < 8; i++)
+		if ((again >> i) & 1) {
+			int32_t qi = pi + t->off[i];
+			st[qi] = (uint8_t)(st[qi] | SKELETON_STACKED);
 			t->stack[t->top++] = qi;
 		}
-	}
 	for (;;) {
 		if (t->top == 0)
 			return;
@@ -467,6 +478,14 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 	}
 	for (int32_t k = 0; k < nremove; k++)
 		t->state[remove[k]] &= (uint8_t)~SKELETON_IN;
+	/* only a cell next to a removed one has a new neighbourhood (every other was
+	 * left not deletable by the thinning), so only those are tested again */
+	for (int32_t k = 0; k < nremove; k++)
+		for (int i = 0; i < 8; i++) {
+			uint8_t *q = &t->state[remove[k] + t->off[i]];
+			if (*q & SKELETON_IN)
+				*q |= SKELETON_RECHECK;
+		}
 	return nremove;
 }
 
@@ -576,9 +595,14 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	}
 	s->pruned = thinner_prune(&t, s->dist2, order, nset);
 	if (s->pruned > 0) {
-		/* a junction that lost a branch may be deletable now */
+		/* a junction that lost a branch may be deletable now: the cells marked by
+		 * thinner_prune, in the same raster order as a test of every cell (which
+		 * it equals: a deletion here retries its neighbours through the stack) */
 		for (int32_t k = 0; k < nset; k++) {
 			int32_t pi = order[k];
+			if (!(t.state[pi] & SKELETON_RECHECK))
+				continue;
+			t.state[pi] &= (uint8_t)~SKELETON_RECHECK;
 			if ((t.state[pi] & SKELETON_IN) && thinner_deletable(&t, pi))
 				thinner_delete_from(&t, pi);
 		}

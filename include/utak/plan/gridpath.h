@@ -73,6 +73,7 @@ typedef struct GridPathNode {
 	int32_t diagonal; /* diagonal steps of the best known path to the cell */
 	uint8_t free;     /* 1 when free; the border cells are 0 */
 	uint8_t from;     /* direction (0..7) of the step that reached it */
+	uint16_t run;     /* jump search: steps of the run that reached it (0: too long) */
 } GridPathNode;
 
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
