@@ -68,6 +68,11 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
+/* Free runs of a row up to this long are solved by comparing every column with every
+ * cell (at most 8 x 8 branch-free steps) instead of the envelope, whose stack
+ * branches mispredict on short runs. */
+#define SKELETON_SHORT_RUN 8
+
 /* skeleton_edt_count(g, dist2, count): skeleton_edt, also counting the free cells of
  * each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
  * histogram, gathered while the values are made rather than in a pass of its own). */
@@ -136,6 +141,32 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 				largest = largest > 1 ? largest : 1;
 				if (count)
 					count[2] += x1 - x0 + 1;
+				x0 = x1 + 1;
+				continue;
+			}
+			if (x1 - x0 < SKELETON_SHORT_RUN) {
+				/* a short run: every column against every cell, no branches (a
+				 * vertical corridor's crossing of the row) */
+				int32_t g2[SKELETON_SHORT_RUN], out[SKELETON_SHORT_RUN];
+				const int32_t len = x1 - x0 + 1;
+				for (int32_t i = 0; i < len; i++)
+					g2[i] = row[x0 + i] * row[x0 + i];
+				for (int32_t i = 0; i < len; i++) {
+					int32_t best = (i + 1) * (i + 1); /* the blocked end at x0 - 1 */
+					int32_t right = (len - i) * (len - i); /* and at x1 + 1 */
+					best = right < best ? right : best;
+					for (int32_t j = 0; j < len; j++) {
+						int32_t c = (i - j) * (i - j) + g2[j];
+						best = c < best ? c : best;
+					}
+					out[i] = best;
+				}
+				for (int32_t i = 0; i < len; i++) {
+					row[x0 + i] = out[i];
+					largest = out[i] > largest ? out[i] : largest;
+					if (count)
+						count[out[i] + 1]++;
+				}
 				x0 = x1 + 1;
 				continue;
 			}
