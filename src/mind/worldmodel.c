@@ -1,5 +1,5 @@
-/* worldmodel.c - Utak's world model: evidence, accommodation, disparity, the tree
- * (paper 3.3, 3.4.3, 3.5). CONTROLLER SIDE: it sees Impressions, the commands the
+/* worldmodel.c - Utak's world model: evidence, accommodation, disparity (paper 3.3,
+ * 3.4.3, 3.5). CONTROLLER SIDE: it sees Impressions, the commands the
  * controller gave, and the eye's anatomy (eye.h); never the TABLE.
  *
  * ALGORITHM.
@@ -23,22 +23,16 @@
  * prediction, wins if it beats the prediction by WORLDMODEL_DISPARITY_MARGIN.
  * Sliding along a straight wall changes nothing the eye sees, so along a wall
  * the belief can only be as good as these ties.
- * The tree (paper 3.3, 3.4.3): after every impression, $floor is the set of floor
- * squares and each object a 4-connected set of occupied squares all of whose
- * neighbours are floor (the isolated objects of paper 3.4.2; sets touching the
- * unknown may be verge or objects partly seen, and stay part of $floor's
- * boundary, with the segments there marked as bounded by the occupied or the
- * unknown). Boundaries are traced along square edges with the set on the left
- * ("crack following" in digital topology), turning left first at pinch points
- * so that 4-connected sets stay apart, and merged into maximal straight segments.
- * A slanted edge therefore stays a staircase of unit steps: exactly what the
- * evidence says, never cutting into a square believed occupied.
+ * The tree (paper 3.3, 3.4.3) is derived from the evidence after every impression:
+ * modeltree.c.
  *
- * INVARIANTS: worldmodel_validate. MEMORY: one grid of WORLDMODEL_SIDE^2 Evidence
- * (3 MB) and the tree's arrays, owned by the WorldModel; scratch for tracing is
- * allocated and freed per derivation. COMPLEXITY: an impression costs O(1024)
- * squares to record, O(P x 1024) to search P candidate positions (P <= 49 + 9 x the
- * length of the move), and O(A) to derive the tree, A the seen area. */
+ * INVARIANTS: worldmodel_validate. MEMORY: the evidence in tiles allocated as they
+ * are first seen (worldmodel.h: 12 bytes a square seen, 512 KiB of directory), and
+ * the tree's arrays, owned by the WorldModel. COMPLEXITY: an impression costs
+ * O(1024) squares to record, O(P x 1024) to search P candidate positions (P <= 49
+ * + 18 x the length of the move within sight of the squares seen: wm_line_in_sight),
+ * O(T) to count the seen window over T tiles, and O(A) to derive the tree, A the
+ * seen area. */
 #include "utak/mind/worldmodel.h"
 
 #include <math.h>
@@ -47,8 +41,8 @@
 
 #include "utak/base/eye.h"
 #include "utak/base/util.h"
+#include "utak/mind/modeltree.h"
 
-enum { WM_HALF = WORLDMODEL_SIDE / 2 };
 /* A square's p is definite, and can be predicted, within this of 0 or 1. */
 #define WM_DEFINITE 0.1
 /* A candidate position on a square believed occupied this surely is not tried. */
@@ -70,6 +64,11 @@ enum { WM_HALF = WORLDMODEL_SIDE / 2 };
 #define WM_LINE_COST 1e-3
 /* Steps along the commanded line when listing candidate positions, squares. */
 #define WM_PATH_STEP 0.5
+/* How far beyond the rectangle of squares seen a point of the commanded line can
+ * lie and still have a candidate that sees one of them: the eye reaches EYE_HALF
+ * squares from Utak's square, a candidate lies within one square of the line, and
+ * one more square covers the rounding of both (wm_line_in_sight). */
+#define WM_SIGHT_MARGIN (EYE_HALF + 2)
 
 /* Own-frame offsets of the touch squares, in Impression.touch order. */
 static const int8_t wm_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0},  {1, -1},
@@ -77,18 +76,54 @@ static const int8_t wm_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0}
 
 /* ---- the evidence grid --------------------------------------------------------- */
 
-static int64_t wm_index(int32_t x, int32_t y)
+/* wm_tile_of(x, y, &at): the index of the tile holding square (x, y), and in *at the
+ * square's index within it; -1 beyond the reach. */
+static int32_t wm_tile_of(int32_t x, int32_t y, int32_t *at)
 {
-	if (x < -WM_HALF || x >= WM_HALF || y < -WM_HALF || y >= WM_HALF)
+	if (x < -WORLDMODEL_REACH || x >= WORLDMODEL_REACH || y < -WORLDMODEL_REACH || y >= WORLDMODEL_REACH)
 		return -1;
-	return (int64_t)(y + WM_HALF) * WORLDMODEL_SIDE + (x + WM_HALF);
+	int32_t gx = x + WORLDMODEL_REACH, gy = y + WORLDMODEL_REACH;
+	*at = (gy % WORLDMODEL_TILE) * WORLDMODEL_TILE + gx % WORLDMODEL_TILE;
+	return (gy / WORLDMODEL_TILE) * WORLDMODEL_TILES + gx / WORLDMODEL_TILE;
+}
+
+/* wm_peek(m, x, y): the evidence of square (x, y), NULL where no tile holds it (never
+ * seen, or beyond the reach). */
+static const Evidence *wm_peek(const WorldModel *m, int32_t x, int32_t y)
+{
+	int32_t at, t = wm_tile_of(x, y, &at);
+	return t < 0 || !m->tile[t] ? NULL : &m->tile[t][at];
+}
+
+/* wm_at(m, x, y): the evidence of square (x, y) to write, its tile allocated (all
+ * unseen) if need be; NULL beyond the reach. */
+static Evidence *wm_at(WorldModel *m, int32_t x, int32_t y)
+{
+	int32_t at, t = wm_tile_of(x, y, &at);
+	if (t < 0)
+		return NULL;
+	if (!m->tile[t]) {
+		m->tile[t] = util_alloc((size_t)WORLDMODEL_TILE * WORLDMODEL_TILE, sizeof *m->tile[t]);
+		m->tile_list = util_grow(m->tile_list, &m->tile_cap, m->tile_count + 1, sizeof *m->tile_list);
+		m->tile_list[m->tile_count++] = t;
+	}
+	return &m->tile[t][at];
 }
 
 Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y)
 {
-	int64_t k = wm_index(x, y);
+	const Evidence *e = wm_peek(m, x, y);
 	Evidence none = {0, 0, WORLDMODEL_UNSEEN, 0};
-	return k < 0 ? none : m->grid[k];
+	return e ? *e : none;
+}
+
+int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y)
+{
+	x -= m->node_at_x0;
+	y -= m->node_at_y0;
+	if (!m->node_at || x < 0 || y < 0 || x >= m->node_at_w || y >= m->node_at_h)
+		return -1;
+	return m->node_at[(int64_t)y * m->node_at_w + x];
 }
 
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y)
@@ -186,14 +221,13 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 		int old_occupied = 0, finer = 0;
 		for (int dy = 0; dy < c.size; dy++)
 			for (int dx = 0; dx < c.size; dx++) {
-				int64_t k = wm_index(sx + c.ox + dx, sy + c.oy + dy);
-				if (k < 0) {
+				Evidence *e = wm_at(m, sx + c.ox + dx, sy + c.oy + dy);
+				if (!e) {
 					/* Outside the window: not recorded, but said in the dump.
 					 */
 					m->clipped = true;
 					continue;
 				}
-				Evidence *e = &m->grid[k];
 				sq[count++] = e;
 				all_known &= e->res != WORLDMODEL_UNSEEN;
 				old_occupied += e->p >= 0.5f;
@@ -249,12 +283,12 @@ void worldmodel_predict(const WorldModel *m, int32_t x, int32_t y, Impression *p
 		bool ok = i != utak_cell;
 		for (int dy = 0; dy < c.size && ok; dy++)
 			for (int dx = 0; dx < c.size && ok; dx++) {
-				int64_t k = wm_index(x + c.ox + dx, y + c.oy + dy);
-				if (k < 0 || m->grid[k].res == WORLDMODEL_UNSEEN) {
+				const Evidence *e = wm_peek(m, x + c.ox + dx, y + c.oy + dy);
+				if (!e || e->res == WORLDMODEL_UNSEEN) {
 					ok = false;
 					break;
 				}
-				float p = m->grid[k].p;
+				float p = e->p;
 				if (p > WM_DEFINITE && p < 1 - WM_DEFINITE)
 					ok = false;
 				occupied += p >= 0.5f;
@@ -301,12 +335,14 @@ static double wm_score(const WorldModel *m, int32_t x, int32_t y, const Impressi
 static void wm_place(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under)
 {
 	for (int32_t j = 0; j < m->held_count; j++) {
-		int64_t k = wm_index(x + m->held_dx[j], y + m->held_dy[j]);
-		if (k < 0 || (m->held_dx[j] == 0 && m->held_dy[j] == 0))
+		if (m->held_dx[j] == 0 && m->held_dy[j] == 0)
+			continue;
+		Evidence *e = wm_at(m, x + m->held_dx[j], y + m->held_dy[j]);
+		if (!e)
 			continue;
 		if (under)
-			under[j] = m->grid[k];
-		m->grid[k] = held[j];
+			under[j] = *e;
+		*e = held[j];
 	}
 }
 
@@ -315,9 +351,11 @@ static void wm_place(WorldModel *m, int32_t x, int32_t y, const Evidence *held, 
 static void wm_lift(WorldModel *m, int32_t x, int32_t y, const Evidence *under)
 {
 	for (int32_t j = m->held_count - 1; j >= 0; j--) {
-		int64_t k = wm_index(x + m->held_dx[j], y + m->held_dy[j]);
-		if (k >= 0 && !(m->held_dx[j] == 0 && m->held_dy[j] == 0))
-			m->grid[k] = under[j];
+		if (m->held_dx[j] == 0 && m->held_dy[j] == 0)
+			continue;
+		Evidence *e = wm_at(m, x + m->held_dx[j], y + m->held_dy[j]);
+		if (e)
+			*e = under[j];
 	}
 }
 
@@ -344,6 +382,7 @@ typedef struct WmSearch {
 	Vec2 from, to;  /* the commanded line: believed point before, predicted after */
 	int32_t bx, by; /* the best so far */
 	double best_key, best_score;
+	int32_t tried;  /* candidates scored */
 } WmSearch;
 
 static void wm_try(WmSearch *s, int32_t x, int32_t y)
@@ -354,6 +393,7 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	if (!(x == ux && y == uy) && e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f &&
 	    e.conf >= WM_BLOCKED_CONF)
 		return; /* Utak cannot stand inside what is surely an object */
+	s->tried++;
 	int32_t compared;
 	double score = s->held ? wm_score_holding(s->m, x, y, s->held, s->under, s->imp, &compared)
 	                       : wm_score(s->m, x, y, s->imp, &compared);
@@ -372,6 +412,44 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 		s->bx = x;
 		s->by = y;
 	}
+}
+
+/* wm_line_in_sight(m, from, to, len, &t0, &t1): the stretch [t0, t1] of the
+ * commanded line from `from` to `to` (t in squares from `from`, len its length)
+ * along which a candidate can see a square the model had seen; false if none.
+ *
+ * WHY: a candidate whose field of view holds no square seen before compares no
+ * cell, so wm_try rejects it (fewer than WORLDMODEL_MIN_COMPARED). Pushing, it
+ * compares only the held object, which rides beside it wherever it is: such a
+ * candidate scores as the prediction does (itself such a place whenever this
+ * clips anything, the line being straight and the window convex) and loses to it
+ * on distance. So the search is the same, and its cost follows what Utak can have
+ * seen, not the command: "move -1000000 -1000000" into the verge a few squares
+ * away tried 2.8 million positions, one projection through the eye each. (Where
+ * the field leaves the evidence's reach, WORLDMODEL_REACH squares from the start, fewer held
+ * squares are placed and the two may differ; the model is already clipped there.)
+ * ALGORITHM: Liang-Barsky clipping against the seen rectangle grown by
+ * WM_SIGHT_MARGIN. COMPLEXITY: O(1). */
+static bool wm_line_in_sight(const WorldModel *m, Vec2 from, Vec2 to, double len, double *t0, double *t1)
+{
+	*t0 = 0;
+	*t1 = len;
+	if (m->seen_count == 0)
+		return false;
+	double lo[2] = {m->seen_x0 - WM_SIGHT_MARGIN, m->seen_y0 - WM_SIGHT_MARGIN};
+	double hi[2] = {m->seen_x1 + 1 + WM_SIGHT_MARGIN, m->seen_y1 + 1 + WM_SIGHT_MARGIN};
+	double p[2] = {from.x, from.y}, d[2] = {(to.x - from.x) / len, (to.y - from.y) / len};
+	for (int a = 0; a < 2; a++) {
+		if (d[a] == 0) {
+			if (p[a] < lo[a] || p[a] > hi[a])
+				return false;
+			continue;
+		}
+		double ta = (lo[a] - p[a]) / d[a], tb = (hi[a] - p[a]) / d[a];
+		*t0 = fmax(*t0, fmin(ta, tb));
+		*t1 = fmin(*t1, fmax(ta, tb));
+	}
+	return *t0 <= *t1;
 }
 
 /* ---- the held object ------------------------------------------------------------ */
@@ -444,11 +522,11 @@ static void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
 {
 	int32_t fx = (int32_t)floor(from.x), fy = (int32_t)floor(from.y);
 	for (int32_t j = 0; j < m->held_count; j++) {
-		int64_t k = wm_index(fx + m->held_dx[j], fy + m->held_dy[j]);
-		saved[j] = k >= 0 ? m->grid[k] : (Evidence){1, 0, WORLDMODEL_RES_PERIPHERAL, 1};
-		if (k >= 0) {
-			m->grid[k].p = 0;
-			m->grid[k].conf = (float)(m->grid[k].conf * WORLDMODEL_CONF_CONTRADICTED);
+		Evidence *e = wm_at(m, fx + m->held_dx[j], fy + m->held_dy[j]);
+		saved[j] = e ? *e : (Evidence){1, 0, WORLDMODEL_RES_PERIPHERAL, 1};
+		if (e) {
+			e->p = 0;
+			e->conf = (float)(e->conf * WORLDMODEL_CONF_CONTRADICTED);
 		}
 	}
 }
@@ -469,268 +547,32 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 		Vec2 centre = vec2(fx + m->held_dx[j] + 0.5, fy + m->held_dy[j] + 0.5);
 		Vec2 moved = vec2_add(geom_rotate(centre, from, c, s), vec2_sub(to, from));
 		int32_t nx = (int32_t)floor(moved.x), ny = (int32_t)floor(moved.y);
-		int64_t k = wm_index(nx, ny);
-		if (k >= 0 && !(nx == tx && ny == ty))
-			m->grid[k] = saved[j];
+		Evidence *e = nx == tx && ny == ty ? NULL : wm_at(m, nx, ny);
+		if (e)
+			*e = saved[j];
 	}
 }
 
-/* ---- the tree ------------------------------------------------------------------- */
-
-/* The seen window, one square of margin round it, as a scratch belief map. */
-typedef struct WmMap {
-	int32_t x0, y0, w, h; /* lower-left square and size */
-	uint8_t *belief;      /* Belief, row-major */
-} WmMap;
-
-static uint8_t wm_map_at(const WmMap *map, int32_t x, int32_t y)
-{
-	x -= map->x0;
-	y -= map->y0;
-	if (x < 0 || y < 0 || x >= map->w || y >= map->h)
-		return BELIEF_UNKNOWN;
-	return map->belief[(int64_t)y * map->w + x];
-}
-
-static float wm_conf_at(const WorldModel *m, int32_t x, int32_t y)
-{
-	Evidence e = worldmodel_evidence(m, x, y);
-	return e.res == WORLDMODEL_UNSEEN ? 0.0f : e.conf;
-}
-
-static int32_t wm_new_node(WorldModel *m, NodeKind kind, const char *name, int32_t parent)
-{
-	m->node = util_grow(m->node, &m->node_cap, m->node_count + 1, sizeof *m->node);
-	int32_t id = m->node_count++;
-	ModelNode *n = &m->node[id];
-	memset(n, 0, sizeof *n);
-	n->kind = kind;
-	snprintf(n->name, sizeof n->name, "%s", name);
-	n->parent = parent;
-	n->first_son = n->next_sibling = -1;
-	n->first_ring = m->ring_count;
-	if (parent >= 0) {
-		int32_t *link = &m->node[parent].first_son;
-		while (*link >= 0)
-			link = &m->node[*link].next_sibling;
-		*link = id;
-	}
-	return id;
-}
-
-static void wm_push_vertex(WorldModel *m, ModelVertex v)
-{
-	m->vertex = util_grow(m->vertex, &m->vertex_cap, m->vertex_count + 1, sizeof *m->vertex);
-	m->vertex[m->vertex_count++] = v;
-}
-
-/* Directions of unit edges, counter-clockwise: a left turn is d + 1. */
-enum { WM_EAST, WM_NORTH, WM_WEST, WM_SOUTH };
-static const int8_t wm_step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-/* The squares left (inside) and right (outside) of a unit edge leaving vertex
- * (x, y) in direction d, as offsets from (x, y). */
-static const int8_t wm_inside[4][2] = {{0, 0}, {-1, 0}, {-1, -1}, {0, -1}};
-static const int8_t wm_outside[4][2] = {{0, -1}, {0, 0}, {-1, 0}, {-1, -1}};
-
-typedef struct WmEdge {
-	int32_t x, y; /* start vertex, $floor frame */
-	uint8_t dir, beyond;
-	float conf;
-} WmEdge;
-
-/* wm_trace(m, map, in, node): the boundary rings of the set of squares where
- * in[] (over map's window) is set, appended to node. */
-static void wm_trace(WorldModel *m, const WmMap *map, const uint8_t *in, int32_t node)
-{
-	int32_t vw = map->w + 1, vh = map->h + 1;
-	uint8_t *out =
-	    util_alloc((size_t)vw * (size_t)vh, 1); /* bit d: an edge leaves in direction d */
-	int32_t edge_total = 0;
-	for (int32_t y = 0; y < map->h; y++)
-		for (int32_t x = 0; x < map->w; x++) {
-			if (!in[(int64_t)y * map->w + x])
-				continue;
-			for (int d = 0; d < 4; d++) {
-				/* the neighbour across side d: the outside square of that edge */
-				static const int8_t across[4][2] = {
-				    {0, -1}, {1, 0}, {0, 1}, {-1, 0}};
-				static const int8_t start[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-				int32_t nx = x + across[d][0], ny = y + across[d][1];
-				bool inside = nx >= 0 && ny >= 0 && nx < map->w && ny < map->h &&
-				              in[(int64_t)ny * map->w + nx];
-				if (inside)
-					continue;
-				int32_t vx = x + start[d][0], vy = y + start[d][1];
-				out[(int64_t)vy * vw + vx] |= (uint8_t)(1u << d);
-				edge_total++;
-			}
-		}
-	WmEdge *edges = util_alloc((size_t)edge_total + 1, sizeof *edges);
-	for (int32_t v0 = 0; v0 < vw * vh; v0++)
-		for (int d0 = 0; d0 < 4; d0++) {
-			if (!(out[v0] & (1u << d0)))
-				continue;
-			int32_t n = 0, vx = v0 % vw, vy = v0 / vw, d = d0;
-			for (;;) {
-				out[(int64_t)vy * vw + vx] &= (uint8_t) ~(1u << d);
-				int32_t gx = vx + map->x0, gy = vy + map->y0; /* $floor frame */
-				int32_t ox = gx + wm_outside[d][0], oy = gy + wm_outside[d][1];
-				int32_t ix = gx + wm_inside[d][0], iy = gy + wm_inside[d][1];
-				edges[n++] =
-				    (WmEdge){gx, gy, (uint8_t)d, wm_map_at(map, ox, oy),
-				             (wm_conf_at(m, ix, iy) + wm_conf_at(m, ox, oy)) / 2};
-				vx += wm_step[d][0];
-				vy += wm_step[d][1];
-				uint8_t bits = out[(int64_t)vy * vw + vx];
-				if (vy * vw + vx == v0)
-					bits |= (uint8_t)(1u << d0);
-				int next = -1;
-				for (int t = 1; t >= -1 && next < 0;
-				     t--) { /* left, straight, right */
-					int cand = (d + t + 4) % 4;
-					if (bits & (1u << cand))
-						next = cand;
-				}
-				if (next < 0 || (vy * vw + vx == v0 && next == d0))
-					break;
-				d = next;
-			}
-			/* Corners: where the direction or what lies beyond changes. */
-			int32_t s0 = 0;
-			while (s0 < n && edges[s0].dir == edges[(s0 + n - 1) % n].dir &&
-			       edges[s0].beyond == edges[(s0 + n - 1) % n].beyond)
-				s0++;
-			if (s0 == n)
-				continue; /* cannot happen for a closed loop of unit edges */
-			m->ring =
-			    util_grow(m->ring, &m->ring_cap, m->ring_count + 1, sizeof *m->ring);
-			ModelRing *r = &m->ring[m->ring_count++];
-			r->first = m->vertex_count;
-			r->count = 0;
-			double area2 = 0;
-			for (int32_t j = 0; j < n; j++) {
-				const WmEdge *e = &edges[(s0 + j) % n];
-				area2 += (double)e->x * wm_step[e->dir][1] -
-				         (double)e->y * wm_step[e->dir][0];
-			}
-			for (int32_t j = 0; j < n;) {
-				const WmEdge *e = &edges[(s0 + j) % n];
-				int32_t len = 0;
-				double conf = 0;
-				while (j + len < n && edges[(s0 + j + len) % n].dir == e->dir &&
-				       edges[(s0 + j + len) % n].beyond == e->beyond) {
-					conf += edges[(s0 + j + len) % n].conf;
-					len++;
-				}
-				float corner =
-				    (wm_conf_at(m, e->x, e->y) + wm_conf_at(m, e->x - 1, e->y) +
-				     wm_conf_at(m, e->x, e->y - 1) +
-				     wm_conf_at(m, e->x - 1, e->y - 1)) /
-				    4;
-				wm_push_vertex(m, (ModelVertex){vec2(e->x, e->y), corner,
-				                                (float)(conf / len), e->beyond});
-				r->count++;
-				j += len;
-			}
-			r->hole = area2 < 0;
-			m->node[node].ring_count++;
-		}
-	free(edges);
-	free(out);
-}
-
-/* wm_finish_node(m, node, map, in): rectangle, squares and confidence of a node
- * whose set of squares is in[]. */
-static void wm_finish_node(WorldModel *m, int32_t node, const WmMap *map, const uint8_t *in)
-{
-	ModelNode *n = &m->node[node];
-	int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN, count = 0;
-	double conf = 0;
-	for (int32_t y = 0; y < map->h; y++)
-		for (int32_t x = 0; x < map->w; x++)
-			if (in[(int64_t)y * map->w + x]) {
-				int32_t gx = x + map->x0, gy = y + map->y0;
-				x0 = gx < x0 ? gx : x0;
-				y0 = gy < y0 ? gy : y0;
-				x1 = gx > x1 ? gx : x1;
-				y1 = gy > y1 ? gy : y1;
-				conf += wm_conf_at(m, gx, gy);
-				count++;
-			}
-	if (count == 0)
-		return;
-	n->rect = (Box){vec2(x0, y0), vec2(x1 + 1, y1 + 1)};
-	n->squares = count;
-	n->conf = (float)(conf / count);
-	n->relation = n->rect.lo;
-}
-
-/* What an object node was at the last derivation, to keep its number. */
-typedef struct WmPrevious {
-	int32_t ident;
-	Box rect; /* $floor frame; for a held object, relative to Utak's point */
-	bool held, used;
-} WmPrevious;
-
-static double wm_overlap(Box a, Box b)
-{
-	double w = fmin(a.hi.x, b.hi.x) - fmax(a.lo.x, b.lo.x),
-	       h = fmin(a.hi.y, b.hi.y) - fmax(a.lo.y, b.lo.y);
-	return w > 0 && h > 0 ? w * h : 0;
-}
-
-static Box wm_box_shift(Box b, Vec2 d)
-{
-	return (Box){vec2_add(b.lo, d), vec2_add(b.hi, d)};
-}
-
-/* wm_name_object(m, node, prev, nprev): gives the node the number of the previous
- * object whose rectangle overlaps its own most (a held object compared relative
- * to Utak, since it moved with him), or a new number. */
-static void wm_name_object(WorldModel *m, int32_t node, WmPrevious *prev, int32_t nprev,
-                           Vec2 prev_utak)
-{
-	ModelNode *n = &m->node[node];
-	int32_t best = -1;
-	double best_area = 0;
-	for (int32_t k = 0; k < nprev; k++) {
-		if (prev[k].used)
-			continue;
-		Box mine = n->rect, theirs = prev[k].rect;
-		if (prev[k].held && n->held) {
-			mine = wm_box_shift(mine, vec2_scale(m->utak, -1));
-			theirs = wm_box_shift(theirs, vec2_scale(prev_utak, -1));
-		}
-		double area = wm_overlap(mine, theirs);
-		if (area > best_area) {
-			best_area = area;
-			best = k;
-		}
-	}
-	if (best >= 0) {
-		prev[best].used = true;
-		n->ident = prev[best].ident;
-	} else {
-		n->ident = ++m->next_ident;
-	}
-	snprintf(n->name, sizeof n->name, "object%d", (int)n->ident);
-}
-
-/* wm_seen_window(m): counts the squares seen and their rectangle (WorldModel's
- * seen_ fields): one scan of the evidence window, made by wm_derive after every
- * change to the grid. */
+/* wm_seen_window(m): counts the squares seen and their rectangle (WorldModel's seen_
+ * fields): one scan of the tiles allocated, after every change to the evidence. */
 static void wm_seen_window(WorldModel *m)
 {
 	int32_t n = 0, x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
-	for (int32_t y = -WM_HALF; y < WM_HALF; y++)
-		for (int32_t x = -WM_HALF; x < WM_HALF; x++)
-			if (m->grid[wm_index(x, y)].res != WORLDMODEL_UNSEEN) {
-				x0 = x < x0 ? x : x0;
-				y0 = y < y0 ? y : y0;
-				x1 = x > x1 ? x : x1;
-				y1 = y > y1 ? y : y1;
-				n++;
-			}
+	for (int32_t t = 0; t < m->tile_count; t++) {
+		const Evidence *tile = m->tile[m->tile_list[t]];
+		int32_t tx = m->tile_list[t] % WORLDMODEL_TILES, ty = m->tile_list[t] / WORLDMODEL_TILES;
+		for (int32_t at = 0; at < WORLDMODEL_TILE * WORLDMODEL_TILE; at++) {
+			if (tile[at].res == WORLDMODEL_UNSEEN)
+				continue;
+			int32_t x = tx * WORLDMODEL_TILE - WORLDMODEL_REACH + at % WORLDMODEL_TILE;
+			int32_t y = ty * WORLDMODEL_TILE - WORLDMODEL_REACH + at / WORLDMODEL_TILE;
+			x0 = x < x0 ? x : x0;
+			y0 = y < y0 ? y : y0;
+			x1 = x > x1 ? x : x1;
+			y1 = y > y1 ? y : y1;
+			n++;
+		}
+	}
 	m->seen_count = n;
 	m->seen_x0 = x0;
 	m->seen_y0 = y0;
@@ -746,141 +588,27 @@ int32_t worldmodel_known_squares(const WorldModel *m)
 	return m->seen_count + (worldmodel_evidence(m, ux, uy).res == WORLDMODEL_UNSEEN);
 }
 
-/* wm_derive(m): the tree of paper 3.3 from the evidence grid. */
-static void wm_derive(WorldModel *m)
-{
-	int32_t nprev = 0;
-	WmPrevious *prev = util_alloc((size_t)m->node_count + 1, sizeof *prev);
-	Vec2 prev_utak = m->node_count > 0 ? m->node[0].relation : m->utak;
-	for (int32_t id = 0; id < m->node_count; id++)
-		if (m->node[id].kind == NODE_OBJECT)
-			prev[nprev++] = (WmPrevious){m->node[id].ident, m->node[id].rect,
-			                             m->node[id].held, false};
-	m->node_count = m->ring_count = m->vertex_count = 0;
-	int32_t org = wm_new_node(m, NODE_ORG, "$org", -1);
-	m->node[org].relation = m->utak;
-	int32_t floor_node = wm_new_node(m, NODE_FLOOR, "$floor", org);
-	m->node[floor_node].relation = vec2_scale(m->utak, -1);
-
-	int32_t ux, uy;
-	worldmodel_utak_square(m, &ux, &uy);
-	wm_seen_window(m);
-	int32_t x0 = ux, y0 = uy, x1 = ux, y1 = uy;
-	bool any = m->seen_count > 0;
-	if (any) {
-		x0 = m->seen_x0 < x0 ? m->seen_x0 : x0;
-		y0 = m->seen_y0 < y0 ? m->seen_y0 : y0;
-		x1 = m->seen_x1 > x1 ? m->seen_x1 : x1;
-		y1 = m->seen_y1 > y1 ? m->seen_y1 : y1;
-	}
-	if (!any) {
-		/* The default model: a square floor centred on Utak (paper 3.4.3). */
-		ModelNode *f = &m->node[floor_node];
-		double h = WORLDMODEL_DEFAULT_FLOOR / 2.0;
-		f->rect = (Box){vec2(ux + 0.5 - h, uy + 0.5 - h), vec2(ux + 0.5 + h, uy + 0.5 + h)};
-		f->relation = vec2_scale(m->utak, -1);
-		f->squares = WORLDMODEL_DEFAULT_FLOOR * WORLDMODEL_DEFAULT_FLOOR;
-		m->ring = util_grow(m->ring, &m->ring_cap, 1, sizeof *m->ring);
-		m->ring[0] = (ModelRing){0, 4, false};
-		Vec2 corner[4] = {f->rect.lo, vec2(f->rect.hi.x, f->rect.lo.y), f->rect.hi,
-		                  vec2(f->rect.lo.x, f->rect.hi.y)};
-		for (int k = 0; k < 4; k++)
-			wm_push_vertex(m, (ModelVertex){corner[k], 0, 0, BELIEF_UNKNOWN});
-		m->ring_count = 1;
-		f->ring_count = 1;
-		free(prev);
-		return;
-	}
-	WmMap map = {x0 - 1, y0 - 1, x1 - x0 + 3, y1 - y0 + 3, NULL};
-	size_t area = (size_t)map.w * (size_t)map.h;
-	map.belief = util_alloc(area, 1);
-	for (int32_t y = 0; y < map.h; y++)
-		for (int32_t x = 0; x < map.w; x++)
-			map.belief[(int64_t)y * map.w + x] =
-			    (uint8_t)worldmodel_belief(m, x + map.x0, y + map.y0);
-	uint8_t *in = util_alloc(area, 1);
-	for (size_t k = 0; k < area; k++)
-		in[k] = map.belief[k] == BELIEF_FLOOR;
-	wm_trace(m, &map, in, floor_node);
-	wm_finish_node(m, floor_node, &map, in);
-	m->node[floor_node].relation = vec2_scale(m->utak, -1); /* $floor's origin seen from Utak */
-
-	/* Objects: 4-connected occupied sets, every neighbour floor. */
-	int32_t *label = util_alloc(area, sizeof *label);
-	int32_t *stack = util_alloc(area, sizeof *stack);
-	int32_t labels = 0, uncertain = 0;
-	for (int32_t row = map.h - 1; row >= 0; row--) /* north first: the order of the map */
-		for (int32_t col = 0; col < map.w; col++) {
-			int64_t k0 = (int64_t)row * map.w + col;
-			if (map.belief[k0] != BELIEF_OCCUPIED || label[k0])
-				continue;
-			int32_t id = ++labels, top = 0;
-			bool isolated = true, held = false;
-			label[k0] = id;
-			stack[top++] = (int32_t)k0;
-			memset(in, 0, area);
-			while (top > 0) {
-				int32_t k = stack[--top];
-				int32_t x = k % map.w, y = k / map.w;
-				in[k] = 1;
-				for (int32_t j = 0; j < m->held_count && m->holding; j++)
-					held |= x + map.x0 == ux + m->held_dx[j] &&
-					        y + map.y0 == uy + m->held_dy[j];
-				for (int d = 0; d < 4; d++) {
-					int32_t nx = x + wm_step[d][0], ny = y + wm_step[d][1];
-					uint8_t b = wm_map_at(&map, nx + map.x0, ny + map.y0);
-					if (b == BELIEF_UNKNOWN)
-						isolated = false;
-					if (b != BELIEF_OCCUPIED)
-						continue;
-					int64_t kn = (int64_t)ny * map.w + nx;
-					if (!label[kn]) {
-						label[kn] = id;
-						stack[top++] = (int32_t)kn;
-					}
-				}
-			}
-			if (!isolated) {
-				/* Verge, or an object partly out of sight: recorded as uncertain.
-				 */
-				char name[24];
-				snprintf(name, sizeof name, "uncertain%d", (int)++uncertain);
-				int32_t node = wm_new_node(m, NODE_UNCERTAIN, name, floor_node);
-				wm_finish_node(m, node, &map, in);
-				continue;
-			}
-			int32_t node =
-			    wm_new_node(m, NODE_OBJECT, "object", held ? org : floor_node);
-			wm_trace(m, &map, in, node);
-			wm_finish_node(m, node, &map, in);
-			m->node[node].held = held;
-			wm_name_object(m, node, prev, nprev, prev_utak);
-			if (held) /* relation to $org: offset from Utak's point */
-				m->node[node].relation = vec2_sub(m->node[node].rect.lo, m->utak);
-		}
-	free(stack);
-	free(label);
-	free(in);
-	free(map.belief);
-	free(prev);
-}
-
 /* ---- accommodation ---------------------------------------------------------------- */
 
 void worldmodel_init(WorldModel *m)
 {
 	memset(m, 0, sizeof *m);
-	m->grid = util_alloc((size_t)WORLDMODEL_SIDE * WORLDMODEL_SIDE, sizeof *m->grid);
+	m->tile = util_alloc((size_t)WORLDMODEL_TILES * WORLDMODEL_TILES, sizeof *m->tile);
 	m->utak = vec2(0.5, 0.5);
 	m->report.predicted = m->report.believed = m->utak;
 	m->report.mismatch = m->report.best_mismatch = -1;
-	wm_derive(m);
+	wm_seen_window(m);
+	modeltree_derive(m);
 }
 
 void worldmodel_free(WorldModel *m)
 {
-	free(m->grid);
+	for (int32_t t = 0; t < m->tile_count; t++)
+		free(m->tile[m->tile_list[t]]);
+	free(m->tile);
+	free(m->tile_list);
 	free(m->node);
+	free(m->node_at);
 	free(m->ring);
 	free(m->vertex);
 	memset(m, 0, sizeof *m);
@@ -896,7 +624,8 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp)
 	wm_observe(m, ux, uy, imp);
 	m->last = *imp;
 	m->impressions = 1;
-	wm_derive(m);
+	wm_seen_window(m);
+	modeltree_derive(m);
 }
 
 void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impression *imp)
@@ -943,15 +672,19 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	                     : wm_score(m, px, py, imp, &rep->compared);
 
 	/* Disparity: the positions near the prediction and along the commanded line. */
-	WmSearch s = {m, imp, held, under, px, py, from, to, px, py, INFINITY, rep->mismatch};
+	WmSearch s = {m, imp, held, under, px, py, from, to, px, py, INFINITY, rep->mismatch, 0};
 	if (rep->compared >= WORLDMODEL_MIN_COMPARED)
 		s.best_key = rep->mismatch;
 	int32_t r = WORLDMODEL_DISPARITY_RADIUS;
 	for (int32_t dy = r; dy >= -r; dy--)
 		for (int32_t dx = -r; dx <= r; dx++)
 			wm_try(&s, px + dx, py + dy);
-	double len = hypot(to.x - from.x, to.y - from.y);
-	for (double t = 0; t < len; t += WM_PATH_STEP) {
+	/* Only the stretch of the line within sight of the seen squares; its t are
+	 * the multiples of WM_PATH_STEP they always were (exact in binary). */
+	double len = hypot(to.x - from.x, to.y - from.y), t0, t1;
+	bool in_sight = len > 0 && wm_line_in_sight(m, from, to, len, &t0, &t1);
+	for (double t = in_sight ? WM_PATH_STEP * ceil(t0 / WM_PATH_STEP) : len; t < len && t <= t1;
+	     t += WM_PATH_STEP) {
 		Vec2 q = vec2_add(from, vec2_scale(vec2_sub(to, from), t / len));
 		int32_t qx = (int32_t)floor(q.x), qy = (int32_t)floor(q.y);
 		for (int32_t dy = 1; dy >= -1; dy--)
@@ -959,6 +692,7 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 				wm_try(&s, qx + dx, qy + dy);
 	}
 	rep->best_mismatch = s.best_score;
+	rep->candidates = s.tried;
 	if ((s.bx != px || s.by != py) &&
 	    (rep->compared < WORLDMODEL_MIN_COMPARED ||
 	     s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch)) {
@@ -980,44 +714,12 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		wm_prune_held(m);
 	m->last = *imp;
 	m->impressions++;
-	wm_derive(m);
+	wm_seen_window(m);
+	modeltree_derive(m);
 }
 
 /* ---- dump and validation --------------------------------------------------------- */
 
-static const char *wm_belief_name(int b)
-{
-	return b == BELIEF_OCCUPIED ? "occupied" : b == BELIEF_FLOOR ? "floor" : "unknown";
-}
-
-static void wm_dump_node(const WorldModel *m, int32_t id, int depth, FILE *f)
-{
-	const ModelNode *n = &m->node[id];
-	fprintf(f, "%*snode %d %s", 2 * depth, "", (int)id, n->name);
-	if (n->kind == NODE_ORG) {
-		fprintf(f, " at (%.2f, %.2f)\n", n->relation.x, n->relation.y);
-	} else {
-		fprintf(f,
-		        "%s relation (%.2f, %.2f) rect (%.2f, %.2f)-(%.2f, %.2f) squares %d conf "
-		        "%.2f\n",
-		        n->held ? " held" : "", n->relation.x, n->relation.y, n->rect.lo.x,
-		        n->rect.lo.y, n->rect.hi.x, n->rect.hi.y, (int)n->squares, n->conf);
-		for (int32_t k = 0; k < n->ring_count; k++) {
-			const ModelRing *r = &m->ring[n->first_ring + k];
-			fprintf(f, "%*s%s %d vertices:\n", 2 * depth + 2, "",
-			        r->hole ? "hole" : "boundary", (int)r->count);
-			for (int32_t j = 0; j < r->count; j++) {
-				const ModelVertex *v = &m->vertex[r->first + j];
-				fprintf(f,
-				        "%*s(%.2f, %.2f) conf %.2f, segment conf %.2f beyond %s\n",
-				        2 * depth + 4, "", v->p.x, v->p.y, v->conf, v->seg_conf,
-				        wm_belief_name(v->beyond));
-			}
-		}
-	}
-	for (int32_t s = n->first_son; s >= 0; s = m->node[s].next_sibling)
-		wm_dump_node(m, s, depth + 1, f);
-}
 
 void worldmodel_dump(const WorldModel *m, FILE *f)
 {
@@ -1028,7 +730,7 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 	fprintf(f, "impressions %d; Utak believed at (%.2f, %.2f)", (int)m->impressions, m->utak.x,
 	        m->utak.y);
 	fprintf(f, "%s%s\n", m->holding ? ", holding an object" : "",
-	        m->clipped ? "; WARNING: impressions reached past the evidence window and were cut"
+	        m->clipped ? "; WARNING: impressions reached past the model's reach and were cut"
 	                   : "");
 	if (m->impressions > 1)
 		fprintf(f,
@@ -1039,7 +741,7 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 		        a->corrected ? "disparity: corrected to" : "kept", a->believed.x,
 		        a->believed.y, a->best_mismatch, (int)a->new_squares,
 		        (int)a->finer_squares);
-	wm_dump_node(m, 0, 0, f);
+	modeltree_dump(m, 0, 0, f);
 	/* The belief map of the seen window. */
 	int32_t ux, uy, x0 = m->seen_x0, y0 = m->seen_y0, x1 = m->seen_x1, y1 = m->seen_y1;
 	worldmodel_utak_square(m, &ux, &uy);
@@ -1067,47 +769,7 @@ void worldmodel_dump(const WorldModel *m, FILE *f)
 
 bool worldmodel_validate(const WorldModel *m, char *why, size_t size)
 {
-	if (m->node_count < 2 || m->node[0].kind != NODE_ORG || m->node[0].parent != -1 ||
-	    m->node[1].kind != NODE_FLOOR || m->node[1].parent != 0) {
-		snprintf(why, size, "the tree does not start $org -> $floor");
-		return false;
-	}
-	for (int32_t id = 0; id < m->node_count; id++) {
-		const ModelNode *n = &m->node[id];
-		for (int32_t s = n->first_son; s >= 0; s = m->node[s].next_sibling)
-			if (m->node[s].parent != id) {
-				snprintf(why, size, "node %d lists son %d whose parent is %d",
-				         (int)id, (int)s, (int)m->node[s].parent);
-				return false;
-			}
-		if (id > 0 && n->parent < 0) {
-			snprintf(why, size, "node %d has no parent", (int)id);
-			return false;
-		}
-		for (int32_t k = 0; k < n->ring_count; k++) {
-			const ModelRing *r = &m->ring[n->first_ring + k];
-			if (r->count < 4) {
-				snprintf(why, size, "node %d ring %d has %d vertices", (int)id,
-				         (int)k, (int)r->count);
-				return false;
-			}
-			for (int32_t j = 0; j < r->count; j++) {
-				Vec2 a = m->vertex[r->first + j].p,
-				     b = m->vertex[r->first + (j + 1) % r->count].p;
-				bool axis = (a.x == b.x) != (a.y == b.y);
-				bool inside = a.x >= n->rect.lo.x && a.x <= n->rect.hi.x &&
-				              a.y >= n->rect.lo.y && a.y <= n->rect.hi.y;
-				if (!axis || !inside) {
-					snprintf(why, size, "node %d ring %d vertex %d: %s",
-					         (int)id, (int)k, (int)j,
-					         axis ? "outside the rectangle"
-					              : "segment not axis-aligned");
-					return false;
-				}
-			}
-		}
-	}
-	return true;
+	return modeltree_validate(m, why, size);
 }
 
 bool worldmodel_ring_outlines_object(const WorldModel *m, int32_t r)

@@ -10,11 +10,18 @@
  * the "$floor frame", unless said otherwise.
  *
  * TWO LAYERS.
- * 1. The evidence grid: for every square of a WORLDMODEL_SIDE x WORLDMODEL_SIDE
- *    window centred on the origin, what the eye has said about it: an estimate p
- *    that it is occupied, the finest resolution it was seen at (fovea >
- *    intermediate > periphery; 0 = never seen, i.e. unknown), and a confidence.
- *    This is what every impression updates.
+ * 1. The evidence grid: for every square within WORLDMODEL_REACH of the origin on
+ *    both axes, what the eye has said about it: an estimate p that it is
+ *    occupied, the finest resolution it was seen at (fovea > intermediate >
+ *    periphery; 0 = never seen, i.e. unknown), and a confidence. This is what
+ *    every impression updates. It is stored in tiles of WORLDMODEL_TILE x
+ *    WORLDMODEL_TILE squares, each allocated when a square of it is first seen,
+ *    so that the model grows with what Utak has seen, up to the largest TABLE
+ *    utak(5) allows, whatever square he starts on and whichever way he faces.
+ *    MEMORY: sizeof(Evidence) = 12 bytes a square, in tiles of 48 KiB, for the
+ *    tiles holding a square seen; and a directory of one pointer per tile of the
+ *    whole reach, 512 KiB. A TABLE of 8192 x 4096 seen whole: about 400 MiB; a
+ *    room of 100 x 100: a few tiles, well under 1 MiB.
  * 2. The tree of paper 3.3, derived from the grid after every impression: $org
  *    (Utak) -> $floor (the floorspace) -> one node per isolated object, and one
  *    NODE_UNCERTAIN per occupied set the rules cannot yet read. A node has
@@ -65,8 +72,13 @@
 #include "utak/impression.h"
 
 enum {
-	WORLDMODEL_SIDE = 512,           /* evidence window: squares -256..255 on both axes;
-	                                    larger than any room Utak is given, and 3 MB */
+	/* How far the model reaches from Utak's first square, on each axis: the largest
+	 * TABLE side utak(5) allows, so that no square of any TABLE lies beyond it,
+	 * whichever square Utak starts on. Squares -REACH..REACH-1. */
+	WORLDMODEL_REACH = 8192,
+	WORLDMODEL_SIDE = 2 * WORLDMODEL_REACH, /* squares along each axis of the reach */
+	WORLDMODEL_TILE = 64,                   /* a tile of evidence: 64 x 64 squares */
+	WORLDMODEL_TILES = WORLDMODEL_SIDE / WORLDMODEL_TILE, /* tiles along each axis */
 	WORLDMODEL_DEFAULT_FLOOR = 32,   /* the default $floor: a square of the eye's field */
 	WORLDMODEL_DISPARITY_RADIUS = 3, /* positions tried around the predicted one */
 	WORLDMODEL_MIN_COMPARED = 24,    /* cells a position must be judged on to count */
@@ -149,17 +161,22 @@ typedef struct Accommodation {
 	bool corrected;        /* the disparity search moved the belief */
 	int32_t new_squares;   /* squares seen for the first time */
 	int32_t finer_squares; /* squares seen at a finer resolution than before */
+	int32_t candidates;    /* positions the disparity search scored (its cost) */
 } Accommodation;
 
 typedef struct WorldModel {
-	Evidence *grid;      /* WORLDMODEL_SIDE^2, row-major, square (x, y) at
-	                        (y + SIDE/2) * SIDE + (x + SIDE/2) */
+	/* WORLDMODEL_TILES^2 tiles, row-major, NULL where nothing has been seen; tile
+	 * (tx, ty) holds squares x = tx * TILE - REACH + i, y = ty * TILE - REACH + j
+	 * at [j * TILE + i]. */
+	Evidence **tile;
+	int32_t *tile_list; /* the tiles allocated, in the order they were */
+	int32_t tile_count, tile_cap;
 	Vec2 utak;           /* believed position of Utak's point, $floor frame */
 	int32_t impressions; /* impressions accommodated */
 	Impression last;     /* the last impression (its touch names a held object) */
 	Accommodation report;
 	int32_t next_ident; /* the last object number given */
-	bool clipped;       /* some impression reached past the evidence window */
+	bool clipped;       /* some impression reached past WORLDMODEL_REACH */
 	/* The held object: its squares as offsets from Utak's square. */
 	bool holding;
 	int32_t held_count;
@@ -171,6 +188,11 @@ typedef struct WorldModel {
 	int32_t ring_count, ring_cap;
 	ModelVertex *vertex;
 	int32_t vertex_count, vertex_cap;
+	/* Which node holds each occupied square of the derivation's window (x0, y0,
+	 * w, h; row-major, -1 none): an object's own squares, which its rectangle
+	 * alone cannot tell from a neighbour's. */
+	int32_t *node_at;
+	int32_t node_at_x0, node_at_y0, node_at_w, node_at_h;
 	/* The squares ever seen: how many, and their containing rectangle (x0..x1,
 	 * y0..y1, inclusive; meaningless when seen_count is 0). Kept by every change
 	 * to the grid, so that no reader has to scan the whole evidence window. */
@@ -219,8 +241,13 @@ Belief worldmodel_belief(const WorldModel *m, int32_t x, int32_t y);
 /* worldmodel_known_squares(m): the squares whose belief is not unknown (those seen,
  * and Utak's own). */
 int32_t worldmodel_known_squares(const WorldModel *m);
-/* worldmodel_evidence(m, x, y): the square's evidence (all zero outside the window). */
+/* worldmodel_evidence(m, x, y): the square's evidence (all zero where never seen,
+ * and beyond the reach). */
 Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y);
+
+/* worldmodel_node_at(m, x, y): the node (index into m->node) whose squares hold
+ * square (x, y): an object or an uncertain set; -1 for floor, unknown, or Utak. */
+int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y);
 
 /* worldmodel_utak_square(m, &x, &y): the square holding Utak's believed point. */
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y);

@@ -1,0 +1,87 @@
+/* goals.h - the goals of the tasks: corners, rooms, frontiers, the task's object (paper
+ * 2.3, 3.1 step 7). CONTROLLER SIDE: the action cycle (controller.c) and pushing
+ * (push.c) call these; all work on the world model and the screen of the cycle.
+ * Coordinates are in the world model's $floor frame unless named screen. */
+#ifndef UTAK_GOALS_H
+#define UTAK_GOALS_H
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "utak/mind/controller.h"
+#include "utak/mind/rooms.h"
+#include "utak/plan/pathgraph.h"
+#include "utak/plan/skeleton.h"
+
+/* goals_centre(x, y): the centre of model square (x, y). */
+static inline Vec2 goals_centre(int32_t x, int32_t y) { return vec2(x + 0.5, y + 0.5); }
+/* goals_distance(a, b): Euclidean, squares. */
+static inline double goals_distance(Vec2 a, Vec2 b) { return hypot(a.x - b.x, a.y - b.y); }
+/* goals_cell_of(s, p, &i, &j): the screen cell of model point p; false when off it. */
+static inline bool goals_cell_of(const Screen *s, Vec2 p, int32_t *i, int32_t *j)
+{
+	*i = (int32_t)floor(p.x) - s->x0;
+	*j = (int32_t)floor(p.y) - s->y0;
+	return *i >= 0 && *j >= 0 && *i < s->w && *j < s->h;
+}
+
+/* The touch squares in Utak's frame, in the order of Impression.touch. */
+static const int8_t goals_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0},  {1, -1},
+							  {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}};
+
+/* goals_reach(g, si, sj, dist): breadth-first steps over g's free cells,
+ * 4-connected, from (si, sj); -1 where unreached. dist has g->w * g->h entries. */
+void goals_reach(const Grid *g, int32_t si, int32_t sj, int32_t *dist);
+
+/* The rooms of the fixed space Utak has seen (objects count as space). The
+ * pathgraph borrows the grid and the skeleton. */
+typedef struct RoomMap {
+	Grid known;
+	Skeleton skeleton;
+	Pathgraph pathgraph;
+	Rooms rooms;
+} RoomMap;
+void goals_roommap_build(RoomMap *r, const Screen *s);
+void goals_roommap_free(RoomMap *r);
+
+/* goals_corner_score(k, x, y): how far square (x, y) lies toward corner k. */
+int64_t goals_corner_score(Corner k, int32_t x, int32_t y);
+/* goals_room_corner_best(c, rm, room): the best corner score of floor seen in room. */
+int64_t goals_room_corner_best(const Controller *c, const RoomMap *rm, int32_t room);
+/* goals_corner(c, g, dist, rm, room, goal): the reachable cell of room extreme
+ * toward the task's corner. */
+bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t room,
+		  Vec2 *goal);
+/* goals_corner_shortfall(c): how far short of the corner the task's subject is,
+ * by the model (INT64_MAX when the starting room cannot be placed). */
+int64_t goals_corner_shortfall(Controller *c);
+/* goals_corner_failed(c, short_by): fails the task, saying how far short. */
+void goals_corner_failed(Controller *c, int64_t short_by);
+/* goals_beside(c, k, dist, goal): the reachable free cell beside node k nearest Utak. */
+bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
+/* goals_worth_looking(c, p): from point p there is still something to see: an
+ * unknown square, or a square of an object not yet confirmed, within GOALS_LOOK
+ * squares of it (and p is not believed occupied). */
+#define GOALS_LOOK 2
+/* Looking for the task's object, an object seen only coarsely is looked at before
+ * the unseen unless the unseen is this many times nearer. */
+#define GOALS_COARSE_FIRST 3.0
+bool goals_worth_looking(Controller *c, Vec2 p);
+/* goals_near(c, p, dist, goal): the reachable free cell nearest point p. */
+bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal);
+/* goals_next_room(c, g, dist, rm, from_room, goal): a reachable cell near the centre
+ * of a room next to from_room. */
+bool goals_next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
+		     int32_t from_room, Vec2 *goal);
+
+typedef struct GoalResult {
+	bool found;
+	bool exploring;
+	Vec2 goal;     /* model frame */
+	char why[160]; /* when not found */
+} GoalResult;
+/* goals_choose(c, out): the goal of the current phase on c's screen and space. */
+void goals_choose(Controller *c, GoalResult *out);
+
+#endif

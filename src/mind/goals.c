@@ -1,0 +1,425 @@
+/* goals.c - the goals of the tasks (paper 2.3, 3.1 step 7): corners, rooms, frontiers
+ * of the unseen, the task's object. CONTROLLER SIDE.
+ *
+ * A corner is the reachable space of Utak's starting room extreme in that compass
+ * direction (his frame: north is +y), judged as the judge judges it (judge.h) on
+ * the world model. The next room is reached through a door of the room
+ * segmentation (rooms.c): the goal is the other room's centre. An object is named
+ * by its shape (shape.c), the nearest of that shape if several; going to it means
+ * standing beside it (it shows in touch). When the goal is not yet seen, Utak
+ * explores: the nearest frontier of the unseen, or the nearest object seen only
+ * coarsely. All coordinates are in the world model's $floor frame unless named
+ * screen. */
+#include "utak/mind/goals.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/util.h"
+#include "utak/mind/objects.h"
+#include "utak/mind/push.h"
+#include "utak/mind/round.h"
+#include "utak/mind/shape.h"
+
+/* goals_reach(g, si, sj, dist): breadth-first steps over g's free cells, 4-connected
+ * (the free space's topology, skeleton.h), from (si, sj); -1 where unreached. */
+void goals_reach(const Grid *g, int32_t si, int32_t sj, int32_t *dist)
+{
+	int64_t n = (int64_t)g->w * g->h;
+	for (int64_t k = 0; k < n; k++)
+		dist[k] = -1;
+	if (!grid_free_at(g, si, sj))
+		return;
+	int32_t *queue = util_alloc((size_t)n, sizeof *queue);
+	int64_t head = 0, tail = 0;
+	queue[tail++] = sj * g->w + si;
+	dist[sj * g->w + si] = 0;
+	while (head < tail) {
+		int32_t k = queue[head++], x = k % g->w, y = k / g->w;
+		static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+		for (int d = 0; d < 4; d++) {
+			int32_t nx = x + step[d][0], ny = y + step[d][1];
+			if (grid_free_at(g, nx, ny) && dist[ny * g->w + nx] < 0) {
+				dist[ny * g->w + nx] = dist[k] + 1;
+				queue[tail++] = ny * g->w + nx;
+			}
+		}
+	}
+	free(queue);
+}
+
+void goals_roommap_build(RoomMap *r, const Screen *s)
+{
+	grid_init(&r->known, s->w, s->h, GRID_BLOCKED);
+	for (int32_t k = 0; k < s->w * s->h; k++)
+		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE)
+			r->known.cells[k] = GRID_FREE;
+	skeleton_init(&r->skeleton);
+	pathgraph_init(&r->pathgraph);
+	rooms_init(&r->rooms);
+	skeleton_compute(&r->skeleton, &r->known);
+	pathgraph_build(&r->pathgraph, &r->skeleton, &r->known);
+	rooms_find(&r->rooms, &r->pathgraph);
+}
+
+void goals_roommap_free(RoomMap *r)
+{
+	rooms_free(&r->rooms);
+	pathgraph_free(&r->pathgraph);
+	skeleton_free(&r->skeleton);
+	grid_free(&r->known);
+}
+
+/* ---- corners ---------------------------------------------------------------------- */
+
+/* corner_score: how far a cell lies in the task's compass direction (his frame). */
+int64_t goals_corner_score(Corner k, int32_t x, int32_t y)
+{
+	int sx, sy;
+	task_corner_signs(k, &sx, &sy);
+	return (int64_t)sx * x + (int64_t)sy * y;
+}
+
+/* goals_room_corner_best(c, rm, room): the best corner score of any floor seen in the
+ * room (INT64_MIN when none): the corner a subject is measured against, as the
+ * judge measures it (judge.h). */
+int64_t goals_room_corner_best(const Controller *c, const RoomMap *rm, int32_t room)
+{
+	const Screen *s = &c->screen;
+	int64_t best = INT64_MIN;
+	for (int32_t at = 0; at < s->w * s->h; at++)
+		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm->rooms, at % s->w, at / s->w) == room) {
+			int64_t v = goals_corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
+			best = v > best ? v : best;
+		}
+	return best;
+}
+
+/* goals_corner(c, g, dist, room): the reachable cell of `room` extreme toward the
+ * task's corner (any room when room < 0). */
+bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
+			int32_t room, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int64_t best_score = INT64_MIN;
+	int32_t best = -1;
+	for (int32_t j = 0; j < g->h; j++)
+		for (int32_t i = 0; i < g->w; i++) {
+			int32_t k = j * g->w + i;
+			if (dist[k] < 0 || (room >= 0 && rooms_at(&rm->rooms, i, j) != room))
+				continue;
+			/* Only space seen to be floor: the unknown beyond a verge glimpsed in the
+			 * periphery would draw Utak off after corners that are not there. */
+			if (s->label[k] == SCREEN_UNKNOWN)
+				continue;
+			int64_t score = goals_corner_score(c->task.corner, s->x0 + i, s->y0 + j);
+			if (score > best_score) {
+				best_score = score;
+				best = k;
+			}
+		}
+	if (best < 0)
+		return false;
+	*goal = goals_centre(s->x0 + best % g->w, s->y0 + best / g->w);
+	return true;
+}
+
+/* goals_corner_shortfall(c): how far short of the corner of the starting room the task's
+ * subject is, by what Utak has seen: Utak himself for "go", the held object for
+ * "push". The same measure as the judge's (judge.h), taken on the world model:
+ * the best score of any floor seen in the room, less the subject's best. */
+int64_t goals_corner_shortfall(Controller *c)
+{
+	/* The screen of this cycle's impression: when going round in circles is
+	 * noticed, step 12 has not yet built it. */
+	Vec2 extra[2] = {c->start, c->goal};
+	screen_build(&c->screen, &c->model, extra, 2);
+	const Screen *s = &c->screen;
+	RoomMap rm;
+	goals_roommap_build(&rm, s);
+	int32_t si, sj;
+	goals_cell_of(s, c->start, &si, &sj);
+	int32_t start_room = rooms_at(&rm.rooms, si, sj);
+	int64_t best = goals_room_corner_best(c, &rm, start_room), got = INT64_MIN;
+	goals_roommap_free(&rm);
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	/* Pushing, the object's squares; else, or when none are left in the held set
+	 * (the eye saw them all as floor after a push), Utak's own, beside it. */
+	int32_t n = c->task.kind == TASK_PUSH_CORNER && c->model.holding ? c->model.held_count : 0;
+	if (n == 0)
+		got = goals_corner_score(c->task.corner, ux, uy);
+	for (int32_t k = 0; k < n; k++) {
+		int64_t v = goals_corner_score(c->task.corner, ux + c->model.held_dx[k], uy + c->model.held_dy[k]);
+		got = v > got ? v : got;
+	}
+	return best == INT64_MIN ? INT64_MAX : best - got; /* INT64_MAX: no floor seen in the room */
+}
+
+/* goals_corner_failed(c, short_by): the goal reached, and the corner still short_by
+ * (corner_shortfall) away. */
+void goals_corner_failed(Controller *c, int64_t short_by)
+{
+	c->phase = PHASE_FAILED;
+	if (short_by == INT64_MAX)
+		snprintf(c->why, sizeof c->why, "Utak can no longer place the room he started in");
+	else if (c->task.kind == TASK_GO_CORNER)
+		snprintf(c->why, sizeof c->why, "Utak can get no nearer the %s than %lld short",
+			 task_corner_name(c->task.corner), (long long)short_by);
+	else
+		snprintf(c->why, sizeof c->why, "the %s can be pushed no nearer the %s than %lld short",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), (long long)short_by);
+}
+
+/* ---- the other goals ------------------------------------------------------------ */
+
+/* goals_frontier(c, g, dist): the nearest reachable known-floor cell beside an unknown one. */
+static bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t best = -1, best_d = INT32_MAX;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t k = j * s->w + i;
+			if (dist[k] <= 0 || s->label[k] != SCREEN_SPACE || dist[k] >= best_d)
+				continue;
+			Vec2 here = goals_centre(s->x0 + i, s->y0 + j);
+			bool visited = false;
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = goals_distance(here, c->visited[v]) < 1.0;
+			if (visited)
+				continue;
+			if (screen_label(s, i + 1, j) == SCREEN_UNKNOWN || screen_label(s, i - 1, j) == SCREEN_UNKNOWN ||
+			    screen_label(s, i, j + 1) == SCREEN_UNKNOWN || screen_label(s, i, j - 1) == SCREEN_UNKNOWN) {
+				best = k;
+				best_d = dist[k];
+			}
+		}
+	if (best < 0)
+		return false;
+	*goal = goals_centre(s->x0 + best % s->w, s->y0 + best / s->w);
+	return true;
+}
+
+/* goals_beside(c, k, dist): the reachable free cell beside object node k (one of the
+ * 8 around one of its squares: where touch reaches it) nearest Utak by steps. */
+bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t best = -1, best_d = INT32_MAX;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t at = j * s->w + i;
+			if (dist[at] < 0 || dist[at] >= best_d)
+				continue;
+			bool beside = false, visited = false;
+			Vec2 here = goals_centre(s->x0 + i, s->y0 + j);
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = goals_distance(here, c->visited[v]) < 0.5;
+			if (visited)
+				continue;
+			for (int dy = -1; dy <= 1 && !beside; dy++)
+				for (int dx = -1; dx <= 1 && !beside; dx++)
+					beside = screen_label(s, i + dx, j + dy) == k;
+			if (beside) {
+				best = at;
+				best_d = dist[at];
+			}
+		}
+	if (best < 0)
+		return false;
+	*goal = goals_centre(s->x0 + best % s->w, s->y0 + best / s->w);
+	return true;
+}
+
+/* goals_near(c, p, dist, goal): the reachable free cell nearest point p (ties to
+ * the nearer Utak by steps), not a goal already reached. */
+bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	double best = INFINITY;
+	for (int32_t at = 0; at < s->w * s->h; at++) {
+		if (dist[at] < 0)
+			continue;
+		Vec2 here = goals_centre(s->x0 + at % s->w, s->y0 + at / s->w);
+		bool visited = false;
+		for (int v = 0; v < c->visited_count && !visited; v++)
+			visited = goals_distance(here, c->visited[v]) < 0.5;
+		double d = goals_distance(here, p) + 1e-3 * dist[at];
+		if (!visited && d < best) {
+			best = d;
+			*goal = here;
+		}
+	}
+	return best < INFINITY;
+}
+
+bool goals_worth_looking(Controller *c, Vec2 p)
+{
+	const WorldModel *m = &c->model;
+	int32_t x = (int32_t)floor(p.x), y = (int32_t)floor(p.y);
+	if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED)
+		return false;
+	for (int32_t dy = -GOALS_LOOK; dy <= GOALS_LOOK; dy++)
+		for (int32_t dx = -GOALS_LOOK; dx <= GOALS_LOOK; dx++) {
+			if (worldmodel_belief(m, x + dx, y + dy) == BELIEF_UNKNOWN)
+				return true;
+			int32_t k = worldmodel_node_at(m, x + dx, y + dy);
+			if (k >= 0 && m->node[k].kind == NODE_OBJECT && !objects_read(c, k).confirmed)
+				return true;
+		}
+	return false;
+}
+
+/* goals_inspect(c, dist): beside the nearest object not yet seen whole in the fovea,
+ * where a closer look may show its shape: part of looking for an object. */
+static bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const WorldModel *m = &c->model;
+	double best_d = INFINITY;
+	bool found = false;
+	for (int32_t k = 0; k < m->node_count; k++) {
+		const ModelNode *n = &m->node[k];
+		if (n->kind != NODE_OBJECT)
+			continue;
+		Vec2 beside;
+		if (objects_read(c, k).confirmed || !goals_beside(c, k, dist, &beside))
+			continue;
+		double d = goals_distance(beside, m->utak);
+		if (d < best_d) {
+			best_d = d;
+			*goal = beside;
+			found = true;
+		}
+	}
+	return found;
+}
+
+/* goals_next_room(c, g, dist, rm, from_room, footprint_ok): the reachable cell nearest
+ * the centre of a room next to from_room (through one of its doors). */
+bool goals_next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
+			   int32_t from_room, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t doors[64], n = rooms_doors_of(&rm->rooms, from_room, doors, 64);
+	double best_d = INFINITY;
+	int32_t best = -1;
+	for (int32_t d = 0; d < n && d < 64; d++) {
+		const RoomsDoor *door = &rm->rooms.doors[doors[d]];
+		int32_t other = door->room_a == from_room ? door->room_b : door->room_a;
+		const RoomsRoom *room = &rm->rooms.rooms[other];
+		for (int32_t j = 0; j < g->h; j++)
+			for (int32_t i = 0; i < g->w; i++) {
+				int32_t k = j * g->w + i;
+				if (dist[k] < 0 || rooms_at(&rm->rooms, i, j) != other)
+					continue;
+				double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
+				if (dd < best_d) {
+					best_d = dd;
+					best = k;
+				}
+			}
+	}
+	if (best < 0)
+		return false;
+	*goal = goals_centre(s->x0 + best % g->w, s->y0 + best / g->w);
+	return true;
+}
+
+/* ---- the goal of the current phase ---------------------------------------------- */
+
+/* goals_choose(c, out): the goal of the current phase on the current screen and
+ * c->space (the screen's space, or the configuration space when pushing). */
+void goals_choose(Controller *c, GoalResult *out)
+{
+	*out = (GoalResult){0};
+	const Screen *s = &c->screen;
+	const Grid *g = &c->space;
+	int32_t ui, uj;
+	goals_cell_of(s, c->model.utak, &ui, &uj);
+	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
+	goals_reach(g, ui, uj, dist);
+	RoomMap rm;
+	goals_roommap_build(&rm, s);
+	int32_t si, sj;
+	goals_cell_of(s, c->start, &si, &sj);
+	int32_t start_room = rooms_at(&rm.rooms, si, sj), here_room = rooms_at(&rm.rooms, ui, uj);
+	const char *shape = task_shape_name(c->task.shape);
+	bool pushing = c->phase == PHASE_PUSH;
+	switch (c->surveying ? TASK_GO_CORNER : c->task.kind) {
+	case TASK_GO_CORNER:
+		out->found = goals_corner(c, g, dist, &rm, start_room, &out->goal);
+		if (!out->found)
+			snprintf(out->why, sizeof out->why, "no reachable space toward the %s",
+				 task_corner_name(c->task.corner));
+		break;
+	case TASK_GO_NEXT_ROOM:
+		if (start_room >= 0 && here_room >= 0 && here_room != start_room) {
+			out->found = true; /* already through a door: here will do */
+			out->goal = goals_centre(s->x0 + ui, s->y0 + uj);
+			break;
+		}
+		out->found = goals_next_room(c, g, dist, &rm, start_room, &out->goal);
+		if (!out->found) {
+			out->exploring = out->found = goals_frontier(c, dist, &out->goal);
+			if (!out->found)
+				snprintf(out->why, sizeof out->why, "no door out of this room, and nothing left unseen");
+		}
+		break;
+	default: /* an object's task (going round it first finds it) */
+		if (c->task.kind == TASK_GO_ROUND && c->round_count > 0) {
+			out->found = true;
+			out->goal = c->round[c->round_next];
+			break;
+		}
+		if (!pushing) {
+			int32_t k = objects_find_target(c), ux, uy;
+			bool push_task = c->task.kind != TASK_GO_SHAPE && c->task.kind != TASK_GO_ROUND;
+			/* A hypothesis is looked at closer first: beside the part of it the
+			 * fovea has not yet seen. */
+			if (k >= 0 && objects_unconfirmed_square(c, k, &ux, &uy) &&
+			    goals_near(c, goals_centre(ux, uy), dist, &out->goal)) {
+				out->found = true;
+				break;
+			}
+			if (k >= 0 && push_task && push_grasp_side(c, k, dist, &rm, start_room, &out->goal)) {
+				out->found = true;
+				break;
+			}
+			if (k >= 0 && goals_beside(c, k, dist, &out->goal)) {
+				out->found = true;
+				break;
+			}
+			/* Not seen, or not reachable: look further: first at the objects
+			 * seen only coarsely (each may be the one, too small or too coarse
+			 * to name yet: paper 3.3's hypotheses of low confidence), unless
+			 * the unseen is much nearer (GOALS_COARSE_FIRST). */
+			Vec2 unseen, coarse;
+			bool have_unseen = goals_frontier(c, dist, &unseen);
+			bool have_coarse = k < 0 && goals_inspect(c, dist, &coarse);
+			out->exploring = out->found = have_unseen || have_coarse;
+			if (have_unseen && have_coarse)
+				out->goal = GOALS_COARSE_FIRST * goals_distance(unseen, c->model.utak) <= goals_distance(coarse, c->model.utak) ? unseen : coarse;
+			else
+				out->goal = have_unseen ? unseen : coarse;
+			if (!out->found)
+				snprintf(out->why, sizeof out->why,
+					 k >= 0 ? "cannot reach the %s: no free square beside it can be reached"
+						: "no %s seen, and nothing left unseen or seen only coarsely",
+					 shape);
+			break;
+		}
+		/* Pushing: where the held object should go. */
+		out->found = push_goal(c, g, dist, &rm, start_room, here_room, ui, uj, &out->goal);
+		if (!out->found)
+			snprintf(out->why, sizeof out->why,
+				 c->task.kind == TASK_PUSH_CORNER ? "the %s cannot be moved toward the corner"
+				 : c->task.kind == TASK_PUSH_AROUND_CORNER
+				     ? "no corner the %s can be pushed around"
+				     : "the %s does not fit through any door of this room without turning",
+				 shape);
+	}
+	goals_roommap_free(&rm);
+	free(dist);
+}

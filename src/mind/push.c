@@ -1,0 +1,321 @@
+/* push.c - pushing an object: where to hold it, where to take it, and seating it in a
+ * corner (paper 2.2, 2.3 tasks (v)-(ix), 4: the planner on the object's configuration
+ * space). CONTROLLER SIDE.
+ *
+ * Pushing means: go beside the object, grasp, push it (Utak and object rigidly,
+ * so any side will do) along a path planned in its configuration space (cspace.c:
+ * the screen eroded by the held squares), release. Into a corner, Utak first goes
+ * to look at the corner (surveying, controller.c), and at the end seats the object
+ * (PHASE_SEAT): one-square pushes along each axis until one makes no headway, so
+ * that the walls, not the eye's estimate of them, place it. Squares a move or push
+ * bumped into are remembered as blocked (a touch of a kind). */
+#include "utak/mind/push.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/util.h"
+#include "utak/mind/goals.h"
+#include "utak/mind/shape.h"
+#include "utak/plan/cspace.h"
+
+/* push_mark_bumped(c, g): the squares bumped into are blocked on g (screen cells). */
+void push_mark_bumped(const Controller *c, Grid *g)
+{
+	for (int b = 0; b < c->bumped_count; b++) {
+		int32_t i = c->bumped_x[b] - c->screen.x0, j = c->bumped_y[b] - c->screen.y0;
+		if (i >= 0 && j >= 0 && i < g->w && j < g->h)
+			g->cells[j * g->w + i] = GRID_BLOCKED;
+	}
+}
+
+/* push_bump(c, cmd): a move or push made no headway: remember the squares its shapes
+ * would have entered, one square on in the commanded direction. */
+void push_bump(Controller *c, const MotorCommand *cmd)
+{
+	double len = hypot(cmd->dx, cmd->dy);
+	int32_t ux, uy, sx = (int32_t)lround(cmd->dx / len), sy = (int32_t)lround(cmd->dy / len);
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	int32_t n = cmd->kind == MOTOR_PUSH && c->model.holding ? c->model.held_count : 0;
+	for (int32_t k = -1; k < n; k++) {
+		int32_t dx = k < 0 ? 0 : c->model.held_dx[k], dy = k < 0 ? 0 : c->model.held_dy[k];
+		int32_t tx = dx + sx, ty = dy + sy;
+		bool inside = tx == 0 && ty == 0;
+		for (int32_t j = 0; j < n && !inside; j++)
+			inside = c->model.held_dx[j] == tx && c->model.held_dy[j] == ty;
+		if (!inside && c->bumped_count < CONTROLLER_MAX_BUMPED) {
+			c->bumped_x[c->bumped_count] = ux + tx;
+			c->bumped_y[c->bumped_count++] = uy + ty;
+		}
+	}
+}
+
+/* push_cspace_of(c, rx, ry, ox, oy, n, out): the configuration space of Utak on model
+ * square (rx, ry) holding the n squares at offsets (ox, oy) from his: the screen's
+ * space with those squares freed (they move with him) and the squares bumped into
+ * blocked, eroded by the footprint of his square and theirs (cspace.c). */
+void push_cspace_of(const Controller *c, int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, int32_t n,
+		      Grid *out)
+{
+	const Screen *s = &c->screen;
+	Grid base;
+	grid_init(&base, s->w, s->h, GRID_BLOCKED);
+	memcpy(base.cells, s->free.cells, (size_t)s->w * (size_t)s->h);
+	int32_t *dx = util_alloc((size_t)n + 1, sizeof *dx), *dy = util_alloc((size_t)n + 1, sizeof *dy);
+	dx[0] = dy[0] = 0;
+	for (int32_t j = 0; j < n; j++) {
+		dx[j + 1] = ox[j];
+		dy[j + 1] = oy[j];
+		int32_t i2 = rx + ox[j] - s->x0, j2 = ry + oy[j] - s->y0;
+		if (i2 >= 0 && j2 >= 0 && i2 < s->w && j2 < s->h)
+			base.cells[j2 * s->w + i2] = GRID_FREE;
+	}
+	push_mark_bumped(c, &base);
+	/* The footprint as row runs: sort by (dy, dx) (insertion sort: n is a few
+	 * dozen), then join neighbours in a row. */
+	for (int32_t a = 1; a <= n; a++)
+		for (int32_t b = a; b > 0 && (dy[b] < dy[b - 1] || (dy[b] == dy[b - 1] && dx[b] < dx[b - 1])); b--) {
+			int32_t t = dx[b];
+			dx[b] = dx[b - 1];
+			dx[b - 1] = t;
+			t = dy[b];
+			dy[b] = dy[b - 1];
+			dy[b - 1] = t;
+		}
+	CSpaceFootprint fp;
+	cspace_footprint_init(&fp);
+	for (int32_t a = 0; a <= n; a++) {
+		if (a > 0 && dy[a] == dy[a - 1] && dx[a] <= fp.run[fp.count - 1].dx1 + 1) {
+			if (dx[a] > fp.run[fp.count - 1].dx1)
+				fp.run[fp.count - 1].dx1 = dx[a];
+			continue;
+		}
+		fp.run = util_grow(fp.run, &fp.cap, fp.count + 1, sizeof *fp.run);
+		fp.run[fp.count++] = (CSpaceRun){dy[a], dx[a], dx[a]};
+	}
+	grid_free(out);
+	grid_init(out, s->w, s->h, GRID_BLOCKED);
+	cspace_erode_footprint(&base, &fp, out);
+	cspace_footprint_free(&fp);
+	free(dx);
+	free(dy);
+	grid_free(&base);
+}
+
+/* push_space(c, out): the configuration space of Utak and what he holds. */
+void push_space(Controller *c, Grid *out)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	push_cspace_of(c, ux, uy, c->model.held_dx, c->model.held_dy, c->model.held_count, out);
+}
+
+/* push_goal(c, g, dist, rm, start_room, here_room, ui, uj, goal): where Utak
+ * should take the object he holds (or would hold), on its configuration space g,
+ * dist being the steps from his cell (ui, uj) on g: the corner of the starting
+ * room, a cell near the centre of a room next to the one he is in, or the nearest
+ * place out of sight of where the object was. */
+bool push_goal(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t start_room,
+		      int32_t here_room, int32_t ui, int32_t uj, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	if (c->task.kind == TASK_PUSH_CORNER)
+		return goals_corner(c, g, dist, rm, start_room, goal);
+	if (c->task.kind == TASK_PUSH_NEXT_ROOM || c->task.kind == TASK_PUSH_THROUGH_DOOR)
+		return goals_next_room(c, g, dist, rm, here_room, goal);
+	int32_t best = -1;
+	for (int32_t j = 0; j < g->h; j++)
+		for (int32_t i = 0; i < g->w; i++) {
+			int32_t k = j * g->w + i;
+			if (dist[k] < 3 || (best >= 0 && dist[k] >= dist[best]))
+				continue;
+			if (!pathgraph_segment_free(&s->fixed, goals_centre(ui, uj), goals_centre(i, j)))
+				best = k;
+		}
+	if (best >= 0)
+		*goal = goals_centre(s->x0 + best % g->w, s->y0 + best / g->w);
+	return best >= 0;
+}
+
+/* push_grasp_side(c, k, dist, rm, start_room, goal): for a push task, the cell beside
+ * object node k to grasp it from: the nearest (by steps, dist) from which Utak and
+ * the object together, as one rigid footprint, can reach a push goal. A square
+ * pushed into the north-east corner must be held from the south-west, a brick
+ * pushed through a door from its end. False when no side works. */
+bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const RoomMap *rm, int32_t start_room,
+		       Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	const ModelNode *n = &m->node[k];
+	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
+	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
+	int32_t cap = (x1 - x0) * (y1 - y0), count = 0;
+	if (cap <= 0 || cap > WORLDMODEL_HELD_MAX)
+		return false;
+	int32_t *sx = util_alloc((size_t)cap, sizeof *sx), *sy = util_alloc((size_t)cap, sizeof *sy);
+	int32_t *ox = util_alloc((size_t)cap, sizeof *ox), *oy = util_alloc((size_t)cap, sizeof *oy);
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++)
+			if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED) {
+				sx[count] = x;
+				sy[count++] = y;
+			}
+	int32_t *cdist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *cdist);
+	bool found = false;
+	Grid cs = {0};
+	/* Candidates in order of steps from Utak: repeatedly the nearest untried. The
+	 * first that works will do, except for a corner, where all are weighed. */
+	bool corner = c->task.kind == TASK_PUSH_CORNER;
+	int64_t best_score = INT64_MIN, room_best = corner ? goals_room_corner_best(c, rm, start_room) : INT64_MIN;
+	for (int32_t d = 0, tried = 0; (!found || corner) && tried < 64;) {
+		int32_t best = -1;
+		for (int32_t at = 0; at < s->w * s->h; at++) {
+			if (dist[at] < d || (best >= 0 && dist[at] >= dist[best]))
+				continue;
+			int32_t i = at % s->w, j = at / s->w;
+			bool beside = false;
+			for (int dy = -1; dy <= 1 && !beside; dy++)
+				for (int dx = -1; dx <= 1 && !beside; dx++)
+					beside = (dx || dy) && screen_label(s, i + dx, j + dy) == k;
+			if (beside)
+				best = at;
+		}
+		if (best < 0)
+			break;
+		d = dist[best];
+		/* Every candidate at this distance, in row order. */
+		for (int32_t at = best; at < s->w * s->h && (!found || corner); at++) {
+			if (dist[at] != d)
+				continue;
+			int32_t i = at % s->w, j = at / s->w, rx = s->x0 + i, ry = s->y0 + j;
+			/* Beside it and no other object: a grasp takes the first object
+			 * touch finds (paper 2.2), which must be this one. */
+			bool beside = false, other = false;
+			for (int dy = -1; dy <= 1; dy++)
+				for (int dx = -1; dx <= 1; dx++) {
+					int32_t l = screen_label(s, i + dx, j + dy);
+					beside |= (dx || dy) && l == k;
+					other |= (dx || dy) && l >= 0 && l != k;
+				}
+			beside &= !other;
+			bool visited = false;
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = goals_distance(goals_centre(rx, ry), c->visited[v]) < 0.5;
+			if (!beside || visited)
+				continue;
+			tried++;
+			for (int32_t q = 0; q < count; q++) {
+				ox[q] = sx[q] - rx;
+				oy[q] = sy[q] - ry;
+			}
+			push_cspace_of(c, rx, ry, ox, oy, count, &cs);
+			if (!grid_free_at(&cs, i, j))
+				continue;
+			goals_reach(&cs, i, j, cdist);
+			Vec2 to;
+			if (!push_goal(c, &cs, cdist, rm, start_room, rooms_at(&rm->rooms, i, j), i, j, &to) ||
+			    goals_distance(to, goals_centre(rx, ry)) <= CONTROLLER_ARRIVED)
+				continue;
+			if (!corner) {
+				*goal = goals_centre(rx, ry);
+				found = true;
+				continue;
+			}
+			/* Into a corner: how far toward it the object itself gets, Utak at
+			 * `to` holding it from this side; the nearest side of the best. */
+			int64_t reach_score = INT64_MIN;
+			for (int32_t q = 0; q < count; q++) {
+				int64_t v = goals_corner_score(c->task.corner, (int32_t)floor(to.x) + ox[q], (int32_t)floor(to.y) + oy[q]);
+				reach_score = v > reach_score ? v : reach_score;
+			}
+			if (reach_score > best_score) {
+				best_score = reach_score;
+				*goal = goals_centre(rx, ry);
+				found = true;
+				/* Right into the room's own corner: no side can do better. (A
+				 * side that leaves Utak between the object and a wall costs a
+				 * square, and the judge's slack is all the eye's error.) */
+				if (reach_score >= room_best - 1)
+					corner = false;
+			}
+		}
+		d++;
+	}
+	grid_free(&cs);
+	free(cdist);
+	free(sx);
+	free(sy);
+	free(ox);
+	free(oy);
+	return found;
+}
+
+/* ---- seating ---------------------------------------------------------------------- */
+
+/* push_seat(c): after a push that seats the object: on along this axis, or, when it
+ * made no headway (pressed against a wall) or enough pushes were made, the next
+ * axis (controller_decide judges the corner after the last). */
+void push_seat(Controller *c)
+{
+	if (goals_distance(c->model.utak, c->seat_from) >= 0.5 && c->seat_pushes < CONTROLLER_SEAT_PUSHES)
+		return;
+	c->seat_pushes = 0;
+	c->seat_axis++;
+}
+
+/* push_seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
+ * holds, judged before he lets go. */
+void push_seat_finish(Controller *c)
+{
+	int64_t short_by = goals_corner_shortfall(c);
+	if (shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count) != c->task.shape) {
+		/* What came along is not what the task named: another object touching
+		 * it was grasped, or the model lost part of it. */
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why, "what Utak pushed into the %s is not the %s",
+			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
+	} else if (short_by > CONTROLLER_CORNER_SLACK)
+		goals_corner_failed(c, short_by);
+	else
+		c->phase = PHASE_RELEASE;
+}
+
+/* push_touch_blocked(c, dx, dy): touch feels the verge or a wall in the square beside
+ * Utak one step (dx, dy) away. */
+bool push_touch_blocked(const Controller *c, int dx, int dy)
+{
+	for (int i = 0; i < TOUCH_CELLS; i++)
+		if (goals_touch_offset[i][0] == dx && goals_touch_offset[i][1] == dy)
+			return c->impression.touch[i] == 'B';
+	return false;
+}
+
+/* push_in_circles(c): after a push, true when Utak has now stood on his square
+ * CONTROLLER_CIRCLES times since he grasped: a plan that keeps failing the same way
+ * (a wall the eye places a square off) goes round and round. It ends the push with
+ * an honest failure: the world model that led him round cannot be trusted to say the
+ * object is where it should be. */
+bool push_in_circles(Controller *c)
+{
+	int32_t ux, uy, visits = 1;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	for (int i = 0; i < c->pushed_count; i++)
+		visits += c->pushed_x[i] == ux && c->pushed_y[i] == uy;
+	if (c->pushed_count < CONTROLLER_MAX_PUSHES) {
+		c->pushed_x[c->pushed_count] = ux;
+		c->pushed_y[c->pushed_count++] = uy;
+	}
+	if (visits < CONTROLLER_CIRCLES)
+		return false;
+	int64_t short_by = c->task.kind == TASK_PUSH_CORNER ? goals_corner_shortfall(c) : INT64_MAX;
+	c->phase = PHASE_FAILED;
+	if (short_by == INT64_MAX || short_by <= 0)
+		snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)",
+			 task_shape_name(c->task.shape), c->model.utak.x, c->model.utak.y);
+	else
+		snprintf(c->why, sizeof c->why, "pushing the %s round in circles, %lld short of the %s",
+			 task_shape_name(c->task.shape), (long long)short_by, task_corner_name(c->task.corner));
+	return true;
+}

@@ -1,0 +1,56 @@
+/* round.c - going round an object and returning (paper 2.3 task (iv)). CONTROLLER SIDE. */
+#include "utak/mind/round.h"
+
+#include <math.h>
+
+#include "utak/mind/goals.h"
+#include "utak/mind/objects.h"
+
+/* round_lay_out(c, k): the points outside object node k's rectangle corners,
+ * counter-clockwise from the one nearest Utak, then his starting point. */
+void round_lay_out(Controller *c, int32_t k)
+{
+	const ModelNode *n = &c->model.node[k];
+	double m = CONTROLLER_ROUND_MARGIN;
+	Vec2 p[4] = {vec2(n->rect.lo.x - m, n->rect.lo.y - m), vec2(n->rect.hi.x + m, n->rect.lo.y - m),
+		     vec2(n->rect.hi.x + m, n->rect.hi.y + m), vec2(n->rect.lo.x - m, n->rect.hi.y + m)};
+	int first = 0;
+	for (int i = 1; i < 4; i++)
+		if (goals_distance(p[i], c->model.utak) < goals_distance(p[first], c->model.utak))
+			first = i;
+	for (int i = 0; i < 4; i++) {
+		Vec2 q = p[(first + i) % 4];
+		c->round[i] = goals_centre((int32_t)floor(q.x), (int32_t)floor(q.y));
+	}
+	/* Back to the first corner closes the loop round the object, then home. */
+	c->round[4] = c->round[0];
+	c->round[5] = c->start; /* "and return": to where the task began */
+	c->round_count = 6;
+	c->round_next = 0;
+	c->round_ident = n->ident;
+	c->round_rect = n->rect;
+}
+
+/* round_believed_turns(c, k): how many times the path Utak believes he took, closed back
+ * to its start, winds round the centre of object node k: the judge's measure
+ * (judge.c), taken on the world model. */
+double round_believed_turns(const Controller *c, int32_t k)
+{
+	const Box *r = &c->model.node[k].rect;
+	return geom_winding(c->trail.pts, c->trail.count, vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2));
+}
+
+/* round_stale(c): the loop was laid out round what the model no longer believes is
+ * the task's object, or round a rectangle that has since been seen to differ by more
+ * than a square: a coarse first look can take a brick for a square. */
+bool round_stale(Controller *c)
+{
+	if (c->task.kind != TASK_GO_ROUND || c->round_count == 0)
+		return false;
+	int32_t k = objects_find_target(c);
+	if (k < 0 || c->model.node[k].ident != c->round_ident)
+		return true;
+	Box r = c->model.node[k].rect, o = c->round_rect;
+	return fabs(r.lo.x - o.lo.x) > 1 || fabs(r.lo.y - o.lo.y) > 1 || fabs(r.hi.x - o.hi.x) > 1 ||
+	       fabs(r.hi.y - o.hi.y) > 1;
+}
