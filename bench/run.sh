@@ -61,6 +61,10 @@ if [ $have_large = 1 ]; then
 	"$bin" --corner "$boston" || st=1
 	# shellcheck disable=SC2086
 	"$bin" --corner --scale 2 $large | tail -n +3 || st=1
+	echo "== the same by the jump-point search (gridpath's GRIDPATH_JUMP)"
+	"$bin" --corner --jump "$boston" | tail -n +2 || st=1
+	# shellcheck disable=SC2086
+	"$bin" --corner --jump --scale 2 $large | tail -n +3 || st=1
 	echo
 	echo "== configuration-space erosion"
 	# shellcheck disable=SC2086

@@ -13,8 +13,10 @@
  * decreases during the search, entries are filed in buckets of f (1/64 of a unit,
  * GRIDPATH_BUCKETS_PER_UNIT) and only the current bucket is kept as a binary heap,
  * so heap operations work on tens of entries that stay in cache instead of
- * a heap of the whole frontier. A neighbour whose f equals the f being expanded
- * (the least in the list) skips the heap through a stack. Measured on the 1024 x
+ * a heap of the whole frontier; one page of GRIDPATH_PAGE buckets is kept at a
+ * time, with the entries beyond it in an overflow (see GRIDPATH_PAGE). A neighbour
+ * whose f equals the f being expanded (the least in the list) skips the heap
+ * through a stack. Measured on the 1024 x
  * 1024 maps, the buckets made the search about 1.5 times faster than one binary
  * heap and the stack about 10% more (the machine was shared: +-20% noise).
  *
@@ -30,7 +32,9 @@
  * any other value means unseen. The border cells of the padded copy are never free.
  *
  * MEMORY: see gridpath.h. COMPLEXITY: O(n log n) for n cells expanded, n <= free
- * cells, plus O(L) buckets for a path of length L; initialisation O(w h) once per
+ * cells, plus O(L) for a path of length L to skip the empty buckets (64 to a word
+ * of nonempty bits), and each overflow entry once per page it waits through;
+ * initialisation O(w h) once per
  * grid, and a query touches only what it expands (the round counter replaces
  * clearing the marks). */
 #include "utak/plan/gridpath.h"

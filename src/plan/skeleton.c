@@ -52,11 +52,26 @@
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
  *    a free cell on the benchmark grids); pruning walks each branch once.
  *
- * MEASURED  by bench/skelbench.c (CPU time, best of 3, on a 2-core Xeon shared with
- *    other jobs): on 1024 x 1024 rooms, random rectangles and a maze, the transform
- *    9-10 ms and the skeleton with it 28-29 ms; 27-31 ns a cell from 1024 to 4096 a
- *    side (39 on the rectangles at 4096, where the visits' jumps miss the cache). The
- *    thinning is bound by those jumps: a bit-set state and early loads did not help. */
+ * MEASURED  (issue 16; thread CPU time on this 2-core machine, shared, so +-15%;
+ *    `make bench-compare` for the table against the peers): on the 1024 x 1024 maze
+ *    the skeleton's 19-20 ms were, by phase (instrumented copy, best of 7), the
+ *    transform 6.9 ms, the counting sort 1.7, the visits 6.9, listing the set 0.9,
+ *    pruning 2.2 and the output 0.5; rooms and random rectangles alike but for the
+ *    visits (8.8 and 10.8 ms) and pruning (0.2). 786 429 visits on the maze (993 796
+ *    on rooms), of which none found its cell interior (all 8 neighbours in the set)
+ *    and 11 374 cells were tried again: the distance order puts every cell on the
+ *    front when its turn comes, so a border queue would save no visit, and the
+ *    visit's cost (about 9 ns) is its loads and its branch on the table. Of the
+ *    changes of issue 16 (the neighbourhood written out, one table load for the
+ *    decision, the envelope's paired arrays, the all-pairs short runs) none moved
+ *    these figures by more than 5-10%, most within the noise (the output is the
+ *    same cell for cell); the transform's row pass (the envelope) is 85% of the
+ *    transform. The medial axis from a feature transform was not tried: this
+ *    thinning's visits already cost about as much as one more pass of the transform
+ *    would, and its spur rule and topology are what the tests pin. From 1024 to 4096
+ *    a side the cost grows 15-34 times for 16 times the cells: the visits of the
+ *    4096 grids miss the cache (state, 17 MB, no longer fits), most on the random
+ *    rectangles, whose many distance levels each sweep the whole grid. */
 #include "utak/plan/skeleton.h"
 
 #include <assert.h>

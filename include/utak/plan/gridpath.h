@@ -26,10 +26,13 @@
  * (16 bytes per pushed entry; at most 8 pushes per cell, far fewer in practice),
  * kept between queries.
  *
- * PERFORMANCE (pathbench --corner, this 2-core machine, one thread, thread CPU time,
- * best of 5): corner to corner on 1024 x 1024 maps, Boston_0_1024 29 ms (190 239
- * cells expanded), 8room_000 enlarged twice 51 ms (353 284), maze512-1-0 enlarged
- * twice 44 ms (406 361), random512-10-0 enlarged twice 19 ms (110 894). */
+ * PERFORMANCE (make bench-compare, issue 16: this 2-core machine, one thread, thread
+ * CPU time, median of 5; corner to corner, the ends as skelbench picks them): on the
+ * 1024 grids plain A* 5.6 ms (den520d scaled 4 times) to 57 ms (the maze, 688 000
+ * cells expanded), the jump search 0.54 to 11.4 ms (rooms 1.3, Boston_0_1024 1.7);
+ * at 4096, A* 114-542 ms and the jump search 5-104 ms. Against libtcod's A* on the
+ * same problems: plain A* 8.9-28 times faster except on the maze (1.3-1.4), the jump
+ * search 94-501 times except on the maze (6.7-7.4). */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
 
