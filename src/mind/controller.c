@@ -34,6 +34,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
+#include "utak/mind/tug.h"
 
 /* build_space(c): the grid to plan on, from the current screen: its space, or
  * when pushing the configuration space. Utak's own square is free whatever the
@@ -244,6 +245,9 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	if (!c->has_task)
 		return false;
 	c->cycle++;
+	/* An object not yet told from the wall it leans on: touch and motion. */
+	if (tug_decide(c, cmd))
+		return true;
 	/* Step 8 and 9, a few times over if arriving changes the phase. */
 	for (int round = 0; round < 4; round++) {
 		switch (c->phase) {
@@ -336,6 +340,11 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 			      c->model.utak.x, c->model.utak.y);
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
+	if (c->tug_stage) {
+		snprintf(c->note + n, sizeof c->note - (size_t)n, "; tugging what touch shows is an object");
+		c->have_plan = false;
+		return;
+	}
 	/* No progress: the same believed point after a move or push, cycle after cycle. */
 	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && hypot(cmd->dx, cmd->dy) > 0 &&
 	    goals_distance(c->model.utak, c->last_position) < 0.5 * hypot(cmd->dx, cmd->dy))
