@@ -214,8 +214,10 @@ static void arrive(Controller *c)
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
 			int32_t k = objects_find_target(c);
-			if (k < 0 || fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
+			if (k >= 0 && fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
 				c->phase = PHASE_DONE;
+			else if (k < 0)
+				c->round_count = 0; /* no object of the shape now: find one again */
 			else if (c->round_loops < CONTROLLER_ROUND_LOOPS) {
 				c->round_loops++;
 				round_lay_out(c, k);
