@@ -70,7 +70,7 @@ static bool make_plan(Controller *c, char *why, size_t size)
 	if (c->task.kind == TASK_GO_ROUND && c->round_count == 0 && !gr.exploring && c->phase == PHASE_TRAVEL) {
 		/* Beside the object is where going round starts: lay out the loop now. */
 		int32_t k = objects_find_target(c);
-		if (k >= 0) {
+		if (k >= 0 && !objects_read(c, k).guessed) { /* a guess is looked at first */
 			round_lay_out(c, k);
 			gr.goal = c->round[0];
 		}
@@ -214,10 +214,19 @@ static void arrive(Controller *c)
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
 			int32_t k = objects_find_target(c);
-			if (k >= 0 && fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
+			bool confirmed = k >= 0 && objects_read(c, k).confirmed;
+			if (confirmed && fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
 				c->phase = PHASE_DONE;
-			else if (k < 0)
-				c->round_count = 0; /* no object of the shape now: find one again */
+			else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
+				/* Round a hypothesis, or an object no longer there: look again
+				 * (objects.h), and go round what is found. */
+				c->round_loops++;
+				c->round_count = 0;
+			} else if (!confirmed) {
+				c->phase = PHASE_FAILED;
+				snprintf(c->why, sizeof c->why, "%d loops, and no %s seen whole in the fovea to go round",
+					 c->round_loops + 1, task_shape_name(c->task.shape));
+			}
 			else if (c->round_loops < CONTROLLER_ROUND_LOOPS) {
 				c->round_loops++;
 				round_lay_out(c, k);
