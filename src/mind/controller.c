@@ -34,6 +34,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
+#include "utak/mind/tug.h"
 
 /* build_space(c): the grid to plan on, from the current screen: its space, or
  * when pushing the configuration space. Utak's own square is free whatever the
@@ -69,7 +70,7 @@ static bool make_plan(Controller *c, char *why, size_t size)
 	if (c->task.kind == TASK_GO_ROUND && c->round_count == 0 && !gr.exploring && c->phase == PHASE_TRAVEL) {
 		/* Beside the object is where going round starts: lay out the loop now. */
 		int32_t k = objects_find_target(c);
-		if (k >= 0) {
+		if (k >= 0 && !objects_read(c, k).guessed) { /* a guess is looked at first */
 			round_lay_out(c, k);
 			gr.goal = c->round[0];
 		}
@@ -213,8 +214,19 @@ static void arrive(Controller *c)
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
 			int32_t k = objects_find_target(c);
-			if (k < 0 || fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
+			bool confirmed = k >= 0 && objects_read(c, k).confirmed;
+			if (confirmed && fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
 				c->phase = PHASE_DONE;
+			else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
+				/* Round a hypothesis, or an object no longer there: look again
+				 * (objects.h), and go round what is found. */
+				c->round_loops++;
+				c->round_count = 0;
+			} else if (!confirmed) {
+				c->phase = PHASE_FAILED;
+				snprintf(c->why, sizeof c->why, "%d loops, and no %s seen whole in the fovea to go round",
+					 c->round_loops + 1, task_shape_name(c->task.shape));
+			}
 			else if (c->round_loops < CONTROLLER_ROUND_LOOPS) {
 				c->round_loops++;
 				round_lay_out(c, k);
@@ -244,6 +256,9 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	if (!c->has_task)
 		return false;
 	c->cycle++;
+	/* An object not yet told from the wall it leans on: touch and motion. */
+	if (tug_decide(c, cmd))
+		return true;
 	/* Step 8 and 9, a few times over if arriving changes the phase. */
 	for (int round = 0; round < 4; round++) {
 		switch (c->phase) {
@@ -336,6 +351,11 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 			      c->model.utak.x, c->model.utak.y);
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
+	if (c->tug_stage) {
+		snprintf(c->note + n, sizeof c->note - (size_t)n, "; tugging what touch shows is an object");
+		c->have_plan = false;
+		return;
+	}
 	/* No progress: the same believed point after a move or push, cycle after cycle. */
 	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && hypot(cmd->dx, cmd->dy) > 0 &&
 	    goals_distance(c->model.utak, c->last_position) < 0.5 * hypot(cmd->dx, cmd->dy))

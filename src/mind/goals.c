@@ -296,6 +296,129 @@ static bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal)
 	return found;
 }
 
+/* goals_inspect_joined(c, dist, goal): near the nearest square of an occupied set
+ * joined to the verge (an uncertain node, paper 3.4.2) that the fovea has not yet
+ * seen and that borders floor: seen coarsely, an object near a wall merges with it
+ * (a block of 4 squares takes in the floor between them), and only a finer look
+ * tells them apart. The last resort of a search: every wall seen coarsely is such a
+ * set. */
+static bool goals_joined_unseen(const Controller *c, Vec2 *square);
+static bool goals_inspect_joined(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	Vec2 best;
+	return goals_joined_unseen(c, &best) && goals_near(c, best, dist, goal);
+}
+
+bool goals_joined_seen(const Controller *c)
+{
+	Vec2 square;
+	return !goals_joined_unseen(c, &square);
+}
+
+/* goals_joined_unseen(c, square): the centre of the nearest square that
+ * goals_inspect_joined looks at; false when there is none. */
+static bool goals_joined_unseen(const Controller *c, Vec2 *square)
+{
+	const WorldModel *m = &c->model;
+	const Screen *s = &c->screen;
+	static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+	double best_d = INFINITY;
+	Vec2 best = vec2(0, 0);
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t x = s->x0 + i, y = s->y0 + j, k = worldmodel_node_at(m, x, y);
+			if (k < 0 || m->node[k].kind != NODE_UNCERTAIN ||
+			    worldmodel_evidence(m, x, y).res == WORLDMODEL_RES_FOVEA)
+				continue;
+			bool edge = false;
+			for (int d = 0; d < 4 && !edge; d++)
+				edge = worldmodel_belief(m, x + step[d][0], y + step[d][1]) == BELIEF_FLOOR;
+			/* ... not looked at already from a goal reached beside it */
+			bool looked = false;
+			for (int v = 0; v < c->visited_count && !looked; v++)
+				looked = goals_distance(goals_centre(x, y), c->visited[v]) <= GOALS_LOOK + 1;
+			double dd = goals_distance(goals_centre(x, y), m->utak);
+			if (edge && !looked && dd < best_d) {
+				best_d = dd;
+				best = goals_centre(x, y);
+			}
+		}
+	*square = best;
+	return best_d < INFINITY;
+}
+
+/* goals_probe_joined(c, dist, goal): the nearest reachable floor cell, not yet
+ * reached, at a corner of an occupied set joined to the verge (occupied on two
+ * sides at right angles, or only diagonally): where an object against a wall would
+ * make one, and from where touch reaches it (tug.h). The search's very last
+ * resort, after the eye has seen every such set in the fovea. */
+static bool goals_probe_joined(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const WorldModel *m = &c->model;
+	const Screen *s = &c->screen;
+	double best_d = INFINITY;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t x = s->x0 + i, y = s->y0 + j;
+			if (dist[j * s->w + i] < 0 || worldmodel_belief(m, x, y) != BELIEF_FLOOR)
+				continue;
+			bool occ[TOUCH_CELLS], joined = false;
+			int sides = 0;
+			for (int t = 0; t < TOUCH_CELLS; t++) {
+				int32_t nx = x + goals_touch_offset[t][0], ny = y + goals_touch_offset[t][1];
+				int32_t k = worldmodel_node_at(m, nx, ny);
+				occ[t] = worldmodel_belief(m, nx, ny) == BELIEF_OCCUPIED;
+				joined |= t % 2 == 0 && k >= 0 && m->node[k].kind == NODE_UNCERTAIN;
+				sides += t % 2 == 0 && occ[t];
+			}
+			/* touch order: N NE E SE S SW W NW; sides at right angles are
+			 * neighbours in it two apart */
+			bool corner = false;
+			for (int t = 0; t < TOUCH_CELLS; t += 2)
+				corner |= occ[t] && occ[(t + 2) % TOUCH_CELLS];
+			for (int t = 1; t < TOUCH_CELLS && sides == 0; t += 2)
+				corner |= occ[t];
+			if (!joined && sides == 0) {
+				for (int t = 1; t < TOUCH_CELLS; t += 2) {
+					int32_t k = worldmodel_node_at(m, x + goals_touch_offset[t][0],
+								     y + goals_touch_offset[t][1]);
+					joined |= occ[t] && k >= 0 && m->node[k].kind == NODE_UNCERTAIN;
+				}
+			}
+			if (!joined || !corner)
+				continue;
+			int32_t px = x, py = y, at = j * s->w + i;
+			/* Beside a corner, in the open along the face, there is room to
+			 * stand and to draw an object back: that cell, where there is one. */
+			for (int t = 0; t < TOUCH_CELLS; t += 2) {
+				int32_t gx = x + goals_touch_offset[t][0], gy = y + goals_touch_offset[t][1];
+				int32_t gi = gx - s->x0, gj = gy - s->y0, walls = 0;
+				if (gi < 0 || gj < 0 || gi >= s->w || gj >= s->h || dist[gj * s->w + gi] < 0 ||
+				    worldmodel_belief(m, gx, gy) != BELIEF_FLOOR)
+					continue;
+				for (int u = 0; u < TOUCH_CELLS; u += 2)
+					walls += worldmodel_belief(m, gx + goals_touch_offset[u][0],
+								   gy + goals_touch_offset[u][1]) == BELIEF_OCCUPIED;
+				if (walls == 1) {
+					px = gx;
+					py = gy;
+					at = gj * s->w + gi;
+					break;
+				}
+			}
+			Vec2 here = goals_centre(px, py);
+			bool visited = false;
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = goals_distance(here, c->visited[v]) < 0.5;
+			double d = goals_distance(here, m->utak) + 1e-3 * dist[at];
+			if (!visited && d < best_d) {
+				best_d = d;
+				*goal = here;
+			}
+		}
+	return best_d < INFINITY;
+}
+
 /* goals_next_room(c, g, dist, rm, from_room, footprint_ok): the reachable cell nearest
  * the centre of a room next to from_room (through one of its doors). */
 bool goals_next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
@@ -395,9 +518,12 @@ void goals_choose(Controller *c, GoalResult *out)
 			 * seen only coarsely (each may be the one, too small or too coarse
 			 * to name yet: paper 3.3's hypotheses of low confidence), unless
 			 * the unseen is much nearer (GOALS_COARSE_FIRST). */
-			Vec2 unseen, coarse;
+			Vec2 unseen = vec2(0, 0), coarse = vec2(0, 0);
 			bool have_unseen = goals_frontier(c, dist, &unseen);
 			bool have_coarse = k < 0 && goals_inspect(c, dist, &coarse);
+			if (!have_unseen && !have_coarse && k < 0)
+				have_coarse = goals_inspect_joined(c, dist, &coarse) ||
+					      goals_probe_joined(c, dist, &coarse);
 			out->exploring = out->found = have_unseen || have_coarse;
 			if (have_unseen && have_coarse)
 				out->goal = GOALS_COARSE_FIRST * goals_distance(unseen, c->model.utak) <= goals_distance(coarse, c->model.utak) ? unseen : coarse;

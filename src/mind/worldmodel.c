@@ -470,6 +470,12 @@ static void wm_find_held(WorldModel *m, const Impression *imp)
 	int32_t seed_x = ux + wm_touch_offset[k][0], seed_y = uy + wm_touch_offset[k][1];
 	if (worldmodel_belief(m, seed_x, seed_y) != BELIEF_OCCUPIED)
 		return;
+	/* A set joined to the verge or the unseen (not an object node of the last
+	 * derivation) may be wall as well as object: the model cannot say which of
+	 * its squares come along (tug.h draws such an object free). */
+	int32_t node = worldmodel_node_at(m, seed_x, seed_y);
+	if (node < 0 || m->node[node].kind != NODE_OBJECT)
+		return;
 	/* Flood fill, 4-connected, over occupied squares; the held offsets double as
 	 * the stack and the visited list. */
 	int32_t n = 0, next = 0;
@@ -643,8 +649,9 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		/* Without a held object the simulator refuses a push (paper 2.2). With
 		 * one, it is lifted from where it was and put down below, where Utak
 		 * is found to be. */
-		if (m->holding) {
+		if (m->holding)
 			to = vec2_add(from, vec2(cmd->dx, cmd->dy));
+		if (m->holding && m->held_count > 0) {
 			held = util_alloc((size_t)m->held_count, sizeof *held);
 			under = util_alloc((size_t)m->held_count, sizeof *under);
 			wm_vacate(m, from, held);
@@ -657,7 +664,12 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	case MOTOR_GRASP:
 		/* Granted when touch showed an object (the simulator's rule, paper 2.2). */
 		wm_find_held(m, &m->last);
-		m->holding = m->held_count > 0;
+		/* Holding whenever touch showed an object's colour; its squares may be
+		 * unknown (held_count 0: it leans on a wall), and then the model moves
+		 * Utak alone and the eye finds the object where it went. */
+		m->holding = false;
+		for (int k = 0; k < TOUCH_CELLS; k++)
+			m->holding |= m->last.touch[k] >= 'A' && m->last.touch[k] <= 'Z' && m->last.touch[k] != 'B';
 		break;
 	case MOTOR_RELEASE:
 		m->holding = false;

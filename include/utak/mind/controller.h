@@ -130,6 +130,10 @@ typedef struct Controller {
 	Vec2 seat_from;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
+	/* A tug (tug.h): its stage (0 none, 1 grasped, 2 pulling), the direction
+	 * pulled (a unit step, model frame), squares pulled, and tugs tried. */
+	int tug_stage;
+	int tug_dx, tug_dy, tug_pulled, tug_tries;
 	ShapeMemo memo[CONTROLLER_MEMOS];
 	int memo_next;		/* the entry to write next (the oldest) */
 	char note[200];		/* what this cycle's perception and planning did */

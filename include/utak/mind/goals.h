@@ -68,6 +68,10 @@ bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goa
  * the unseen unless the unseen is this many times nearer. */
 #define GOALS_COARSE_FIRST 3.0
 bool goals_worth_looking(Controller *c, Vec2 p);
+/* goals_joined_seen(c): every square of an occupied set joined to the verge that
+ * borders floor has been seen in the fovea (or looked at from beside it): the eye
+ * can tell no more of them (tug.h). */
+bool goals_joined_seen(const Controller *c);
 /* goals_near(c, p, dist, goal): the reachable free cell nearest point p. */
 bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal);
 /* goals_next_room(c, g, dist, rm, from_room, goal): a reachable cell near the centre

@@ -37,6 +37,15 @@
  * time, and otherwise left unnamed; a T, a parallelogram, a trapezoid, an octagon
  * and a pentagon of 9 to 14 squares across are never named. Smaller L-shapes (a
  * notch of 2) are often left unnamed.
+ * LIMITS (measured, not met): below about 12 squares the eye cannot tell these
+ * shapes apart at every angle. A 3 x 2 brick (6 squares, under SHAPE_MIN_SQUARES)
+ * is never named; turned it would be named a square in 31 of 72 turns and shifts.
+ * A triangle 4 across and 3 high (clutter.w's a8) covers, turned, the squares of a
+ * rectangle about 2.8 x 1.9 and is named a brick or a square in about 50 of 144
+ * turns and shifts (its fits err by no square). Tried and dropped: naming a small
+ * rectangle only when a side a quarter square off would not change the name
+ * (still misnames the 3 x 2, and loses the 3 x 3 square of nearcorner.w); fitting
+ * a triangle to small sets too (a triangle then fits a 4 x 4 square as well).
  *
  * COMPLEXITY: O(n log n) for the hull of n squares; the fits, shapefit.h. MEMORY:
  * O(A) scratch for a bounding box of A squares, freed before return. */
