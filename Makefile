@@ -31,14 +31,14 @@ WARN    = -Wall -Wextra -pedantic -Wshadow -Wstrict-prototypes -Wmissing-prototy
           -Wpointer-arith -Wcast-qual -Wvla
 CSTD    = -std=c11 -D_POSIX_C_SOURCE=200809L -ffp-contract=off
 CFLAGS  ?= -O2 -g
-ALLCFLAGS = $(CSTD) $(WARN) -Iinclude $(CPPFLAGS) $(CFLAGS)
+ALLCFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc $(CPPFLAGS) $(CFLAGS)
 LDLIBS  = -lm
 
 SAN     = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
-CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -O1 -g $(SAN)
+CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc -O1 -g $(SAN)
 
-LIBSRC  = $(wildcard src/*/*.c) src/svg.c
-HDR     = $(wildcard include/utak/*.h include/utak/*/*.h)
+LIBSRC  = $(wildcard src/*/*.c) src/svg.c src/replay.c
+HDR     = $(wildcard include/utak/*.h include/utak/*/*.h src/*/*.h)
 UNITSRC = $(wildcard tests/unit/test_*.c)
 # The planner library: the layers base and plan, which use nothing else (wall.test.sh).
 PLANSRC = $(wildcard src/base/*.c src/plan/*.c)
@@ -76,6 +76,15 @@ build/chk/%.o: src/%.c $(HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CHECKFLAGS) -c -o $@ $<
 
+# The replay's viewer (src/replay.html) is compiled into utak as C strings, one a
+# line (replay.c includes them): backslashes, double quotes and '?' are escaped, the
+# last so that no "??" followed by another character reads as a trigraph (-std=c11).
+build/inc/replay_viewer.inc: src/replay.html
+	@mkdir -p $(@D)
+	sed -e 's/[\\"?]/\\&/g' -e 's/^/"/' -e 's/$$/",/' src/replay.html >$@
+
+build/rel/replay.o build/chk/replay.o build/fuzz/lib/replay.o: build/inc/replay_viewer.inc
+
 build/chk/libutak.a: $(CHECKOBJ)
 	rm -f $@; ar rcs $@ $(CHECKOBJ)
 
@@ -104,6 +113,16 @@ build/chk/libutak-plan.a: $(PLANSRC:src/%.c=build/chk/%.o)
 build/chk/examples/plan: examples/plan.c build/chk/libutak-plan.a
 	@mkdir -p $(@D)
 	$(CC) $(CHECKFLAGS) -o $@ examples/plan.c build/chk/libutak-plan.a $(LDLIBS)
+
+# The replay's browser test (tests/replay.test.sh) needs Debian's chromium and
+# playwright-core from npm (tests/browser/package-lock.json); this installs them
+# only when missing. Without them make check skips that test and says so; CI
+# (.ci/run) installs them first.
+browser-deps:
+	@sh tests/fuzz/need.sh chromium
+	@command -v npm >/dev/null || sh tests/fuzz/need.sh nodejs npm
+	@[ -d tests/browser/node_modules/playwright-core ] || \
+	    (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
 
 golden: utak
 	sh tests/regen.sh ./utak
@@ -158,7 +177,7 @@ format:
 clean:
 	rm -rf build utak
 
-.PHONY: FORCE all check check-deps golden readme bench install uninstall format clean
+.PHONY: FORCE all check check-deps browser-deps golden readme bench install uninstall format clean
 .SUFFIXES:
 
 # ---- reliability (issue 6): fuzzing and the Box2D cross-check ------------------
@@ -177,7 +196,7 @@ FUZZCC  ?= clang
 FUZZSAN  = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 # The library gets coverage instrumentation only (fuzzer-no-link); the harness
 # links libFuzzer's main.
-FUZZFLAGS = $(CSTD) $(WARN) -Iinclude -O1 -g $(FUZZSAN)
+FUZZFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc -O1 -g $(FUZZSAN)
 FUZZSRC  = $(wildcard tests/fuzz/fuzz_*.c)
 FUZZBIN  = $(FUZZSRC:tests/fuzz/%.c=build/fuzz/%)
 FUZZOBJ  = $(LIBSRC:src/%.c=build/fuzz/lib/%.o)
@@ -281,3 +300,34 @@ bench-compare: build/rel/bench/skelbench | bench-compare-deps
 	    build/compare $(MOVINGAI)/maps/cities/Boston_0_1024.map
 
 .PHONY: bench-compare bench-compare-deps
+
+# ---- carrying in (x, y, theta) (issue 12): make bench-carry -------------------------
+#
+#   make bench-carry   bench/carrybench.c on screens of 64 to 512 squares at 64
+#                      angles (the issue's targets: 50 ms at 128, 1 s at 512), with
+#                      each pruning turned off in turn; then the 128 and 512 problems
+#                      again beside OMPL's RRTConnect and RRT* (bench/carryompl.cpp,
+#                      C++ against Debian's libompl-dev, installed when missing, like
+#                      the Box2D cross-check): success within 1 s and 10 s, time and
+#                      path length as ratios measured in the same run. About three
+#                      minutes, most of it RRT* using its 10 s on each problem.
+#
+# Debian's ompl.pc names a C++ standard and a link directory that does not exist, so
+# the flags are spelled out here.
+OMPLFLAGS = -I/usr/include/ompl-1.5 -I/usr/include/eigen3
+CARRY_ANGLES ?= 64
+
+build/carry/carryompl: bench/carryompl.cpp build/rel/libutak.a $(HDR) | bench-carry-deps build/carry
+	$(CXX) $(XCHECKFLAGS) $(OMPLFLAGS) -o $@ bench/carryompl.cpp build/rel/libutak.a -lompl -lm
+
+build/carry:
+	mkdir -p $@
+
+bench-carry-deps:
+	@sh tests/fuzz/need.sh g++ libompl-dev
+
+bench-carry: build/rel/bench/carrybench build/carry/carryompl
+	build/rel/bench/carrybench --angles $(CARRY_ANGLES) --write build/carry
+	build/carry/carryompl build/carry/*-128.carry build/carry/*-512.carry
+
+.PHONY: bench-carry bench-carry-deps

@@ -16,6 +16,7 @@
 #include "utak/body/judge.h"
 #include "utak/body/motion.h"
 #include "utak/body/retina.h"
+#include "utak/replay.h"
 #include "utak/svg.h"
 #include "utak/body/table.h"
 #include "utak/base/task.h"
@@ -45,6 +46,8 @@ static const char usage_text[] =
 	"                    of SIGMA squares per square moved, each turn likewise\n"
 	"  --seed N          the seed of the noise (default 1)\n"
 	"  --svg FILE        draw the run as an SVG picture\n"
+	"  --html FILE       write a replay of the run, cycle by cycle, as one HTML page\n"
+	"  --step            print every dump after each cycle and wait for Enter\n"
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
 	"  -o FILE           write the final state as a world file\n"
@@ -183,18 +186,86 @@ static void print_dumps(const bool want[DUMP_COUNT], const Body *b, Controller *
 /* ---- the run ------------------------------------------------------------------------ */
 
 typedef struct Options {
-	const char *act, *outfile, *svgfile, *task_text;
-	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose;
+	const char *act, *outfile, *svgfile, *htmlfile, *task_text;
+	bool want[DUMP_COUNT], any_dump, dry_run, quiet, verbose, step;
 	PlannerKind planner;
 	long max_cycles;
 	double noise;          /* --noise SIGMA */
 	unsigned long long seed; /* --seed N */
 } Options;
 
+/* write_file(path, fn, ctx): writes an output file with fn, every write checked.
+ * Returns 0, or 2 after "utak: PATH: reason" on stderr. */
+typedef int WriteFn(FILE *f, void *ctx);
+static int write_file(const char *path, WriteFn *fn, void *ctx)
+{
+	FILE *f = fopen(path, "w");
+	if (!f) {
+		fprintf(stderr, "utak: %s: %s\n", path, strerror(errno));
+		return 2;
+	}
+	errno = 0;
+	bool failed = fn(f, ctx) != 0 || ferror(f);
+	int why = errno;
+	if (fclose(f) != 0 && !failed) {
+		failed = true;
+		why = errno;
+	}
+	if (failed) {
+		fprintf(stderr, "utak: %s: %s\n", path, why ? strerror(why) : "write error");
+		return 2;
+	}
+	return 0;
+}
+
+/* What the replay's page is written from (write_file's ctx). */
+typedef struct ReplayOut {
+	Replay *rec;
+	const char *verdict;
+} ReplayOut;
+
+static int write_replay(FILE *f, void *ctx)
+{
+	const ReplayOut *r = ctx;
+	return replay_write(r->rec, r->verdict, f);
+}
+
+/* What the picture is drawn from (write_file's ctx). */
+typedef struct SvgOut {
+	const Body *body;
+	const Controller *ctl;
+	const Vec2 *trail;
+	int count;
+	const char *title, *verdict;
+} SvgOut;
+
+static int write_svg(FILE *f, void *ctx)
+{
+	const SvgOut *s = ctx;
+	svg_draw(f, &s->body->world, &s->body->table, s->ctl, s->trail, s->count, s->title, s->verdict);
+	return 0;
+}
+
+/* step_wait(stepping): --step: waits for a line on standard input; "q" or the end
+ * of the input stops the waiting (the run goes on to its end). */
+static void step_wait(bool *stepping)
+{
+	if (!*stepping)
+		return;
+	fputs("-- Enter: the next cycle; q: run to the end --\n", stderr);
+	fflush(stdout);
+	char line[64];
+	if (!fgets(line, sizeof line, stdin) || line[0] == 'q')
+		*stepping = false;
+}
+
 /* act(o, body, ctl, cmds, n): the --act run: each command, its outcome, and the
  * mind perceiving the impression that follows (paper 3.1 steps 10-11). */
-static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
+static int run_act(const Options *o, Body *body, Controller *ctl, const MotorCommand *cmds, int n)
 {
+	Replay *rec = o->htmlfile ? replay_new(&body->world, &body->table, NULL, planner_name(o->planner)) : NULL;
+	if (rec)
+		replay_start(rec, &body->world, &body->table, &body->sensed, ctl);
 	for (int i = 0; i < n; i++) {
 		MotorOutcome out;
 		motion_execute_noisy(&body->world, &body->table, &cmds[i], &body->noise, &out);
@@ -203,6 +274,8 @@ static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCo
 		putchar('\n');
 		retina_sense(&body->world, &body->table, &body->sensed);
 		controller_perceive(ctl, &cmds[i], &body->sensed);
+		if (rec)
+			replay_cycle(rec, &body->world, &body->table, &body->sensed, ctl, &cmds[i], &out);
 	}
 	if (!o->any_dump) {
 		bool table_only[DUMP_COUNT] = {[DUMP_TABLE] = true};
@@ -210,6 +283,14 @@ static void run_act(const Options *o, Body *body, Controller *ctl, const MotorCo
 	} else {
 		print_dumps(o->want, body, ctl);
 	}
+	int status = 0;
+	if (rec) {
+		char verdict[64];
+		snprintf(verdict, sizeof verdict, "%d motor commands carried out", n);
+		status = write_file(o->htmlfile, write_replay, &(ReplayOut){rec, verdict});
+		replay_free(rec);
+	}
+	return status;
 }
 
 /* run_task(o, body, ctl, task): the action cycle on a task, then the verdict of the
@@ -226,8 +307,13 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 			printf(", noise %g seed %llu", o->noise, o->seed);
 		putchar('\n');
 		bool first[DUMP_COUNT] = {[DUMP_TABLE] = true, [DUMP_RETINA] = true};
-		print_dumps(o->any_dump || o->verbose ? o->want : first, body, ctl);
+		print_dumps(o->any_dump || o->verbose || o->step ? o->want : first, body, ctl);
 	}
+	bool stepping = o->step && !o->quiet;
+	step_wait(&stepping);
+	Replay *rec = o->htmlfile ? replay_new(&body->world, &body->table, form, planner_name(o->planner)) : NULL;
+	if (rec)
+		replay_start(rec, &body->world, &body->table, &body->sensed, ctl);
 	int cap = 64, count = 0;
 	Vec2 *trail = util_alloc((size_t)cap, sizeof *trail);
 	trail[count++] = body->world.utak;
@@ -240,52 +326,60 @@ static int run_task(const Options *o, Body *body, Controller *ctl, const Task *t
 			break;
 		}
 		cycle++;
+		if (rec)
+			replay_decided(rec, ctl);
 		MotorOutcome out;
 		motion_execute_noisy(&body->world, &body->table, &cmd, &body->noise, &out);
 		trail = util_grow(trail, &cap, count + 1, sizeof *trail);
 		trail[count++] = body->world.utak;
 		retina_sense(&body->world, &body->table, &body->sensed);
 		controller_perceive(ctl, &cmd, &body->sensed);
+		if (rec)
+			replay_cycle(rec, &body->world, &body->table, &body->sensed, ctl, &cmd, &out);
 		if (!o->quiet) {
 			printf("cycle %ld: ", cycle);
 			motion_print(&cmd, &out, stdout);
 			printf(" | %s\n", ctl->note);
-			if (o->verbose)
+			if (o->verbose || o->step)
 				print_dumps(o->want, body, ctl);
+			step_wait(&stepping);
 		}
 	}
 	if (!o->quiet) {
 		bool last[DUMP_COUNT] = {[DUMP_TABLE] = true};
 		print_dumps(last, body, ctl);
 	}
-	if (o->svgfile) {
-		FILE *f = fopen(o->svgfile, "w");
-		if (f) {
-			svg_draw(f, &body->world, &body->table, ctl, trail, count);
-			fclose(f);
-		} else {
-			fprintf(stderr, "utak: %s: cannot write: %s\n", o->svgfile, strerror(errno));
-		}
-	}
-	char why[256];
+	char why[256], verdict[640];
 	bool achieved = judge_task(start, &body->world, &body->table, task, trail, count, why, sizeof why);
-	free(trail);
 	const char *belief = ctl->phase == PHASE_DONE ? "achieved" : "not achieved";
-	if (achieved) {
-		if (ctl->phase == PHASE_DONE)
-			printf("task: achieved (%s, %ld cycles)\n", why, cycle);
-		else
-			printf("task: achieved (%s, %ld cycles; Utak believes it not achieved: %s)\n", why, cycle,
-			       ctl->phase == PHASE_FAILED ? ctl->why : "he was still at work");
-		return 0;
-	}
-	if (out_of_cycles)
-		printf("task: failed: out of cycles (%ld); %s\n", o->max_cycles, why);
+	if (achieved && ctl->phase == PHASE_DONE)
+		snprintf(verdict, sizeof verdict, "task: achieved (%s, %ld cycles)", why, cycle);
+	else if (achieved)
+		snprintf(verdict, sizeof verdict, "task: achieved (%s, %ld cycles; Utak believes it not achieved: %s)", why,
+			 cycle, ctl->phase == PHASE_FAILED ? ctl->why : "he was still at work");
+	else if (out_of_cycles)
+		snprintf(verdict, sizeof verdict, "task: failed: out of cycles (%ld); %s", o->max_cycles, why);
 	else if (ctl->phase == PHASE_FAILED)
-		printf("task: failed: %s; %s\n", ctl->why, why);
+		snprintf(verdict, sizeof verdict, "task: failed: %s; %s", ctl->why, why);
 	else
-		printf("task: failed: %s (Utak believes it %s)\n", why, belief);
-	return 1;
+		snprintf(verdict, sizeof verdict, "task: failed: %s (Utak believes it %s)", why, belief);
+	int status = achieved ? 0 : 1;
+	if (o->svgfile) {
+		char title[400];
+		const char *number = task_paper_number(task);
+		snprintf(title, sizeof title, "%s%s%s in %s", form, number ? ", the paper's task " : "",
+			 number ? number : "", body->world.file);
+		if (write_file(o->svgfile, write_svg, &(SvgOut){body, ctl, trail, count, title, verdict}))
+			status = 2;
+	}
+	if (rec) {
+		if (write_file(o->htmlfile, write_replay, &(ReplayOut){rec, verdict}))
+			status = 2;
+		replay_free(rec);
+	}
+	free(trail);
+	printf("%s\n", verdict);
+	return status;
 }
 
 int main(int argc, char **argv)
@@ -297,6 +391,7 @@ int main(int argc, char **argv)
 		{"verbose", no_argument, NULL, 'v'},	      {"help", no_argument, NULL, 'h'},
 		{"dry-run", no_argument, NULL, 'n'},	      {"version", no_argument, NULL, 'V'},
 		{"noise", required_argument, NULL, 'N'},      {"seed", required_argument, NULL, 'S'},
+		{"html", required_argument, NULL, 'H'},       {"step", no_argument, NULL, 'T'},
 		{NULL, 0, NULL, 0},
 	};
 	Options o = {.planner = PLANNER_SKELETON, .max_cycles = UTAK_MAX_CYCLES, .seed = 1};
@@ -339,6 +434,12 @@ int main(int argc, char **argv)
 		case 's':
 			o.svgfile = optarg;
 			break;
+		case 'H':
+			o.htmlfile = optarg;
+			break;
+		case 'T':
+			o.step = true;
+			break;
 		case 'o':
 			o.outfile = optarg;
 			break;
@@ -372,7 +473,7 @@ int main(int argc, char **argv)
 		return usage_error("too many arguments, from '%s' (quote the TASK)", argv[optind + 2]);
 	const char *path = argv[optind];
 	o.task_text = optind + 1 < argc ? argv[optind + 1] : NULL;
-	if (o.verbose && !o.any_dump)
+	if ((o.verbose || o.step) && !o.any_dump)
 		for (int i = 0; i < DUMP_COUNT; i++)
 			o.want[i] = true;
 	Diag d;
@@ -423,7 +524,7 @@ int main(int argc, char **argv)
 		if (o.task_text)
 			status = run_task(&o, &body, ctl, &task, &start);
 		else
-			run_act(&o, &body, ctl, cmds, ncmds);
+			status = run_act(&o, &body, ctl, cmds, ncmds);
 		controller_free(ctl);
 		free(ctl);
 		free(start.objects);

@@ -9,7 +9,7 @@
 #   plan   base: the spatial planner on any occupancy grid (libutak-plan.a)
 #   body   base: the simulator, paper 2.1-2.2
 #   mind   base, plan: the controller, paper 3
-#   src/   main.c and svg.c own both sides and may use everything
+#   src/   main.c, svg.c and replay.c own both sides and may use everything
 #
 # include/utak/impression.h, the wall itself (an impression goes from body to mind,
 # a motor command from mind to body), belongs to every layer.
@@ -54,7 +54,7 @@ allowed_for() {
 }
 
 # layer_of PATH: the layer of a source or header path; "top" for src/main.c,
-# src/svg.c and the top-level headers other than impression.h.
+# src/svg.c, src/replay.c and the top-level headers other than impression.h.
 layer_of() {
 	case $1 in
 	*/impression.h) echo "wall" ;;
@@ -108,10 +108,11 @@ for src in $sources; do
 done
 
 # Check 2: the symbols. Compile each source on its own, then map every defined
-# symbol to its layer.
+# symbol to its layer. (build/inc holds the replay's viewer, which the build
+# generates for replay.c from src/replay.html.)
 for src in $sources; do
 	obj="$tmp/$(echo "$src" | tr / _).o"
-	if ! ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -c "$src" -o "$obj" 2>"$tmp/err"; then
+	if ! ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -Iinclude -Ibuild/inc -c "$src" -o "$obj" 2>"$tmp/err"; then
 		echo "wall: $src does not compile on its own"; cat "$tmp/err"; status=1; continue
 	fi
 	nm -g --defined-only "$obj" | awk -v l="$(layer_of "$src")" 'NF == 3 {print $3, l}' >>"$tmp/defs"

@@ -84,6 +84,9 @@ static bool make_plan(Controller *c, char *why, size_t size)
 		build_space(c);
 	}
 	Vec2 from = screen_from_model(&c->screen, c->model.utak), to = screen_from_model(&c->screen, c->goal);
+	c->plans_made++;
+	c->plan_x0 = c->screen.x0;
+	c->plan_y0 = c->screen.y0;
 	if (!planner_plan(&c->planner, &c->space, from, to)) {
 		snprintf(why, size, "no path to (%.1f, %.1f)", c->goal.x, c->goal.y);
 		return false;

@@ -710,3 +710,31 @@ bool worldmodel_validate(const WorldModel *m, char *why, size_t size)
 {
 	return modeltree_validate(m, why, size);
 }
+
+bool worldmodel_ring_outlines_object(const WorldModel *m, int32_t r)
+{
+	const ModelRing *hole = &m->ring[r];
+	if (!hole->hole)
+		return false;
+	for (int32_t n = 0; n < m->node_count; n++) {
+		const ModelNode *node = &m->node[n];
+		if (node->kind != NODE_OBJECT)
+			continue;
+		for (int32_t k = 0; k < node->ring_count; k++) {
+			const ModelRing *o = &m->ring[node->first_ring + k];
+			if (o == hole || o->count != hole->count)
+				continue;
+			int32_t found = 0;
+			for (int32_t i = 0; i < hole->count; i++)
+				for (int32_t j = 0; j < o->count; j++)
+					if (m->vertex[hole->first + i].p.x == m->vertex[o->first + j].p.x &&
+					    m->vertex[hole->first + i].p.y == m->vertex[o->first + j].p.y) {
+						found++;
+						break;
+					}
+			if (found == hole->count)
+				return true;
+		}
+	}
+	return false;
+}

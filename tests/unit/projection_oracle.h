@@ -14,7 +14,7 @@
 #include "utak/base/geom.h"
 
 /* Liang-Barsky: the chord of segment ab inside the closed box [x0,x0+1]x[y0,y0+1]. */
-static bool clip(Vec2 a, Vec2 b, double x0, double y0, Vec2 *ca, Vec2 *cb)
+static inline bool clip(Vec2 a, Vec2 b, double x0, double y0, Vec2 *ca, Vec2 *cb)
 {
 	double t0 = 0, t1 = 1, dx = b.x - a.x, dy = b.y - a.y;
 	double p[4] = {-dx, dx, -dy, dy}, q[4] = {a.x - x0, x0 + 1 - a.x, a.y - y0, y0 + 1 - a.y};
@@ -37,10 +37,10 @@ static bool clip(Vec2 a, Vec2 b, double x0, double y0, Vec2 *ca, Vec2 *cb)
 	return true;
 }
 
-static bool strictly_in_square(Vec2 q, int x, int y) { return q.x > x && q.x < x + 1 && q.y > y && q.y < y + 1; }
+static inline bool strictly_in_square(Vec2 q, int x, int y) { return q.x > x && q.x < x + 1 && q.y > y && q.y < y + 1; }
 
 /* oracle(p, x, y): the open square (x, y) meets closed p. */
-static bool oracle(const Polygon *p, int x, int y)
+static inline bool oracle(const Polygon *p, int x, int y)
 {
 	for (int i = 0; i < p->count; i++) {
 		if (strictly_in_square(p->v[i], x, y))
@@ -55,7 +55,7 @@ static bool oracle(const Polygon *p, int x, int y)
 
 /* oracle_outside(p, x, y): square (x, y) is not wholly inside p (the verge rule):
  * its open interior meets p's boundary, or its centre is outside p. */
-static bool oracle_outside(const Polygon *p, int x, int y)
+static inline bool oracle_outside(const Polygon *p, int x, int y)
 {
 	for (int i = 0; i < p->count; i++) {
 		Vec2 ca, cb;

@@ -103,6 +103,12 @@ typedef struct Controller {
 	Box round_rect;		/* and its rectangle when they were laid out */
 	/* Bookkeeping for the trace. */
 	int cycle, replans, stuck;
+	/* For observers (the picture and the replay; the controller never reads them):
+	 * how many times the planner has been run, and the model square of cell (0, 0)
+	 * of the grid it last ran on (the planner's points and cells are in that grid's
+	 * units; the screen is built again every cycle and may have moved since). */
+	int plans_made;
+	int32_t plan_x0, plan_y0;
 	/* Pushing: the squares Utak has stood on since he grasped, for going round in
 	 * circles (CONTROLLER_CIRCLES visits to one square). */
 	int32_t pushed_x[CONTROLLER_MAX_PUSHES], pushed_y[CONTROLLER_MAX_PUSHES];

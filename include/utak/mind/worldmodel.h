@@ -254,5 +254,9 @@ void worldmodel_dump(const WorldModel *m, FILE *f);
  * son $floor; parents and sons agree; rings closed with >= 4 axis-aligned segments
  * and inside their node's rectangle. */
 bool worldmodel_validate(const WorldModel *m, char *why, size_t size);
+/* worldmodel_ring_outlines_object(m, r): ring r is a hole of $floor whose corners
+ * are those of a ring of an object (the object's outline seen from the floor): for
+ * readers that draw each outline once. */
+bool worldmodel_ring_outlines_object(const WorldModel *m, int32_t r);
 
 #endif
