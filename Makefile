@@ -37,7 +37,9 @@ LDLIBS  = -lm
 SAN     = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 CHECKFLAGS = $(CSTD) $(WARN) -Iinclude -Ibuild/inc -O1 -g $(SAN)
 
-LIBSRC  = $(wildcard src/*/*.c) src/svg.c src/replay.c
+# Every module but main.c, which owns the process: src/*.c are the modules that own
+# both sides (the picture, the replay), src/*/*.c the layers.
+LIBSRC  = $(filter-out src/main.c,$(wildcard src/*.c src/*/*.c))
 HDR     = $(wildcard include/utak/*.h include/utak/*/*.h src/*/*.h)
 UNITSRC = $(wildcard tests/unit/test_*.c)
 # The planner library: the layers base and plan, which use nothing else (wall.test.sh).

@@ -15,7 +15,9 @@
 # compares with libtcod; (3) configuration-space erosion times; (4) skelbench: the
 # distance transform, skeleton, pathgraph and a corner-to-corner query on synthetic
 # rooms, random rectangles and a maze of 1024 to 4096 cells a side (linear growth)
-# and on Boston_0_1024; (5) tablebench: loading a 4096 x 4096 TABLE.
+# and on Boston_0_1024; (5) tablebench: loading a 4096 x 4096 TABLE; (6) costbench:
+# a move of 10^6 squares into the verge against one of 10, and the verdict of a
+# shape task against a corner task's, on 4096 objects (issue 14).
 # PATHBENCH_SAMPLE scenarios of each file, evenly spaced, are run, so the whole
 # takes about a minute and a half of CPU, two and a half of wall time on the shared
 # 2-core machine (most of it building the visibility graphs of Boston_0_1024 and
@@ -75,4 +77,7 @@ echo "== tablebench: a 4096 x 4096 TABLE with 200 objects"
 "$benchdir/tablebench" || st=1
 echo "== tablebench: the largest TABLE (8192 x 4096) with the most walls (4096)"
 "$benchdir/tablebench" limits || st=1
+echo
+echo "== costbench: a motor command and a verdict cost what they do (1024 x 1024, 4096 objects)"
+"$benchdir/costbench" || st=1
 exit $st

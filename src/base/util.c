@@ -1,6 +1,8 @@
-/* util.c - allocation that fails loudly (see util.h). Not from the paper: plumbing. */
+/* util.c - allocation that fails loudly, and reading a whole stream (see util.h).
+ * Not from the paper: plumbing. */
 #include "utak/base/util.h"
 
+#include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -65,4 +67,35 @@ void *util_grow(void *p, int *cap, int need, size_t size)
 	}
 	*cap = c;
 	return util_realloc(p, (size_t)c, size);
+}
+
+int util_read_stream(FILE *f, size_t limit, char **buf, size_t *len)
+{
+	size_t cap = 1 << 16, n = 0;
+	char *b = util_alloc(cap, 1);
+	for (;;) {
+		size_t want = cap - 1 - n; /* room for the NUL */
+		if (want > limit + 1 - n)
+			want = limit + 1 - n;
+		size_t got = fread(b + n, 1, want, f);
+		n += got;
+		if (got == 0 || n > limit)
+			break;
+		if (n == cap - 1) {
+			cap *= 2;
+			b = util_realloc(b, cap, 1);
+		}
+	}
+	if (ferror(f)) {
+		int err = errno ? errno : EIO;
+		free(b);
+		*buf = NULL;
+		*len = 0;
+		errno = err;
+		return -1;
+	}
+	b[n] = 0;
+	*buf = b;
+	*len = n;
+	return 0;
 }

@@ -1,6 +1,8 @@
-/* act.c - the reader of motor-command scripts for --act (paper 2.2: the five motor outputs). */
+/* act.c - the reader of motor-command scripts for --act and --act-file (paper 2.2: the
+ * five motor outputs). */
 #include "utak/body/act.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -10,6 +12,7 @@
 #include "utak/base/util.h"
 
 typedef struct ActReader {
+	const char *name; /* "--act", or the script file's name, for diagnostics */
 	const char *s;
 	size_t len, at;
 	int line, col;	/* of s[at], 1-based */
@@ -24,12 +27,21 @@ static void skip_blanks(ActReader *r)
 	}
 }
 
-/* next_word(r, &start, &n): the next word up to a blank, ';' or newline. */
+/* skip_comment(r): a '#' and the rest of its line, up to (not over) the newline. */
+static void skip_comment(ActReader *r)
+{
+	while (r->at < r->len && r->s[r->at] != '\n') {
+		r->at++;
+		r->col++;
+	}
+}
+
+/* next_word(r, &start, &n): the next word up to a blank, ';', '#' or newline. */
 static bool next_word(ActReader *r, size_t *start, size_t *n)
 {
 	skip_blanks(r);
 	*start = r->at;
-	while (r->at < r->len && !strchr(" \t\r\n;", r->s[r->at])) {
+	while (r->at < r->len && !strchr(" \t\r\n;#", r->s[r->at])) {
 		r->at++;
 		r->col++;
 	}
@@ -40,8 +52,8 @@ static bool next_word(ActReader *r, size_t *start, size_t *n)
 static int act_fail(ActReader *r, int col, const char *msg, const char *word, size_t n)
 {
 	if (word)
-		return diag_set(r->d, "--act", r->line, col, "%s '%.*s'", msg, (int)(n > 32 ? 32 : n), word);
-	return diag_set(r->d, "--act", r->line, col, "%s", msg);
+		return diag_set(r->d, r->name, r->line, col, "%s '%.*s'", msg, (int)(n > 32 ? 32 : n), word);
+	return diag_set(r->d, r->name, r->line, col, "%s", msg);
 }
 
 static int read_number(ActReader *r, const char *after, double *v)
@@ -74,14 +86,33 @@ static int read_number(ActReader *r, const char *after, double *v)
 
 int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Diag *d)
 {
-	ActReader r = {.s = text, .len = len, .line = 1, .col = 1, .d = d};
+	return act_parse_named("--act", text, len, cmds, count, d);
+}
+
+int act_read_stream(const char *name, FILE *f, MotorCommand **cmds, int *count, Diag *d)
+{
+	char *buf;
+	size_t len;
+	*cmds = NULL;
+	*count = 0;
+	if (util_read_stream(f, ACT_MAX_BYTES, &buf, &len) != 0)
+		return diag_set(d, name, 0, 0, "cannot read: %s", strerror(errno));
+	int status = act_parse_named(name, buf, len, cmds, count, d);
+	free(buf);
+	return status;
+}
+
+int act_parse_named(const char *name, const char *text, size_t len, MotorCommand **cmds, int *count,
+		    Diag *d)
+{
+	ActReader r = {.name = name, .s = text, .len = len, .line = 1, .col = 1, .d = d};
 	int cap = 0;
 	*cmds = NULL;
 	*count = 0;
 	if (len > ACT_MAX_BYTES)
-		return diag_set(d, "--act", 0, 0, "script is over the limit of %d bytes", ACT_MAX_BYTES);
+		return diag_set(d, name, 0, 0, "script is over the limit of %d bytes", ACT_MAX_BYTES);
 	if (memchr(text, 0, len))
-		return diag_set(d, "--act", 0, 0, "script holds a NUL byte");
+		return diag_set(d, name, 0, 0, "script holds a NUL byte");
 	/* Plain ASCII only, as in a world file: a stray byte would otherwise be
 	 * echoed raw into the diagnostic and onto the user's terminal. */
 	for (size_t i = 0, line = 1, col = 1; i < len; i++, col++) {
@@ -90,7 +121,7 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 			line++;
 			col = 0;
 		} else if ((c < 0x20 && c != '\t' && c != '\r') || c > 0x7e) {
-			return diag_set(d, "--act", (int)line, (int)col,
+			return diag_set(d, name, (int)line, (int)col,
 					"unexpected byte 0x%02x (a script is plain ASCII text)", c);
 		}
 	}
@@ -99,6 +130,10 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 		if (!next_word(&r, &start, &n)) {
 			if (r.at >= r.len)
 				break;
+			if (r.s[r.at] == '#') {
+				skip_comment(&r);
+				continue;
+			}
 			char c = r.s[r.at++];
 			if (c == '\n') {
 				r.line++;
@@ -131,7 +166,7 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 			status = read_number(&r, names[k], &c.deg);
 		if (status == 0) {
 			skip_blanks(&r);
-			if (r.at < r.len && r.s[r.at] != ';' && r.s[r.at] != '\n') {
+			if (r.at < r.len && !strchr(";#\n", r.s[r.at])) {
 				size_t s2, n2;
 				int col2 = r.col;
 				next_word(&r, &s2, &n2);
@@ -141,7 +176,7 @@ int act_parse(const char *text, size_t len, MotorCommand **cmds, int *count, Dia
 			}
 		}
 		if (status == 0 && *count >= ACT_MAX_COMMANDS)
-			status = diag_set(d, "--act", r.line, col, "too many commands (the most is %d)",
+			status = diag_set(d, r.name, r.line, col, "too many commands (the most is %d)",
 					  ACT_MAX_COMMANDS);
 		if (status != 0) {
 			free(*cmds);

@@ -405,34 +405,26 @@ int world_parse(World *w, const char *name, const char *text, size_t len, Diag *
 	return status;
 }
 
+int world_read_stream(World *w, const char *name, FILE *f, Diag *d)
+{
+	*w = (World){0};
+	char *buf;
+	size_t len;
+	if (util_read_stream(f, WORLD_MAX_BYTES, &buf, &len) != 0)
+		return diag_set(d, name, 0, 0, "cannot read (is it a directory?)");
+	int status = world_parse(w, name, buf, len, d);
+	free(buf);
+	return status;
+}
+
 int world_read(World *w, const char *path, Diag *d)
 {
 	*w = (World){0};
 	FILE *f = fopen(path, "rb");
 	if (!f)
 		return diag_set(d, path, 0, 0, "cannot open: %s", strerror(errno));
-	size_t cap = 1 << 16, len = 0;
-	char *buf = util_alloc(cap, 1);
-	for (;;) {
-		size_t got = fread(buf + len, 1, cap - len, f);
-		len += got;
-		if (len > WORLD_MAX_BYTES)
-			break;
-		if (got == 0)
-			break;
-		if (len == cap) {
-			cap *= 2;
-			buf = util_realloc(buf, cap, 1);
-		}
-	}
-	int err = ferror(f);
+	int status = world_read_stream(w, path, f, d);
 	fclose(f);
-	int status;
-	if (err)
-		status = diag_set(d, path, 0, 0, "cannot read (is it a directory?)");
-	else
-		status = world_parse(w, path, buf, len, d);
-	free(buf);
 	return status;
 }
 

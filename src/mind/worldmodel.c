@@ -28,10 +28,10 @@
  *
  * INVARIANTS: worldmodel_validate. MEMORY: the evidence in tiles allocated as they
  * are first seen (worldmodel.h: 12 bytes a square seen, 512 KiB of directory), and
- * the tree's arrays, owned by the WorldModel. COMPLEXITY: an impression costs
- * O(1024) squares to record, O(P x 1024) to search P candidate positions (P <= 49
- * + 9 x the length of the move), O(T) to count the seen window over T tiles, and
- * O(A) to derive the tree, A the seen area. */
+ * the tree's arrays, owned by the WorldModel. COMPLEXITY: an impression costs O(1024)
+ * squares to record, O(P x 1024) to search P candidate positions (P <= 49 + 18 x the
+ * length of the move within sight of the squares seen: wm_line_in_sight), O(T) to
+ * count the seen window over T tiles, and O(A) to derive the tree, A the seen area. */
 #include "utak/mind/worldmodel.h"
 
 #include <math.h>
@@ -63,6 +63,11 @@
 #define WM_LINE_COST 1e-3
 /* Steps along the commanded line when listing candidate positions, squares. */
 #define WM_PATH_STEP 0.5
+/* How far beyond the rectangle of squares seen a point of the commanded line can
+ * lie and still have a candidate that sees one of them: the eye reaches EYE_HALF
+ * squares from Utak's square, a candidate lies within one square of the line, and
+ * one more square covers the rounding of both (wm_line_in_sight). */
+#define WM_SIGHT_MARGIN (EYE_HALF + 2)
 
 /* Own-frame offsets of the touch squares, in Impression.touch order. */
 static const int8_t wm_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0},  {1, -1},
@@ -367,6 +372,7 @@ typedef struct WmSearch {
 	Vec2 from, to;  /* the commanded line: believed point before, predicted after */
 	int32_t bx, by; /* the best so far */
 	double best_key, best_score;
+	int32_t tried;  /* candidates scored */
 } WmSearch;
 
 static void wm_try(WmSearch *s, int32_t x, int32_t y)
@@ -377,6 +383,7 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	if (!(x == ux && y == uy) && e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f &&
 	    e.conf >= WM_BLOCKED_CONF)
 		return; /* Utak cannot stand inside what is surely an object */
+	s->tried++;
 	int32_t compared;
 	double score = s->held ? wm_score_holding(s->m, x, y, s->held, s->under, s->imp, &compared)
 	                       : wm_score(s->m, x, y, s->imp, &compared);
@@ -395,6 +402,44 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 		s->bx = x;
 		s->by = y;
 	}
+}
+
+/* wm_line_in_sight(m, from, to, len, &t0, &t1): the stretch [t0, t1] of the
+ * commanded line from `from` to `to` (t in squares from `from`, len its length)
+ * along which a candidate can see a square the model had seen; false if none.
+ *
+ * WHY: a candidate whose field of view holds no square seen before compares no
+ * cell, so wm_try rejects it (fewer than WORLDMODEL_MIN_COMPARED). Pushing, it
+ * compares only the held object, which rides beside it wherever it is: such a
+ * candidate scores as the prediction does (itself such a place whenever this
+ * clips anything, the line being straight and the window convex) and loses to it
+ * on distance. So the search is the same, and its cost follows what Utak can have
+ * seen, not the command: "move -1000000 -1000000" into the verge a few squares
+ * away tried 2.8 million positions, one projection through the eye each. (Where
+ * the field leaves the evidence window, 256 squares from the start, fewer held
+ * squares are placed and the two may differ; the model is already clipped there.)
+ * ALGORITHM: Liang-Barsky clipping against the seen rectangle grown by
+ * WM_SIGHT_MARGIN. COMPLEXITY: O(1). */
+static bool wm_line_in_sight(const WorldModel *m, Vec2 from, Vec2 to, double len, double *t0, double *t1)
+{
+	*t0 = 0;
+	*t1 = len;
+	if (m->seen_count == 0)
+		return false;
+	double lo[2] = {m->seen_x0 - WM_SIGHT_MARGIN, m->seen_y0 - WM_SIGHT_MARGIN};
+	double hi[2] = {m->seen_x1 + 1 + WM_SIGHT_MARGIN, m->seen_y1 + 1 + WM_SIGHT_MARGIN};
+	double p[2] = {from.x, from.y}, d[2] = {(to.x - from.x) / len, (to.y - from.y) / len};
+	for (int a = 0; a < 2; a++) {
+		if (d[a] == 0) {
+			if (p[a] < lo[a] || p[a] > hi[a])
+				return false;
+			continue;
+		}
+		double ta = (lo[a] - p[a]) / d[a], tb = (hi[a] - p[a]) / d[a];
+		*t0 = fmax(*t0, fmin(ta, tb));
+		*t1 = fmin(*t1, fmax(ta, tb));
+	}
+	return *t0 <= *t1;
 }
 
 /* ---- the held object ------------------------------------------------------------ */
@@ -616,15 +661,19 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	                     : wm_score(m, px, py, imp, &rep->compared);
 
 	/* Disparity: the positions near the prediction and along the commanded line. */
-	WmSearch s = {m, imp, held, under, px, py, from, to, px, py, INFINITY, rep->mismatch};
+	WmSearch s = {m, imp, held, under, px, py, from, to, px, py, INFINITY, rep->mismatch, 0};
 	if (rep->compared >= WORLDMODEL_MIN_COMPARED)
 		s.best_key = rep->mismatch;
 	int32_t r = WORLDMODEL_DISPARITY_RADIUS;
 	for (int32_t dy = r; dy >= -r; dy--)
 		for (int32_t dx = -r; dx <= r; dx++)
 			wm_try(&s, px + dx, py + dy);
-	double len = hypot(to.x - from.x, to.y - from.y);
-	for (double t = 0; t < len; t += WM_PATH_STEP) {
+	/* Only the stretch of the line within sight of the seen squares; its t are
+	 * the multiples of WM_PATH_STEP they always were (exact in binary). */
+	double len = hypot(to.x - from.x, to.y - from.y), t0, t1;
+	bool in_sight = len > 0 && wm_line_in_sight(m, from, to, len, &t0, &t1);
+	for (double t = in_sight ? WM_PATH_STEP * ceil(t0 / WM_PATH_STEP) : len; t < len && t <= t1;
+	     t += WM_PATH_STEP) {
 		Vec2 q = vec2_add(from, vec2_scale(vec2_sub(to, from), t / len));
 		int32_t qx = (int32_t)floor(q.x), qy = (int32_t)floor(q.y);
 		for (int32_t dy = 1; dy >= -1; dy--)
@@ -632,6 +681,7 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 				wm_try(&s, qx + dx, qy + dy);
 	}
 	rep->best_mismatch = s.best_score;
+	rep->candidates = s.tried;
 	if ((s.bx != px || s.by != py) &&
 	    (rep->compared < WORLDMODEL_MIN_COMPARED ||
 	     s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch)) {

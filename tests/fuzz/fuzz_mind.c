@@ -5,7 +5,9 @@
  * INPUT: a world file, a NUL byte, then a task (short form or sentence). Worlds
  * the reader refuses, or over FUZZ_MIND_MAX_SIDE a side, end the run (the reader
  * has its own harness). At most FUZZ_MIND_CYCLES cycles run; after each the
- * simulator's invariants must hold; at the end the judge must give a verdict. */
+ * simulator's invariants must hold; at the end the judge must give a verdict.
+ * Worlds without objects run too (their seeds are in the corpus: one once stopped
+ * the harness itself, on memcpy from NULL). */
 #include <string.h>
 
 #include "fuzz.h"
@@ -43,7 +45,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	}
 	start = w;
 	start.objects = malloc(sizeof *start.objects * ((size_t)w.object_count + 1));
-	memcpy(start.objects, w.objects, sizeof *start.objects * (size_t)w.object_count);
+	FUZZ_CHECK(start.objects != NULL, "out of memory");
+	/* A world without objects has no array at all: memcpy must not see NULL. */
+	if (w.object_count > 0)
+		memcpy(start.objects, w.objects, sizeof *start.objects * (size_t)w.object_count);
 	Controller *c = malloc(sizeof *c);
 	controller_init(c, PLANNER_SKELETON);
 	controller_set_task(c, &task);

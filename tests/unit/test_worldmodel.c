@@ -343,6 +343,53 @@ TEST_CASE(worldmodel_halted_move_found)
 	sim_end(&s, &m);
 }
 
+/* sight_bound(m): the most positions the disparity search may score after a move:
+ * the 49 round the prediction, and 9 for every half square of the commanded line
+ * within WM_SIGHT_MARGIN (EYE_HALF + 2) of the squares seen, whatever the command's
+ * length: that stretch is at most the diagonal of the grown rectangle. */
+static int32_t sight_bound(const WorldModel *m)
+{
+	double margin = 2.0 * (EYE_HALF + 2) + 1;
+	double diagonal = hypot(m->seen_x1 - m->seen_x0 + margin, m->seen_y1 - m->seen_y0 + margin);
+	return 49 + 9 * (int32_t)(2 * diagonal + 2);
+}
+
+/* Moves and pushes of a million squares into the verge a few squares away (issue
+ * 14), against the same commands scaled down to 60 squares, which halt at the same
+ * squares (the simulator says so): the same belief after each, and a search that
+ * scored no more positions than the squares in sight allow (before, one per half
+ * square of the command: 2.8 million for the diagonal move, some 20 s). */
+TEST_CASE(worldmodel_long_moves_cost_what_is_in_sight)
+{
+	const char *text = read_file("worlds/room.w");
+	TEST_CHECK(text != NULL);
+	Sim s, short_s;
+	WorldModel m, short_m;
+	sim_start(&s, &m, text);
+	sim_start(&short_s, &short_m, text);
+	static const char *const steps[][2] = {
+		{"move -10 9", "move -10 9"},       {"grasp", "grasp"},
+		{"push 0 1000000", "push 0 60"},    {"push -1000000 0", "push -60 0"},
+		{"release", "release"},             {"move 1000000 0", "move 60 0"},
+		{"move -1000000 -1000000", "move -60 -60"}, {"move 0 1000000", "move 0 60"},
+	};
+	for (int k = 0; k < 8; k++) {
+		sim_step(&s, &m, steps[k][0]);
+		sim_step(&short_s, &short_m, steps[k][1]);
+		int32_t tx, ty, short_tx, short_ty, bx, by, sx, sy;
+		table_square_of(s.w.utak, &tx, &ty);
+		table_square_of(short_s.w.utak, &short_tx, &short_ty);
+		TEST_CHECK(tx == short_tx && ty == short_ty);
+		worldmodel_utak_square(&m, &bx, &by);
+		worldmodel_utak_square(&short_m, &sx, &sy);
+		TEST_CHECK(bx == sx && by == sy && m.holding == short_m.holding);
+		TEST_CHECK(m.report.candidates <= sight_bound(&m));
+	}
+	TEST_CHECK(m.report.corrected); /* the search did have to find him */
+	sim_end(&short_s, &short_m);
+	sim_end(&s, &m);
+}
+
 /* Grasp, push and turn: the held object hangs under $org and moves with Utak; its
  * believed outline follows the true one. */
 TEST_CASE(worldmodel_held_object_follows)
@@ -477,6 +524,7 @@ int main(void)
 	TEST_RUN(worldmodel_room_walk_outlines);
 	TEST_RUN(worldmodel_disparity_corrects_wrong_belief);
 	TEST_RUN(worldmodel_halted_move_found);
+	TEST_RUN(worldmodel_long_moves_cost_what_is_in_sight);
 	TEST_RUN(worldmodel_held_object_follows);
 	TEST_RUN(worldmodel_push_halted_at_wall);
 	TEST_RUN(worldmodel_halted_at_coarse_wall);

@@ -18,6 +18,7 @@
 #define UTAK_UTIL_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* UtilOutOfMemory(n, size, context): called when n elements of size bytes could
  * not be had; must not return. */
@@ -33,5 +34,11 @@ void *util_alloc(size_t n, size_t size);
 void *util_realloc(void *p, size_t n, size_t size);
 /* util_grow(p, cap, need, size): makes an array of *cap elements hold at least need. */
 void *util_grow(void *p, int *cap, int need, size_t size);
+
+/* util_read_stream(f, limit, &buf, &len): everything f holds, or its first limit + 1
+ * bytes when it holds more (so that the caller can say it is over its limit
+ * without reading the rest). *buf is NUL-terminated and the caller frees it.
+ * Returns 0, or -1 with errno set when reading failed (*buf is then NULL). */
+int util_read_stream(FILE *f, size_t limit, char **buf, size_t *len);
 
 #endif

@@ -57,8 +57,11 @@ typedef struct World {
  * failure fills d ("name:line:col: ...") and returns -1; w is then empty. Checks
  * syntax, limits and each polygon's shape; overlaps are table_build's to find. */
 int world_parse(World *w, const char *name, const char *text, size_t len, Diag *d);
-/* world_read(w, path, d): world_parse on a file's contents. */
+/* world_read(w, path, d): world_parse on a file's contents. world_read_stream(w,
+ * name, f, d): on everything the open stream f holds (standard input, for "-"),
+ * name standing for it in diagnostics. */
 int world_read(World *w, const char *path, Diag *d);
+int world_read_stream(World *w, const char *name, FILE *f, Diag *d);
 void world_free(World *w);
 /* world_write(w, f): the world as a world file that reads back to the same state. */
 void world_write(const World *w, FILE *f);

@@ -161,6 +161,7 @@ typedef struct Accommodation {
 	bool corrected;        /* the disparity search moved the belief */
 	int32_t new_squares;   /* squares seen for the first time */
 	int32_t finer_squares; /* squares seen at a finer resolution than before */
+	int32_t candidates;    /* positions the disparity search scored (its cost) */
 } Accommodation;
 
 typedef struct WorldModel {

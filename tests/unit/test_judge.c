@@ -1,0 +1,112 @@
+/* test_judge.c - the verdict's choice of the object a shape task is about (paper
+ * 2.3; judge.h: "the nearest object of that shape"), against an oracle that knows
+ * the objects from the numbers it wrote into the world file, not from the TABLE.
+ *
+ * Random worlds (seeded): a TABLE with a lattice of cells, in each an axis-aligned
+ * square, a brick (twice as long as wide) or a right triangle of integer corners at a random place in its
+ * cell; Utak at a random cell's corner, in the gap between objects, facing north.
+ * The room is the whole TABLE within its one-square verge, so the sw-corner's best
+ * score (-x - y over free squares) is that of square (1, 1), -2.
+ *   'push square sw-corner', Utak where he began: the judge reports how far short
+ *   of the corner the target is; the oracle's target is the square whose centre
+ *   (x + a/2, y + a/2) is nearest Utak (the lower index among equally near ones),
+ *   and its best square is its south-west one, (x, y): x + y - 2 short.
+ *   'push lshape sw-corner': there is none.
+ * issue 14 made the choice one pass of the TABLE (it was one per object); this
+ * test holds the choice to what it was. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "test.h"
+#include "utak/base/task.h"
+#include "utak/body/judge.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
+
+enum { JT_CELLS = 7, JT_CELL = 16, JT_SIDE = 8 + JT_CELLS * JT_CELL, JT_WORLDS = 24 };
+
+typedef struct JtObject {
+	int kind; /* 0 square, 1 brick, 2 triangle */
+	int x, y, a;
+} JtObject;
+
+static const char *judge_of(const World *w, const Table *t, const char *task_text, char *why, size_t size)
+{
+	Task task;
+	Diag d;
+	if (task_parse(task_text, &task, &d))
+		return NULL;
+	Vec2 trail[1] = {w->utak};
+	judge_task(w, w, t, &task, trail, 1, why, size);
+	return why;
+}
+
+TEST_CASE(judge_shape_target_is_the_nearest)
+{
+	srand(14);
+	for (int n = 0; n < JT_WORLDS; n++) {
+		JtObject obj[JT_CELLS * JT_CELLS];
+		char text[16384];
+		size_t len = 0;
+		len += (size_t)snprintf(text + len, sizeof text - len, "table %d %d\n", JT_SIDE, JT_SIDE);
+		int count = JT_CELLS * JT_CELLS;
+		for (int k = 0; k < count; k++) {
+			JtObject *o = &obj[k];
+			o->kind = rand() % 3;
+			o->a = o->kind == 1 ? 3 + rand() % 3 : 3 + rand() % 7;
+			int b = o->kind == 1 ? 2 * o->a : o->a; /* a brick's aspect, 2, is no square's */
+			o->x = 4 + JT_CELL * (k % JT_CELLS) + 2 + rand() % (JT_CELL - 3 - o->a);
+			o->y = 4 + JT_CELL * (k / JT_CELLS) + 2 + rand() % (JT_CELL - 3 - b);
+			int x = o->x, y = o->y;
+			if (o->kind == 2)
+				len += (size_t)snprintf(text + len, sizeof text - len, "object o%d C %d %d %d %d %d %d\n", k,
+							x, y, x + o->a, y, x, y + o->a);
+			else
+				len += (size_t)snprintf(text + len, sizeof text - len,
+							"object o%d C %d %d %d %d %d %d %d %d\n", k, x, y, x + o->a, y,
+							x + o->a, y + b, x, y + b);
+		}
+		int ux = rand() % JT_CELLS, uy = rand() % JT_CELLS;
+		double utak_x = 4 + JT_CELL * ux + 0.5, utak_y = 4 + JT_CELL * uy + 0.5;
+		len += (size_t)snprintf(text + len, sizeof text - len, "utak %.1f %.1f north\n", utak_x, utak_y);
+		TEST_CHECK(len < sizeof text);
+
+		int best = -1;
+		double best_d2 = 0;
+		for (int k = 0; k < count; k++) {
+			if (obj[k].kind != 0)
+				continue;
+			double dx = obj[k].x + obj[k].a / 2.0 - utak_x, dy = obj[k].y + obj[k].a / 2.0 - utak_y;
+			double d2 = dx * dx + dy * dy;
+			if (best < 0 || d2 < best_d2)
+				best = k, best_d2 = d2;
+		}
+
+		World w;
+		Table t;
+		Diag d;
+		TEST_CHECK(world_parse(&w, "judge.w", text, len, &d) == 0);
+		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		char why[256], want[256];
+		TEST_CHECK(judge_of(&w, &t, "push square sw-corner", why, sizeof why) != NULL);
+		if (best < 0)
+			snprintf(want, sizeof want, "there is no square in this world");
+		else
+			snprintf(want, sizeof want, "the square %d short of the sw-corner (slack %d)",
+				 obj[best].x + obj[best].y - 2, JUDGE_SLACK);
+		if (strcmp(why, want) != 0)
+			fprintf(stderr, "  world %d: judge '%s', oracle '%s'\n", n, why, want);
+		TEST_CHECK(strcmp(why, want) == 0);
+		TEST_CHECK(judge_of(&w, &t, "push lshape sw-corner", why, sizeof why) != NULL);
+		TEST_CHECK(strcmp(why, "there is no lshape in this world") == 0);
+		table_free(&t);
+		world_free(&w);
+	}
+}
+
+int main(void)
+{
+	TEST_RUN(judge_shape_target_is_the_nearest);
+	return TEST_EXIT();
+}
