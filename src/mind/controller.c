@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/carrytask.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/push.h"
 #include "utak/mind/round.h"
@@ -139,12 +140,16 @@ void controller_free(Controller *c)
 	planner_free(&c->planner);
 	path_free(&c->route);
 	path_free(&c->trail);
+	carrytask_delete(c->carry);
+	c->carry = NULL;
 }
 
 void controller_set_task(Controller *c, const Task *t)
 {
 	c->task = *t;
 	c->has_task = true;
+	if (carrytask_applies(t) && !c->carry)
+		c->carry = carrytask_new();
 }
 
 void controller_start(Controller *c, const Impression *first)
@@ -203,6 +208,8 @@ static void arrive(Controller *c)
 		c->surveying = false; /* the corner seen from close by: now the object */
 		return;
 	}
+	if (c->carry && carrytask_arrive(c))
+		return; /* the door or the corner seen from close by: now the object */
 	switch (c->task.kind) {
 	case TASK_GO_NEXT_ROOM:
 		c->phase = PHASE_DONE;
@@ -298,6 +305,8 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 		case PHASE_PUSH:
 			break;
 		}
+		if (c->phase == PHASE_PUSH && c->carry)
+			return carrytask_decide(c, cmd); /* tasks (vi)-(ix): the carry's next command */
 		char why[160];
 		if (!c->have_plan && !make_plan(c, why, sizeof why)) {
 			c->phase = PHASE_FAILED;
@@ -347,6 +356,8 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	if (c->model.report.corrected)
 		n += snprintf(c->note + n, sizeof c->note - (size_t)n, ", position corrected to (%.1f, %.1f)",
 			      c->model.utak.x, c->model.utak.y);
+	if (c->carry)
+		n += carrytask_note(c, c->note + n, sizeof c->note - (size_t)n);
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
 	/* No progress: the same believed point after a move or push, cycle after cycle. */
@@ -364,6 +375,11 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 		c->stuck = 0;
 	}
 	c->last_position = c->model.utak;
+	if (c->carry && c->phase == PHASE_PUSH) {
+		carrytask_perceive(c, cmd); /* its own plan, checked its own way */
+		n += carrytask_note(c, c->note + n, sizeof c->note - (size_t)n);
+		return;
+	}
 	if (cmd->kind == MOTOR_PUSH && c->phase == PHASE_PUSH && push_in_circles(c))
 		return;
 	if (c->phase == PHASE_SEAT) {

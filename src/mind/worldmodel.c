@@ -532,7 +532,7 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 	double c, s;
 	geom_cos_sin(deg, &c, &s);
 	wm_vacate(m, from, saved);
-	int32_t tx = (int32_t)floor(to.x), ty = (int32_t)floor(to.y);
+	int32_t tx = (int32_t)floor(to.x), ty = (int32_t)floor(to.y), n = 0;
 	for (int32_t j = 0; j < m->held_count; j++) {
 		Vec2 centre = vec2(fx + m->held_dx[j] + 0.5, fy + m->held_dy[j] + 0.5);
 		Vec2 moved = vec2_add(geom_rotate(centre, from, c, s), vec2_sub(to, from));
@@ -540,7 +540,16 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 		Evidence *e = nx == tx && ny == ty ? NULL : wm_at(m, nx, ny);
 		if (e)
 			*e = saved[j];
+		/* The held set turns with it (two squares landing on one are one). */
+		bool again = false;
+		for (int32_t i = 0; i < n && !again; i++)
+			again = m->held_dx[i] == nx - tx && m->held_dy[i] == ny - ty;
+		if (!again) {
+			m->held_dx[n] = nx - tx;
+			m->held_dy[n++] = ny - ty;
+		}
 	}
+	m->held_count = n;
 }
 
 /* wm_seen_window(m): counts the squares seen and their rectangle (WorldModel's seen_

@@ -119,8 +119,11 @@ typedef struct Controller {
 	Vec2 seat_from;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
-	char note[200];		/* what this cycle's perception and planning did */
-	char why[200];		/* PHASE_FAILED: why */
+	char note[2048];	/* what this cycle's perception and planning did (and the plan) */
+	char why[300];		/* PHASE_FAILED: why */
+	/* Tasks (vi)-(ix): carrying the object in (x, y, theta) (carrytask.h); NULL
+	 * for the others. */
+	struct CarryTask *carry;
 } Controller;
 
 void controller_init(Controller *c, PlannerKind planner);

@@ -68,6 +68,9 @@ bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const
 int64_t goals_corner_shortfall(Controller *c);
 /* goals_corner_failed(c, short_by): fails the task, saying how far short. */
 void goals_corner_failed(Controller *c, int64_t short_by);
+/* goals_frontier(c, dist, goal): the nearest reachable known-floor cell beside an
+ * unknown one, not yet visited. */
+bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal);
 /* goals_beside(c, k, dist, goal): the reachable free cell beside node k nearest Utak. */
 bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
 /* goals_next_room(c, g, dist, rm, from_room, goal): a reachable cell near the centre
