@@ -382,6 +382,38 @@ static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
 	return count;
 }
 
+/* ct_region_grow(c): around a corner, the squares out of sight of where the object
+ * was are a fact about the fixed walls and that point: what has been seen since the
+ * region was fixed is added to it (nothing is taken away). */
+static void ct_region_grow(Controller *c)
+{
+	CarryTask *ct = c->carry;
+	if (c->task.kind != TASK_PUSH_AROUND_CORNER || !ct->region_fixed)
+		return;
+	Grid old = ct->region;
+	int32_t ox = ct->rx0, oy = ct->ry0;
+	ct->region = (Grid){0};
+	RoomMap rm;
+	ct_roommap_build(c, -1, &rm);
+	ct_region_fix(c, &rm);
+	goals_roommap_free(&rm);
+	/* The union, on a grid holding both. */
+	int32_t x0 = ox < ct->rx0 ? ox : ct->rx0, y0 = oy < ct->ry0 ? oy : ct->ry0;
+	int32_t x1 = ox + old.w > ct->rx0 + ct->region.w ? ox + old.w : ct->rx0 + ct->region.w;
+	int32_t y1 = oy + old.h > ct->ry0 + ct->region.h ? oy + old.h : ct->ry0 + ct->region.h;
+	Grid both;
+	grid_init(&both, x1 - x0, y1 - y0, GRID_BLOCKED);
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++)
+			if (grid_free_at(&old, x - ox, y - oy) || grid_free_at(&ct->region, x - ct->rx0, y - ct->ry0))
+				both.cells[(y - y0) * both.w + (x - x0)] = GRID_FREE;
+	grid_free(&old);
+	grid_free(&ct->region);
+	ct->region = both;
+	ct->rx0 = x0;
+	ct->ry0 = y0;
+}
+
 /* ct_survey_point(c, dist, rm): where to look from: the door of the object's room
  * nearest the object, whose far side has region; for a corner, the reachable
  * square of the region nearest Utak. */
@@ -542,24 +574,29 @@ static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalR
 	CarryGrasp each[CARRYTASK_MAX_GRASPS];
 	CarryResult best;
 	carry_result_init(&best);
-	CarryPlanner cp;
-	carry_init(&cp, &space, NULL);
 	int chosen = -1;
-	for (int open = 0; open <= 1 && chosen < 0; open++) {
-		if (open && ct->regrasps >= CARRYTASK_MAX_REGRASPS)
-			break;
-		double reach = 0; /* the farthest point from a grasp: about its diameter */
-		for (int32_t v = 0; v < shape.count; v++)
-			for (int32_t u = 0; u < v; u++)
-				reach = fmax(reach, hypot(shape.v[v].x - shape.v[u].x, shape.v[v].y - shape.v[u].y));
-		ct_goal_grid(c, &space, open, reach, &goal);
-		CarryGoal cg = {&goal, false, NULL, NULL};
-		chosen = carry_grasp(&cp, &shape, at, n, &cg, each, &best);
-		grid_free(&goal);
-		if (chosen >= 0)
-			ct->to_open_floor = open;
-		else if (!open)
-			snprintf(out->why, sizeof out->why, "%.*s", (int)sizeof out->why - 1, each[0].why);
+	for (int pass = 0; pass < 2 && chosen < 0; pass++) {
+		CarryParams params = carry_params_default();
+		params.angles = pass == 0 ? CARRYTASK_COARSE_ANGLES : CARRY_ANGLES_DEFAULT;
+		CarryPlanner cp;
+		carry_init(&cp, &space, &params);
+		for (int open = 0; open <= 1 && chosen < 0; open++) {
+			if (open && ct->regrasps >= CARRYTASK_MAX_REGRASPS)
+				break;
+			double reach = 0; /* the farthest point from a grasp: about its diameter */
+			for (int32_t v = 0; v < shape.count; v++)
+				for (int32_t u = 0; u < v; u++)
+					reach = fmax(reach, hypot(shape.v[v].x - shape.v[u].x, shape.v[v].y - shape.v[u].y));
+			ct_goal_grid(c, &space, open, reach, &goal);
+			CarryGoal cg = {&goal, false, NULL, NULL};
+			chosen = carry_grasp(&cp, &shape, at, n, &cg, each, &best);
+			grid_free(&goal);
+			if (chosen >= 0)
+				ct->to_open_floor = open;
+			else if (!open)
+				snprintf(out->why, sizeof out->why, "%.*s", (int)sizeof out->why - 1, each[0].why);
+		}
+		carry_free(&cp);
 	}
 	if (chosen >= 0) {
 		ct->grasp_at = screen_to_model(s, at[chosen]);
@@ -570,7 +607,6 @@ static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalR
 		ct_plan_text(c, &best.plan, false);
 	}
 	carry_result_free(&best);
-	carry_free(&cp);
 	grid_free(&space);
 }
 
@@ -675,6 +711,7 @@ static CarryStatus ct_plan_carry(Controller *c, bool *inside, char *why, size_t 
 	CarryTask *ct = c->carry;
 	Vec2 extra = c->start;
 	screen_build(&c->screen, &c->model, &extra, 1);
+	ct_region_grow(c);
 	const Screen *s = &c->screen;
 	Polygon shape = ct_moved(&ct->held, vec2(-s->x0, -s->y0));
 	Grid space, goal;
@@ -684,12 +721,16 @@ static CarryStatus ct_plan_carry(Controller *c, bool *inside, char *why, size_t 
 	for (int32_t v = 0; v < shape.count; v++)
 		reach = fmax(reach, hypot(shape.v[v].x - at.x, shape.v[v].y - at.y));
 	ct_goal_grid(c, &space, ct->to_open_floor, reach, &goal);
-	CarryObject obj = {shape, at, task_shape_name(c->task.shape)};
+	char name[32];
+	snprintf(name, sizeof name, "the %s", task_shape_name(c->task.shape));
+	CarryObject obj = {shape, at, name};
 	*inside = carry_pose_inside(&obj, &goal, at, 0);
 	CarryStatus st = CARRY_FOUND;
-	if (!*inside) {
+	for (int pass = 0; pass < 2 && !*inside && (pass == 0 || st != CARRY_FOUND); pass++) {
+		CarryParams params = carry_params_default();
+		params.angles = pass == 0 ? CARRYTASK_COARSE_ANGLES : CARRY_ANGLES_DEFAULT;
 		CarryPlanner cp;
-		carry_init(&cp, &space, NULL);
+		carry_init(&cp, &space, &params);
 		CarryResult r;
 		carry_result_init(&r);
 		CarryGoal cg = {&goal, false, NULL, NULL};
@@ -727,8 +768,22 @@ bool carrytask_decide(Controller *c, MotorCommand *cmd)
 			bool inside = false;
 			char why[CARRY_WHY];
 			ct->have_carry = false;
-			if (ct_plan_carry(c, &inside, why, sizeof why) != CARRY_FOUND)
-				return ct_fail(c, why);
+			if (ct_plan_carry(c, &inside, why, sizeof why) != CARRY_FOUND) {
+				if (ct->regrasps >= CARRYTASK_MAX_REGRASPS)
+					return ct_fail(c, why);
+				/* No carry from this grasp any more (what was seen or bumped
+				 * into since says so): let go, and choose a grasp again. */
+				ct->regrasps++;
+				ct->to_open_floor = false;
+				ct->stage = CARRY_STAGE_FETCH;
+				ct->have_grasp = false;
+				c->phase = PHASE_TRAVEL;
+				c->have_plan = false;
+				snprintf(ct->plan, sizeof ct->plan, "\n  plan: release and grasp again: %s", why);
+				ct->plan_new = true;
+				*cmd = (MotorCommand){.kind = MOTOR_RELEASE};
+				return true;
+			}
 			if (inside) {
 				*cmd = (MotorCommand){.kind = MOTOR_RELEASE};
 				if (ct->to_open_floor) {

@@ -61,6 +61,11 @@
 #define CARRYTASK_DISPARITY 0.35
 /* Carries planned after the first, before the task is given up as hopeless. */
 #define CARRYTASK_MAX_REPLANS 12
+/* Carries are planned first with quarter turns only, then at carry.h's default
+ * resolution: a quarter turn keeps the held object's squares square, so the world
+ * model (which turns the evidence of those squares with it) predicts the next
+ * impression well; after a turn of 40 degrees it guesses, and may misplace Utak. */
+#define CARRYTASK_COARSE_ANGLES 4
 /* Grasps weighed by carry_grasp, the nearest to Utak first. */
 #define CARRYTASK_MAX_GRASPS 40
 /* Releases and re-grasps allowed in one task. */
