@@ -520,6 +520,21 @@ int carrytask_note(Controller *c, char *note, size_t size)
 	return (size_t)k >= size ? (int)size - 1 : k;
 }
 
+/* ct_name_reason(c, why, out, size): carry_grasp's reason, which names no object
+ * ("the object is ..."), with the task's object named. */
+static void ct_name_reason(const Controller *c, const char *why, char *out, size_t size)
+{
+	static const char anon[] = "the object";
+	char named[CARRY_WHY + 32];
+	if (strncmp(why, anon, sizeof anon - 1) == 0)
+		snprintf(named, sizeof named, "the %s%s", task_shape_name(c->task.shape), why + sizeof anon - 1);
+	else
+		snprintf(named, sizeof named, "%s", why);
+	size_t n = strlen(named) < size ? strlen(named) : size - 1;
+	memcpy(out, named, n);
+	out[n] = '\0';
+}
+
 /* ---- choosing the grasp -------------------------------------------------------- */
 
 /* ct_choose_grasp(c, k, dist, out): carry_grasp over the free squares beside node
@@ -594,7 +609,7 @@ static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalR
 			if (chosen >= 0)
 				ct->to_open_floor = open;
 			else if (!open)
-				snprintf(out->why, sizeof out->why, "%.*s", (int)sizeof out->why - 1, each[0].why);
+				ct_name_reason(c, each[0].why, out->why, sizeof out->why);
 		}
 		carry_free(&cp);
 	}

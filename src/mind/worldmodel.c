@@ -506,6 +506,24 @@ static void wm_prune_held(WorldModel *m)
 	m->held_count = n;
 }
 
+/* wm_refind_held(m, imp): after a turn, the held set found again from what the eye
+ * now shows: wm_carry turned the squares' centres, which for a turn other than a
+ * quarter turn only guesses which squares the object now covers. The guess stays
+ * when the flood finds nothing (or too much: the object against a wall). */
+static void wm_refind_held(WorldModel *m, const Impression *imp)
+{
+	int32_t keep_dx[WORLDMODEL_HELD_MAX], keep_dy[WORLDMODEL_HELD_MAX]; /* 8 KB */
+	int32_t keep = m->held_count;
+	memcpy(keep_dx, m->held_dx, (size_t)keep * sizeof *keep_dx);
+	memcpy(keep_dy, m->held_dy, (size_t)keep * sizeof *keep_dy);
+	wm_find_held(m, imp);
+	if (m->held_count == 0 || m->held_count > 2 * keep + 8) {
+		m->held_count = keep;
+		memcpy(m->held_dx, keep_dx, (size_t)keep * sizeof *keep_dx);
+		memcpy(m->held_dy, keep_dy, (size_t)keep * sizeof *keep_dy);
+	}
+}
+
 /* wm_vacate(m, from, saved): the held object's squares, Utak on `from`, leave their
  * places (predicted floor); their evidence goes to saved. */
 static void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
@@ -710,6 +728,8 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	wm_observe(m, ux, uy, imp);
 	if (held)
 		wm_prune_held(m);
+	if (cmd->kind == MOTOR_TURN && m->holding)
+		wm_refind_held(m, imp);
 	m->last = *imp;
 	m->impressions++;
 	wm_seen_window(m);
