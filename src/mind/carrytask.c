@@ -525,13 +525,13 @@ int carrytask_note(Controller *c, char *note, size_t size)
 static void ct_name_reason(const Controller *c, const char *why, char *out, size_t size)
 {
 	static const char anon[] = "the object";
-	char named[CARRY_WHY + 32];
-	if (strncmp(why, anon, sizeof anon - 1) == 0)
-		snprintf(named, sizeof named, "the %s%s", task_shape_name(c->task.shape), why + sizeof anon - 1);
-	else
-		snprintf(named, sizeof named, "%s", why);
-	size_t n = strlen(named) < size ? strlen(named) : size - 1;
-	memcpy(out, named, n);
+	bool unnamed = strncmp(why, anon, sizeof anon - 1) == 0;
+	const char *part[3] = {unnamed ? "the " : "", unnamed ? task_shape_name(c->task.shape) : "",
+			       unnamed ? why + sizeof anon - 1 : why};
+	size_t n = 0;
+	for (int p = 0; p < 3; p++)
+		for (const char *q = part[p]; *q && n + 1 < size; q++)
+			out[n++] = *q;
 	out[n] = '\0';
 }
 
