@@ -344,7 +344,19 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	return false;
 }
 
+static void perceive(Controller *c, const MotorCommand *cmd, const Impression *imp);
+
 void controller_perceive(Controller *c, const MotorCommand *cmd, const Impression *imp)
+{
+	perceive(c, cmd, imp);
+	if (c->carry) { /* the carry's plan, when one was made this cycle, after the note */
+		size_t n = strlen(c->note);
+		carrytask_note(c, c->note + n, sizeof c->note - n);
+	}
+}
+
+/* perceive(c, cmd, imp): steps 11-13, the note saying what they did. */
+static void perceive(Controller *c, const MotorCommand *cmd, const Impression *imp)
 {
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
@@ -356,8 +368,6 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	if (c->model.report.corrected)
 		n += snprintf(c->note + n, sizeof c->note - (size_t)n, ", position corrected to (%.1f, %.1f)",
 			      c->model.utak.x, c->model.utak.y);
-	if (c->carry)
-		n += carrytask_note(c, c->note + n, sizeof c->note - (size_t)n);
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
 	/* No progress: the same believed point after a move or push, cycle after cycle. */
@@ -377,7 +387,6 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 	c->last_position = c->model.utak;
 	if (c->carry && c->phase == PHASE_PUSH) {
 		carrytask_perceive(c, cmd); /* its own plan, checked its own way */
-		n += carrytask_note(c, c->note + n, sizeof c->note - (size_t)n);
 		return;
 	}
 	if (cmd->kind == MOTOR_PUSH && c->phase == PHASE_PUSH && push_in_circles(c))
