@@ -310,13 +310,13 @@ static void ct_mark_doorway(const RoomMap *rm, const RoomsDoor *d, Grid *region)
  * was seen only coarsely is modelled as an isolated object; a door between two such
  * walls must still be a door. The object carried is space, as are the squares
  * never seen (not fixed: they are blocked in the known grid, as in goals.c). */
-static void ct_roommap_build(const Controller *c, int32_t k, RoomMap *r)
+static void ct_roommap_build(const Controller *c, int32_t k, bool objects_fixed, RoomMap *r)
 {
 	const Screen *s = &c->screen;
 	grid_init(&r->known, s->w, s->h, GRID_BLOCKED);
 	for (int32_t at = 0; at < s->w * s->h; at++) {
 		int32_t l = s->label[at];
-		bool wall_like = l >= 0 && l != k && !c->model.node[l].held;
+		bool wall_like = objects_fixed && l >= 0 && l != k && !c->model.node[l].held;
 		if (l != SCREEN_UNKNOWN && s->fixed.cells[at] == GRID_FREE && !wall_like)
 			r->known.cells[at] = GRID_FREE;
 	}
@@ -394,7 +394,7 @@ static void ct_region_grow(Controller *c)
 	int32_t ox = ct->rx0, oy = ct->ry0;
 	ct->region = (Grid){0};
 	RoomMap rm;
-	ct_roommap_build(c, -1, &rm);
+	ct_roommap_build(c, -1, false, &rm);
 	ct_region_fix(c, &rm);
 	goals_roommap_free(&rm);
 	/* The union, on a grid holding both. */
@@ -658,10 +658,13 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 	if (ct->stage == CARRY_STAGE_LOOK) {
 		/* The place beyond: seen yet? Then fix it, and go and look at it from
 		 * close by (where it may be fixed again, better). */
-		RoomMap own;
-		ct_roommap_build(c, k, &own);
-		bool seen = ct_region_fix(c, &own) > 0 && ct_survey_point(c, dist, &own);
-		goals_roommap_free(&own);
+		bool seen = false;
+		for (int fixed = 0; fixed <= 0 && !seen; fixed++) {
+			RoomMap own;
+			ct_roommap_build(c, k, fixed, &own);
+			seen = ct_region_fix(c, &own) > 0 && ct_survey_point(c, dist, &own);
+			goals_roommap_free(&own);
+		}
 		if (seen) {
 			ct->region_fixed = true;
 			ct->stage = CARRY_STAGE_SURVEY;
@@ -671,7 +674,9 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 			ct->plan_new = true;
 			return true;
 		}
-		out->exploring = out->found = goals_frontier(c, dist, &out->goal);
+		/* Not yet: look further, at the unseen, or else at what was seen only
+		 * coarsely: a wall seen from afar may seem an object standing free. */
+		out->exploring = out->found = goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal);
 		if (!out->found)
 			snprintf(out->why, sizeof out->why, "%s",
 				 c->task.kind == TASK_PUSH_AROUND_CORNER ? "no corner to push round here: nothing out of sight of the object, and nothing left unseen"
@@ -690,7 +695,7 @@ bool carrytask_arrive(Controller *c)
 		/* Seen from close by: fix the goal region now, and fetch the object. */
 		RoomMap rm;
 		int32_t k = goals_find_target(c);
-		ct_roommap_build(c, k, &rm);
+		ct_roommap_build(c, k, false, &rm);
 		CarryTask keep = *ct; /* the region fixed before, should this one be empty */
 		grid_init(&keep.region, ct->region.w, ct->region.h, GRID_BLOCKED);
 		memcpy(keep.region.cells, ct->region.cells, (size_t)ct->region.w * (size_t)ct->region.h);

@@ -323,7 +323,7 @@ bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goa
 
 /* goals_inspect(c, dist): beside the nearest object not yet seen whole in the fovea,
  * where a closer look may show its shape: part of looking for an object. */
-static bool goals_inspect(const Controller *c, const int32_t *dist, Vec2 *goal)
+bool goals_inspect(const Controller *c, const int32_t *dist, Vec2 *goal)
 {
 	const WorldModel *m = &c->model;
 	double best_d = INFINITY;
@@ -437,7 +437,7 @@ void goals_choose(Controller *c, GoalResult *out)
 			}
 			/* Not seen, or not reachable: look further, at the nearer of the
 			 * unseen and the objects seen only coarsely. */
-			Vec2 unseen, coarse;
+			Vec2 unseen = {0}, coarse = {0};
 			bool have_unseen = goals_frontier(c, dist, &unseen);
 			bool have_coarse = k < 0 && goals_inspect(c, dist, &coarse);
 			out->exploring = out->found = have_unseen || have_coarse;

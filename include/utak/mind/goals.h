@@ -71,6 +71,9 @@ void goals_corner_failed(Controller *c, int64_t short_by);
 /* goals_frontier(c, dist, goal): the nearest reachable known-floor cell beside an
  * unknown one, not yet visited. */
 bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal);
+/* goals_inspect(c, dist, goal): beside the nearest object not yet seen whole in the
+ * fovea, where a closer look may show its shape (or show it to be part of a wall). */
+bool goals_inspect(const Controller *c, const int32_t *dist, Vec2 *goal);
 /* goals_beside(c, k, dist, goal): the reachable free cell beside node k nearest Utak. */
 bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
 /* goals_next_room(c, g, dist, rm, from_room, goal): a reachable cell near the centre
