@@ -277,29 +277,41 @@ build/gen/.done: tests/bad/gen.sh
 
 check: build/gen/.done
 
-# ---- the peers side by side (issue 4): make bench-compare ----------------------
+# ---- the peers side by side (issues 4 and 16): make bench-compare ----------------
 #
-#   make bench-compare   utak's distance transform and skeleton against OpenCV's
-#                        exact distance transform, scikit-image's skeletonize and
-#                        OpenCV's Zhang-Suen thinning, in one run on the same
-#                        1024 x 1024 grids (rooms, random rectangles, maze,
-#                        Boston_0_1024): the ratios peer ms / utak ms
+#   make bench-compare   utak's distance transform, skeleton and grid A* (plain and
+#                        with jump points) against OpenCV's exact distance transform
+#                        and Zhang-Suen thinning, scikit-image's skeletonize and
+#                        libtcod's A*, in one run on the same grids at 1024 and 4096
+#                        cells a side (rooms, random rectangles, maze, Boston_0_1024
+#                        and the dao map den520d): medians of repeated runs with
+#                        their spread, the ratios peer / utak, and one read pass
+#                        over the grid beside each job (the physical limit)
 #
 # bench/skelbench.c --compare writes the grids and times utak; bench/compare.py times
-# the peers on the same files and prints the ratios. The peers are Debian's
-# python3-opencv and python3-skimage (installed by tests/fuzz/need.sh when missing),
-# so the script runs under Debian's interpreter, not whatever python3 is first on
-# PATH. The C side stays libc + libm; nothing else depends on this target.
+# the peers on the same files and prints the tables. The peers are Debian's
+# python3-opencv, python3-skimage and libtcod-dev (installed by tests/fuzz/need.sh
+# when missing): libtcod's A* runs through bench/peer/tcodpath.c, built here against
+# Debian's library; the script runs under Debian's interpreter, not whatever python3
+# is first on PATH. The library stays libc + libm; nothing else depends on this target.
 
 DEBIAN_PYTHON ?= /usr/bin/python3
 MOVINGAI      ?= ../shared/data/movingai
 
 bench-compare-deps:
-	@sh tests/fuzz/need.sh python3-opencv python3-skimage
+	@sh tests/fuzz/need.sh python3-opencv python3-skimage libtcod-dev pkg-config
 
-bench-compare: build/rel/bench/skelbench | bench-compare-deps
+build/peer:
+	mkdir -p $@
+
+build/peer/tcodpath: bench/peer/tcodpath.c | bench-compare-deps build/peer
+	$(CC) -O2 -std=c11 $(WARN) -o $@ bench/peer/tcodpath.c \
+	    $$(pkg-config --cflags --libs libtcod) -lm
+
+bench-compare: build/rel/bench/skelbench build/peer/tcodpath | bench-compare-deps
 	OMP_NUM_THREADS=1 $(DEBIAN_PYTHON) bench/compare.py build/rel/bench/skelbench \
-	    build/compare $(MOVINGAI)/maps/cities/Boston_0_1024.map
+	    build/peer/tcodpath build/compare $(MOVINGAI)/maps/cities/Boston_0_1024.map \
+	    $(MOVINGAI)/maps/dao/den520d.map
 
 .PHONY: bench-compare bench-compare-deps
 

@@ -176,13 +176,17 @@ int main(int argc, char **argv)
 	load(text, len, &w, &t);
 	static const char *const tasks[] = {"go ne-corner", "push square sw-corner", "push lshape sw-corner"};
 	double ms[3][COSTBENCH_MAX_REPS], med[3];
+	int64_t read[3];
 	char why[3][256];
 	for (int r = 0; r < reps; r++)
-		for (int i = 0; i < 3; i++)
+		for (int i = 0; i < 3; i++) {
 			ms[i][r] = time_judge(&w, &t, tasks[i], why[i], sizeof why[i]);
+			read[i] = judge_squares_read();
+		}
 	for (int i = 0; i < 3; i++) {
 		med[i] = median(ms[i], reps);
-		printf("  verdict of %-22s %8.2f   (%s)\n", tasks[i], med[i], why[i]);
+		printf("  verdict of %-22s %8.2f   %.1f passes of the TABLE (%s)\n", tasks[i], med[i],
+		       (double)read[i] / ((double)t.w * t.h), why[i]);
 	}
 	printf("  ratio shape / corner verdict: %.2f (square found), %.2f (no lshape: every shape looked at)\n",
 	       med[1] / med[0], med[2] / med[0]);

@@ -31,8 +31,8 @@
  *	  (scenarios where skr is longer than the grid optimum + 1, the issue's bound)
  *	  and fail (no skeleton path, or rope_tighten refused it); each of these last
  *	  two is also a line on stderr, which does not change the exit status.
- *   pathbench --corner [--scale K] MAP ...
- *	Grid A* corner to corner (the free cell nearest the top-left corner to the one
+ *   pathbench --corner [--scale K] [--jump] MAP ...
+ *	Grid A* (with --jump its jump-point search, gridpath.h) corner to corner (the free cell nearest the top-left corner to the one
  *	nearest the bottom-right), each map optionally enlarged K times (every cell
  *	becomes K x K cells), the figure the issue compares with libtcod: length,
  *	cells expanded, best wall-clock ms and best thread-CPU ms of 5 runs.
@@ -137,7 +137,7 @@ static void bench_die_usage(void)
 	        "usage: " PATHBENCH_NAME " [--sample N] [--vis-limit N] [--skel-paths K] FILE.map FILE.scen\n"
 	        "       " PATHBENCH_NAME
 	        " --table [--sample N] [--vis-limit N] [--skel-paths K] MAP SCEN [MAP SCEN ...]\n"
-	        "       " PATHBENCH_NAME " --corner [--scale K] MAP [MAP ...]\n"
+	        "       " PATHBENCH_NAME " --corner [--scale K] [--jump] MAP [MAP ...]\n"
 	        "       " PATHBENCH_NAME " --cspace MAP [MAP ...]\n");
 	exit(2);
 }
@@ -807,7 +807,7 @@ static int bench_nearest_free(const Grid *g, int32_t cx, int32_t cy, int32_t *x,
 /* The repetitions of a corner-to-corner query; the minimum is reported. */
 #define PATHBENCH_CORNER_REPEAT 5
 
-static int bench_corner(int argc, char **argv, int scale)
+static int bench_corner(int argc, char **argv, int scale, bool jump)
 {
 	printf("# grid A* corner to corner, best of %d runs: wall clock and thread CPU time\n",
 	       PATHBENCH_CORNER_REPEAT);
@@ -824,6 +824,8 @@ static int bench_corner(int argc, char **argv, int scale)
 			gridpath_init(&bm.astar, &bm.grid);
 			bm.free_cells *= (int64_t)scale * scale;
 		}
+		if (jump)
+			bm.astar.method = GRIDPATH_JUMP;
 		int32_t sx, sy, gx, gy;
 		char name[64], size[32];
 		snprintf(name, sizeof name, "%s", bench_basename(argv[m]));
@@ -927,6 +929,7 @@ static int bench_cspace(int argc, char **argv)
 int main(int argc, char **argv)
 {
 	int table = 0, corner = 0, cspace = 0, sample = 0, scale = 1, a = 1;
+	bool jump = false;
 	for (; a < argc && strncmp(argv[a], "--", 2) == 0; a++) {
 		if (strcmp(argv[a], "--table") == 0)
 			table = 1;
@@ -934,6 +937,8 @@ int main(int argc, char **argv)
 			corner = 1;
 		else if (strcmp(argv[a], "--cspace") == 0)
 			cspace = 1;
+		else if (strcmp(argv[a], "--jump") == 0)
+			jump = true;
 		else if ((strcmp(argv[a], "--sample") == 0 || strcmp(argv[a], "--scale") == 0 ||
 		          strcmp(argv[a], "--vis-limit") == 0 ||
 		          strcmp(argv[a], "--skel-paths") == 0) &&
@@ -967,7 +972,7 @@ int main(int argc, char **argv)
 	if (scale > 16)
 		bench_die_usage();
 	if (corner)
-		return argc - a >= 1 ? bench_corner(argc - a, argv + a, scale)
+		return argc - a >= 1 ? bench_corner(argc - a, argv + a, scale, jump)
 		                     : (bench_die_usage(), 2);
 	if (table)
 		return bench_table(argc - a, argv + a, sample);

@@ -9,21 +9,25 @@
  * Grids, all from a fixed seed: "rooms" (a lattice of rooms 64 cells wide whose walls
  * have doors), "rects" (random rectangles covering about a quarter of the grid), "maze"
  * (a perfect maze by randomised depth-first search, corridors 3 cells wide), each at
- * 1024, 2048 and 4096 cells a side. Each figure is the best of REPEATS runs (default
- * 3): the least disturbed by the rest of the machine. The first run of a size also pays
+ * 256, 512, 1024, 2048 and 4096 cells a side (linear costs show as even ns/c columns).
+ * Each figure is the best of REPEATS runs (default 3): the least disturbed by the rest of the machine. The first run of a size also pays
  * for first touching its memory; the later runs reuse the skeleton's working memory,
  * as a planner that recomputes the skeleton of a screen of one size would. The query runs from near
  * one corner to near the opposite one and reports the pathgraph vertices it expanded.
  *
  *   skelbench --compare DIR [MAP...]
- * The utak side of `make bench-compare` (bench/compare.py): writes the 1024 x 1024
- * rooms, rects and maze grids and each MAP into DIR as NAME.pgm (binary PGM, 255 free,
- * 0 blocked, first row y = 0) with NAME.d2 (the distance transform: w h int32_t dist2
- * values, native byte order, for compare.py to check OpenCV's against), and prints one
- * line per grid, "grid NAME W H EDT_MS SKEL_MS SKEL_CELLS", the best of
- * SKELBENCH_COMPARE_REPEAT runs of skeleton_edt and of skeleton_compute (its own
- * distance transform included), thread CPU time as above. compare.py times the peers
- * on the same files in the same run. */
+ * The utak side of `make bench-compare` (bench/compare.py): writes the rooms, rects and
+ * maze grids and each MAP (scaled by a whole factor and cut, bench_fit) at 1024 and
+ * 4096 cells a side into DIR as NAME-SIDE.pgm (binary PGM, 255 free, 0 blocked, first
+ * row y = 0) with NAME-SIDE.d2 (the distance transform: w h int32_t dist2 values,
+ * native byte order, for compare.py to check OpenCV's against), and prints one line
+ * per grid: "grid NAME W H ends SX SY GX GY len A* JPS exp A* JPS skcells N" and then,
+ * for each job, its key and the median, least and most of SKELBENCH_COMPARE_REPEAT
+ * runs (thread CPU ms): read (one pass reading the grid, the physical limit), edt,
+ * skel (its distance transform included), pg (pathgraph_build), astar and jps
+ * (gridpath_find between the ends by plain A* and by the jump-point search; the ends
+ * as bench_ends picks them). Exit 2 when the two searches' lengths differ.
+ * compare.py times the peers on the same files in the same run. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +35,7 @@
 #include <time.h>
 
 #include "utak/plan/grid.h"
+#include "utak/plan/gridpath.h"
 #include "utak/plan/path.h"
 #include "utak/plan/pathgraph.h"
 #include "utak/plan/skeleton.h"
@@ -361,17 +366,52 @@ static bool bench_load_map(const char *path, Grid *g)
 	return true;
 }
 
-/* Runs per figure in --compare mode; compare.py takes the best of as many. */
-#define SKELBENCH_COMPARE_REPEAT 3
+/* Runs per figure in --compare mode (at least 3): each figure is their median, with
+ * the least and the most beside it. */
+#define SKELBENCH_COMPARE_REPEAT 5
 
-/* bench_write_compare(dir, name, g): the grid as DIR/NAME.pgm, its distance transform
- * as DIR/NAME.d2, and the line of times (see --compare above). False when a file
- * cannot be written. */
+/* A figure of --compare: the median of the runs and their spread. */
+typedef struct BenchFigure {
+	double median, lo, hi;
+} BenchFigure;
+
+static int bench_cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static BenchFigure bench_figure(double *t, int n)
+{
+	qsort(t, (size_t)n, sizeof *t, bench_cmp_double);
+	return (BenchFigure){n % 2 ? t[n / 2] : (t[n / 2 - 1] + t[n / 2]) / 2, t[0], t[n - 1]};
+}
+
+static void bench_print_figure(const char *key, BenchFigure f)
+{
+	printf(" %s %.3f %.3f %.3f", key, f.median, f.lo, f.hi);
+}
+
+/* bench_read_pass(g): one pass reading every byte of the grid, the least any job
+ * on it must do: the physical limit printed beside each job. The sum is returned so
+ * that the compiler keeps the loop. */
+static uint64_t bench_read_pass(const Grid *g)
+{
+	const size_t n = (size_t)g->w * g->h;
+	uint64_t sum = 0;
+	for (size_t i = 0; i < n; i++)
+		sum += g->cells[i];
+	return sum;
+}
+
+/* bench_write_compare(dir, name, g): the grid as DIR/NAME-SIDE.pgm, its distance
+ * transform as DIR/NAME-SIDE.d2, and its line of figures (see --compare above). False
+ * when a file cannot be written. */
 static bool bench_write_compare(const char *dir, const char *name, const Grid *g)
 {
 	const size_t n = (size_t)g->w * g->h;
 	char path[4096];
-	snprintf(path, sizeof path, "%s/%s.pgm", dir, name);
+	snprintf(path, sizeof path, "%s/%s-%d.pgm", dir, name, (int)g->w);
 	FILE *f = fopen(path, "wb");
 	if (!f)
 		return false;
@@ -382,27 +422,87 @@ static bool bench_write_compare(const char *dir, const char *name, const Grid *g
 		return false;
 	int32_t *d2 = malloc(sizeof *d2 * n);
 	Skeleton s;
+	Pathgraph pg;
+	GridPathSearch astar, jump;
+	Path path_a, path_j;
 	skeleton_init(&s);
-	double t_edt = HUGE_VAL, t_skel = HUGE_VAL;
+	pathgraph_init(&pg);
+	path_init(&path_a);
+	path_init(&path_j);
+	gridpath_init(&astar, g);
+	gridpath_init(&jump, g);
+	jump.method = GRIDPATH_JUMP;
+	Vec2 from, to;
+	bench_ends(g, &from, &to);
+	const int32_t sx = (int32_t)from.x, sy = (int32_t)from.y, gx = (int32_t)to.x,
+	              gy = (int32_t)to.y;
+	enum { READ, EDT, SKEL, GRAPH, ASTAR, JUMP, JOBS };
+	static const char *const keys[JOBS] = {"read", "edt", "skel", "pg", "astar", "jps"};
+	double t[JOBS][SKELBENCH_COMPARE_REPEAT];
+	double len_a = -1, len_j = -1;
+	volatile uint64_t sink = 0;
 	for (int r = 0; r < SKELBENCH_COMPARE_REPEAT; r++) {
 		double t0 = bench_now_ms();
-		skeleton_edt(g, d2);
+		sink += bench_read_pass(g);
 		double t1 = bench_now_ms();
-		skeleton_compute(&s, g);
+		skeleton_edt(g, d2);
 		double t2 = bench_now_ms();
-		t_edt = fmin(t_edt, t1 - t0);
-		t_skel = fmin(t_skel, t2 - t1);
+		skeleton_compute(&s, g);
+		double t3 = bench_now_ms();
+		pathgraph_build(&pg, &s, g);
+		double t4 = bench_now_ms();
+		gridpath_find(&astar, sx, sy, gx, gy, &path_a, &len_a);
+		double t5 = bench_now_ms();
+		gridpath_find(&jump, sx, sy, gx, gy, &path_j, &len_j);
+		double t6 = bench_now_ms();
+		t[READ][r] = t1 - t0;
+		t[EDT][r] = t2 - t1;
+		t[SKEL][r] = t3 - t2;
+		t[GRAPH][r] = t4 - t3;
+		t[ASTAR][r] = t5 - t4;
+		t[JUMP][r] = t6 - t5;
 	}
-	snprintf(path, sizeof path, "%s/%s.d2", dir, name);
+	(void)sink;
+	snprintf(path, sizeof path, "%s/%s-%d.d2", dir, name, (int)g->w);
 	f = fopen(path, "wb");
 	bool ok = f && fwrite(d2, sizeof *d2, n, f) == n;
 	ok = f && fclose(f) == 0 && ok;
-	printf("grid %s %d %d %.3f %.3f %d\n", name, (int)g->w, (int)g->h, t_edt, t_skel,
-	       (int)s.count);
+	printf("grid %s %d %d ends %d %d %d %d len %.4f %.4f exp %lld %lld skcells %d", name,
+	       (int)g->w, (int)g->h, (int)sx, (int)sy, (int)gx, (int)gy, len_a, len_j,
+	       (long long)path_a.expanded, (long long)path_j.expanded, (int)s.count);
+	for (int j = 0; j < JOBS; j++)
+		bench_print_figure(keys[j], bench_figure(t[j], SKELBENCH_COMPARE_REPEAT));
+	printf("\n");
 	fflush(stdout);
+	gridpath_free(&astar);
+	gridpath_free(&jump);
+	path_free(&path_a);
+	path_free(&path_j);
+	pathgraph_free(&pg);
 	skeleton_free(&s);
 	free(d2);
-	return ok;
+	return ok && len_a == len_j;
+}
+
+/* bench_fit(g, side): g scaled by the least whole factor that makes it at least side
+ * cells each way (each cell becoming k x k), then cut to side x side: a Moving AI
+ * map at the comparison's sizes. */
+static void bench_fit(Grid *g, int32_t side)
+{
+	int32_t big = g->w > g->h ? g->w : g->h;
+	int32_t small = g->w < g->h ? g->w : g->h;
+	int32_t k = (side + small - 1) / small;
+	(void)big;
+	Grid out;
+	grid_init(&out, side, side, GRID_BLOCKED);
+	for (int32_t y = 0; y < side; y++)
+		for (int32_t x = 0; x < side; x++) {
+			int32_t ox = x / k, oy = y / k;
+			if (ox < g->w && oy < g->h)
+				out.cells[(size_t)y * side + x] = g->cells[(size_t)oy * g->w + ox];
+		}
+	grid_free(g);
+	*g = out;
 }
 
 /* bench_compare(dir, maps, count): --compare (see the top of the file). */
@@ -410,35 +510,41 @@ static int bench_compare(const char *dir, char **maps, int count)
 {
 	static const char *const names[] = {"rooms", "rects", "maze"};
 	void (*const make[])(Grid *, int32_t) = {bench_rooms, bench_rects, bench_maze};
-	for (int k = 0; k < 3; k++) {
-		Grid g;
-		bench_seed = 2026;
-		make[k](&g, 1024);
-		bool ok = bench_write_compare(dir, names[k], &g);
-		grid_free(&g);
-		if (!ok) {
-			fprintf(stderr, "skelbench: %s: cannot write the files of %s\n", dir, names[k]);
-			return 2;
+	static const int32_t sides[] = {1024, 4096};
+	for (int z = 0; z < 2; z++) {
+		for (int k = 0; k < 3; k++) {
+			Grid g;
+			bench_seed = 2026;
+			make[k](&g, sides[z]);
+			bool ok = bench_write_compare(dir, names[k], &g);
+			grid_free(&g);
+			if (!ok) {
+				fprintf(stderr, "skelbench: %s: cannot write the files of %s\n", dir,
+				        names[k]);
+				return 2;
+			}
 		}
-	}
-	for (int k = 0; k < count; k++) {
-		Grid g;
-		if (!bench_load_map(maps[k], &g)) {
-			fprintf(stderr, "skelbench: %s: not a readable .map file\n", maps[k]);
-			return 2;
-		}
-		/* The name without directory and ".map". */
-		char name[256];
-		const char *base = strrchr(maps[k], '/');
-		snprintf(name, sizeof name, "%s", base ? base + 1 : maps[k]);
-		char *dot = strrchr(name, '.');
-		if (dot && strcmp(dot, ".map") == 0)
-			*dot = '\0';
-		bool ok = bench_write_compare(dir, name, &g);
-		grid_free(&g);
-		if (!ok) {
-			fprintf(stderr, "skelbench: %s: cannot write the files of %s\n", dir, name);
-			return 2;
+		for (int k = 0; k < count; k++) {
+			Grid g;
+			if (!bench_load_map(maps[k], &g)) {
+				fprintf(stderr, "skelbench: %s: not a readable .map file\n", maps[k]);
+				return 2;
+			}
+			bench_fit(&g, sides[z]);
+			/* The name without directory and ".map". */
+			char name[256];
+			const char *base = strrchr(maps[k], '/');
+			snprintf(name, sizeof name, "%s", base ? base + 1 : maps[k]);
+			char *dot = strrchr(name, '.');
+			if (dot && strcmp(dot, ".map") == 0)
+				*dot = '\0';
+			bool ok = bench_write_compare(dir, name, &g);
+			grid_free(&g);
+			if (!ok) {
+				fprintf(stderr, "skelbench: %s: cannot write the files of %s\n", dir,
+				        name);
+				return 2;
+			}
 		}
 	}
 	return 0;
@@ -456,8 +562,8 @@ int main(int argc, char **argv)
 	printf("%-6s %5s %9s | %7s %5s | %7s %5s | %6s %5s | %6s %6s %7s | %7s %6s %6s\n", "grid",
 	       "side", "cells", "edt ms", "ns/c", "skel ms", "ns/c", "pg ms", "ns/c", "q ms",
 	       "expand", "length", "skcells", "verts", "edges");
-	static const int32_t sides[] = {1024, 2048, 4096};
-	for (int k = 0; k < 3 && sides[k] <= largest; k++) {
+	static const int32_t sides[] = {256, 512, 1024, 2048, 4096};
+	for (int k = 0; k < 5 && sides[k] <= largest; k++) {
 		Grid g;
 		bench_seed = 2026;
 		bench_rooms(&g, sides[k]);

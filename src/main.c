@@ -63,7 +63,7 @@ static const char usage_text[] =
 	"  --step            print every dump after each cycle and wait for Enter\n"
 	"  -q, --quiet       print only the verdict of a task\n"
 	"  -v, --verbose     print every dump after every cycle\n"
-	"  -o FILE           write the final state as a world file\n"
+	"  -o FILE           write the final state as a world file (- standard output)\n"
 	"  -n, --dry-run     read WORLD and TASK (or the --act script), say how it reads,\n"
 	"                    check the output paths, and stop\n"
 	"  -h, --help        this text\n"
@@ -336,9 +336,18 @@ static int check_options(const Options *o)
 		return usage_error("%s", "give either --act or --act-file, not both");
 	if (o->dry_run && !o->task_text && !o->act && !o->act_file)
 		return usage_error("%s", "-n, --dry-run needs a TASK (or --act) to read");
+	if (!o->world_path[0])
+		return usage_error("%s", "WORLD: the file name is empty");
 	const char *file = script_file(o);
+	if (file && !file[0])
+		return usage_error("%s: the file name is empty", o->act_file ? "--act-file" : "--act @FILE");
 	if (file && strcmp(file, "-") == 0 && strcmp(o->world_path, "-") == 0)
 		return usage_error("%s", "standard input can be WORLD or the --act script, not both");
+	/* --step waits for Enter on standard input: a world or script read from it
+	 * would leave it at its end, and each Enter would be taken from the file. */
+	bool from_stdin = strcmp(o->world_path, "-") == 0 || (file && strcmp(file, "-") == 0);
+	if (o->step && !o->quiet && from_stdin)
+		return usage_error("%s", "--step waits on standard input, so WORLD or the script cannot be '-'");
 	for (int i = 0; i < OUT_COUNT; i++)
 		if (o->out_path[i] && !o->out_path[i][0])
 			return usage_error("%s: the file name is empty", output_option[i]);
@@ -442,7 +451,7 @@ static void outputs_guard(void)
 static int outputs_open(const Options *o, Output out[OUT_COUNT])
 {
 	for (int i = 0; i < OUT_COUNT; i++)
-		out[i] = (Output){.stream = NULL, .slot = -1};
+		out[i] = (Output){.stream = NULL, .slot = -1, .standard = false};
 	for (int i = 0; i < OUT_COUNT; i++) {
 		Diag d;
 		if (o->out_path[i] && output_open(&out[i], o->out_path[i], &d)) {

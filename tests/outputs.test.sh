@@ -12,6 +12,9 @@
 #   - a task that fails with an output that fails: 2 wins over 1; a task that fails
 #     with outputs that work: 1, and the outputs are written;
 #   - a replaced file keeps its permission bits, a symbolic link stays a link;
+#   - '-' and /dev/stdout are standard output, the contents after the trace, even
+#     when standard output is a regular file (opened anew, /dev/stdout overwrote
+#     the trace from its start);
 #   - killed mid-run (SIGTERM), no temporary is left and the target is untouched;
 #   - no run leaves a temporary (.utak-*) behind.
 tmp=${TMPDIR:-/tmp}/utak-outputs.$$
@@ -99,6 +102,18 @@ ln -s mode.w "$tmp/link.w"
 "$UTAK" "$tmp/link.w" --act "move 0 1" -o "$tmp/link.w" >/dev/null || fail "link: status $?"
 [ -L "$tmp/link.w" ] || fail "link: the link was replaced by a file"
 grep -q '^utak 21\.5 14\.5 north$' "$tmp/mode.w" || fail "link: the file it names was not written"
+
+# Standard output as an output: the trace, then the world file, whole. The world
+# part must read back as -o elsewhere writes it.
+"$UTAK" worlds/room.w --act "move 1 1" -o "$tmp/std.w" >"$tmp/trace" 2>&1 || fail "stdout: reference status $?"
+for o in - /dev/stdout; do
+	"$UTAK" worlds/room.w --act "move 1 1" -o "$o" >"$tmp/both" 2>"$tmp/err"; st=$?
+	expect "-o $o" 0 ""
+	cat "$tmp/trace" "$tmp/std.w" | cmp -s - "$tmp/both" || fail "-o $o: not the trace followed by the world"
+done
+[ ! -e ./- ] || fail "-o -: a file named '-' was made"
+"$UTAK" worlds/room.w --act "move 1 1" -o - --svg /dev/stdout >/dev/null 2>"$tmp/err"; st=$?
+expect "-o - --svg /dev/stdout" 2 "utak: -o and --svg name the same file '/dev/stdout' (utak --help for usage)"
 
 # SIGTERM while an output is open: the --svg FIFO has no reader, so utak waits in
 # opening it, after -o's temporary exists; killed there, it leaves nothing.

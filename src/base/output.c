@@ -136,12 +136,31 @@ static int open_temp(Output *o, const struct stat *st, bool exists)
 	return 0;
 }
 
+/* standard_stream(path): stdout or stderr when path names the file it is open on
+ * ("-" always standard output), else NULL. */
+static FILE *standard_stream(const char *path)
+{
+	if (strcmp(path, "-") == 0)
+		return stdout;
+	struct stat st, sf;
+	if (stat(path, &st) != 0)
+		return NULL;
+	if (fstat(STDOUT_FILENO, &sf) == 0 && sf.st_dev == st.st_dev && sf.st_ino == st.st_ino)
+		return stdout;
+	if (fstat(STDERR_FILENO, &sf) == 0 && sf.st_dev == st.st_dev && sf.st_ino == st.st_ino)
+		return stderr;
+	return NULL;
+}
+
 int output_open(Output *o, const char *path, Diag *d)
 {
 	o->stream = NULL;
 	o->slot = -1;
+	o->standard = false;
 	o->target[0] = 0;
 	output_set_name(o, path);
+	if (strcmp(path, "-") == 0)
+		output_set_name(o, "standard output");
 	size_t n = strlen(path);
 	int err = 0;
 	if (n == 0)
@@ -153,7 +172,7 @@ int output_open(Output *o, const char *path, Diag *d)
 	memcpy(o->target, path, n + 1);
 	struct stat st;
 	bool exists = false;
-	if (!in_place(path)) {
+	if (!in_place(path) && strcmp(path, "-") != 0) {
 		err = resolve(o, path, &st, &exists);
 		if (err == ENOENT && exists)
 			return diag_set(d, o->name, 0, 0, "a symbolic link to a file that does not exist");
@@ -168,8 +187,12 @@ int output_open(Output *o, const char *path, Diag *d)
 		if (o->stream)
 			return 0;
 	}
-	/* A device, FIFO or socket, or a path under /dev/ or /proc/: in place. */
-	o->stream = fopen(o->target, "w");
+	/* A device, FIFO or socket, or a path under /dev/ or /proc/: in place; through
+	 * the program's own stream when it is standard output or error. */
+	o->stream = standard_stream(o->target);
+	o->standard = o->stream != NULL;
+	if (!o->stream)
+		o->stream = fopen(o->target, "w");
 	if (!o->stream)
 		return diag_set(d, o->name, 0, 0, "%s", strerror(errno));
 	return 0;
@@ -219,7 +242,7 @@ int output_commit(Output *o, Diag *d)
 	 * device written in place is not synced (a terminal or pipe refuses). */
 	if (!err && o->slot >= 0 && fsync(fileno(o->stream)) != 0 && errno != EINVAL)
 		err = errno;
-	if (fclose(o->stream) != 0 && !err)
+	if (!o->standard && fclose(o->stream) != 0 && !err)
 		err = errno ? errno : EIO;
 	o->stream = NULL;
 	if (!err && o->slot >= 0 && rename(output_temp[o->slot], o->target) != 0)
@@ -236,7 +259,7 @@ int output_commit(Output *o, Diag *d)
 
 void output_abandon(Output *o)
 {
-	if (o->stream)
+	if (o->stream && !o->standard)
 		fclose(o->stream);
 	o->stream = NULL;
 	release(o, true);
@@ -256,6 +279,8 @@ bool output_same(const char *a, const char *b)
 	struct stat sa, sb;
 	if (strcmp(a, b) == 0)
 		return true;
+	a = strcmp(a, "-") == 0 ? "/dev/stdout" : a;
+	b = strcmp(b, "-") == 0 ? "/dev/stdout" : b;
 	return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 

@@ -13,6 +13,15 @@
 #include "utak/plan/skeleton.h"
 #include "utak/base/util.h"
 
+/* Squares of a TABLE read by the current judge_task's own passes: its cost, which
+ * judge_squares_read reports to tests and benchmarks. */
+static int64_t judge_read;
+
+int64_t judge_squares_read(void)
+{
+	return judge_read;
+}
+
 /* The fixed space and its rooms. The pathgraph borrows the grid and skeleton. */
 typedef struct Fixed {
 	Grid grid;
@@ -24,6 +33,7 @@ typedef struct Fixed {
 static void fixed_build(Fixed *f, const Table *t)
 {
 	grid_init(&f->grid, t->w, t->h, GRID_FREE);
+	judge_read += (int64_t)t->w * t->h;
 	for (int64_t i = 0; i < (int64_t)t->w * t->h; i++)
 		if (t->owner[i] == TABLE_VERGE)
 			f->grid.cells[i] = GRID_BLOCKED;
@@ -87,6 +97,7 @@ static ObjectSquares *objects_squares(const Table *t, int32_t n)
 	ObjectSquares *o = util_alloc((size_t)(n > 0 ? n : 1), sizeof *o);
 	for (int32_t k = 0; k < n; k++)
 		o[k] = (ObjectSquares){t->w, t->h, -1, -1, 0, 0, 0};
+	judge_read += (int64_t)t->w * t->h;
 	for (int32_t y = 0; y < t->h; y++)
 		for (int32_t x = 0; x < t->w; x++) {
 			int32_t k = t->owner[(int64_t)y * t->w + x] - 1;
@@ -125,6 +136,7 @@ static Shape object_shape(const Table *t, const ObjectSquares *o, int32_t k)
 		return SHAPE_NONE;
 	int32_t w = o->x1 - o->x0 + 1, h = o->y1 - o->y0 + 1;
 	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
+	judge_read += (int64_t)w * h;
 	for (int32_t y = 0; y < h; y++)
 		for (int32_t x = 0; x < w; x++)
 			mask[y * w + x] = t->owner[(int64_t)(y + o->y0) * t->w + x + o->x0] == k + 1;
@@ -173,6 +185,7 @@ static int32_t target(const World *start, const Table *t0, Shape shape)
 bool judge_task(const World *start, const World *end, const Table *table, const Task *task, const Vec2 *trail,
 		int n, char *why, size_t size)
 {
+	judge_read = 0;
 	Table t0;
 	Diag d;
 	if (table_build(&t0, start, &d)) {
@@ -197,6 +210,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 	case TASK_GO_CORNER:
 	case TASK_PUSH_CORNER: {
 		int64_t best = INT64_MIN;
+		judge_read += (int64_t)table->w * table->h;
 		for (int32_t y = 0; y < table->h; y++)
 			for (int32_t x = 0; x < table->w; x++)
 				if (rooms_at(&f.rooms, x, y) == start_room)
@@ -205,6 +219,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		if (task->kind == TASK_GO_CORNER) {
 			got = end_room == start_room ? score(h, task->corner, ex, ey) : INT64_MIN;
 		} else {
+			judge_read += (int64_t)table->w * table->h;
 			for (int32_t y = 0; y < table->h; y++)
 				for (int32_t x = 0; x < table->w; x++)
 					if (table->owner[(int64_t)y * table->w + x] == k + 1 && rooms_at(&f.rooms, x, y) == start_room)
@@ -246,6 +261,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		ObjectSquares o0 = object_squares(&t0, start->object_count, k);
 		int32_t from = rooms_at(&f.rooms, (int32_t)floor(o0.cx), (int32_t)floor(o0.cy)), room = -2;
 		bool one_room = true;
+		judge_read += (int64_t)table->w * table->h;
 		for (int32_t y = 0; y < table->h; y++)
 			for (int32_t x = 0; x < table->w; x++)
 				if (table->owner[(int64_t)y * table->w + x] == k + 1) {

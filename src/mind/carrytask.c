@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/rooms.h"
 #include "utak/mind/shape.h"
@@ -630,13 +631,21 @@ static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalR
 bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 {
 	CarryTask *ct = c->carry;
-	int32_t k = goals_find_target(c);
+	int32_t k = objects_find_target(c);
 	if (k < 0)
 		return false;
 	const ModelNode *node = &c->model.node[k];
 	if (!ct->have_start) {
 		ct->object_start = vec2((node->rect.lo.x + node->rect.hi.x) / 2, (node->rect.lo.y + node->rect.hi.y) / 2);
 		ct->have_start = true;
+	}
+	int32_t ux, uy;
+	if (ct->stage == CARRY_STAGE_FETCH && objects_unconfirmed_square(c, k, &ux, &uy) &&
+	    goals_near(c, goals_centre(ux, uy), dist, &out->goal)) {
+		/* The object is grasped only when the fovea has seen all of it (as for
+		 * any task's object, objects.h): look closer first. */
+		out->found = true;
+		return true;
 	}
 	if (ct->stage == CARRY_STAGE_FETCH && ct->have_grasp) {
 		out->found = true;
@@ -694,7 +703,7 @@ bool carrytask_arrive(Controller *c)
 	if (ct->stage == CARRY_STAGE_SURVEY) {
 		/* Seen from close by: fix the goal region now, and fetch the object. */
 		RoomMap rm;
-		int32_t k = goals_find_target(c);
+		int32_t k = objects_find_target(c);
 		ct_roommap_build(c, k, false, &rm);
 		CarryTask keep = *ct; /* the region fixed before, should this one be empty */
 		grid_init(&keep.region, ct->region.w, ct->region.h, GRID_BLOCKED);

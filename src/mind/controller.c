@@ -31,6 +31,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/carrytask.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
@@ -68,7 +69,7 @@ static bool make_plan(Controller *c, char *why, size_t size)
 	}
 	if (c->task.kind == TASK_GO_ROUND && c->round_count == 0 && !gr.exploring && c->phase == PHASE_TRAVEL) {
 		/* Beside the object is where going round starts: lay out the loop now. */
-		int32_t k = goals_find_target(c);
+		int32_t k = objects_find_target(c);
 		if (k >= 0) {
 			round_lay_out(c, k);
 			gr.goal = c->round[0];
@@ -181,20 +182,6 @@ static void remember(Controller *c, Vec2 p)
 		c->visited[c->visited_count++] = p;
 }
 
-/* touching_target(c): touch finds the task's object, and from beside it, where
- * the fovea sees it best, it still shows the task's shape (a target kept through a
- * coarse look, find_target, is dropped here if it does not). */
-static bool touching_target(Controller *c)
-{
-	int32_t k = goals_find_target(c);
-	if (k < 0 || !goals_touching(c, k))
-		return false;
-	if (goals_object_shape(&c->model, k) == c->task.shape)
-		return true;
-	c->target = 0;
-	return false;
-}
-
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -221,7 +208,7 @@ static void arrive(Controller *c)
 			c->phase = PHASE_DONE;
 		return;
 	case TASK_GO_SHAPE:
-		if (touching_target(c))
+		if (objects_touching_target(c))
 			c->phase = PHASE_DONE;
 		else
 			remember(c, c->goal); /* touch says the object is not here after all */
@@ -232,7 +219,7 @@ static void arrive(Controller *c)
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
-			int32_t k = goals_find_target(c);
+			int32_t k = objects_find_target(c);
 			if (k < 0 || fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
 				c->phase = PHASE_DONE;
 			else if (c->round_loops < CONTROLLER_ROUND_LOOPS) {
@@ -251,7 +238,7 @@ static void arrive(Controller *c)
 			c->seat_axis = c->seat_pushes = 0;
 		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
-		else if (touching_target(c))
+		else if (objects_touching_target(c))
 			c->phase = PHASE_GRASP;
 		else
 			remember(c, c->goal);
@@ -415,7 +402,12 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 		reason = "the path is blocked";
 	else if (c->task.kind != TASK_GO_ROUND) {
 		goals_choose(c, &gr);
-		if (!gr.found || goals_distance(gr.goal, old_goal) > CONTROLLER_ARRIVED || gr.exploring != c->exploring)
+		/* Exploring, one place to look from is as good as another: the one
+		 * chosen stands while there is still something to see from it (else
+		 * two of them, each nearer from the other, draw Utak to and fro). */
+		bool keep = c->exploring && gr.found && gr.exploring && goals_worth_looking(c, old_goal);
+		if (!keep && (!gr.found || goals_distance(gr.goal, old_goal) > CONTROLLER_ARRIVED ||
+			      gr.exploring != c->exploring))
 			reason = "the goal has moved";
 	}
 	if (!reason) {

@@ -18,29 +18,10 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
-
-/* goals_touching(c, k): touch shows an object's colour in a square of node k's rectangle
- * (any object when k < 0). */
-bool goals_touching(const Controller *c, int32_t k)
-{
-	int32_t ux, uy;
-	worldmodel_utak_square(&c->model, &ux, &uy);
-	for (int i = 0; i < TOUCH_CELLS; i++) {
-		char colour = c->impression.touch[i];
-		if (colour < 'A' || colour > 'Z' || colour == 'B')
-			continue;
-		if (k < 0)
-			return true;
-		const Box *r = &c->model.node[k].rect;
-		double x = ux + goals_touch_offset[i][0] + 0.5, y = uy + goals_touch_offset[i][1] + 0.5;
-		if (x > r->lo.x && x < r->hi.x && y > r->lo.y && y < r->hi.y)
-			return true;
-	}
-	return false;
-}
 
 /* goals_reach(g, si, sj, dist): breadth-first steps over g's free cells, 4-connected
  * (the free space's topology, skeleton.h), from (si, sj); -1 where unreached. */
@@ -89,74 +70,6 @@ void goals_roommap_free(RoomMap *r)
 	pathgraph_free(&r->pathgraph);
 	skeleton_free(&r->skeleton);
 	grid_free(&r->known);
-}
-
-/* ---- objects by shape ------------------------------------------------------------- */
-
-/* goals_object_shape(m, k): the shape of object node k, from the squares believed occupied
- * within its containing rectangle. */
-Shape goals_object_shape(const WorldModel *m, int32_t k)
-{
-	const ModelNode *n = &m->node[k];
-	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
-	int32_t w = (int32_t)ceil(n->rect.hi.x) - x0, h = (int32_t)ceil(n->rect.hi.y) - y0;
-	if (w <= 0 || h <= 0 || w > 256 || h > 256)
-		return SHAPE_NONE;
-	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
-	for (int32_t y = 0; y < h; y++)
-		for (int32_t x = 0; x < w; x++)
-			mask[y * w + x] = worldmodel_belief(m, x0 + x, y0 + y) == BELIEF_OCCUPIED;
-	Shape s = shape_classify(mask, w, h);
-	free(mask);
-	return s;
-}
-
-/* goals_seen_at(m, k, res): every square object node k is believed to cover has been seen
- * at resolution res or finer. */
-bool goals_seen_at(const WorldModel *m, int32_t k, int res)
-{
-	const ModelNode *n = &m->node[k];
-	for (int32_t y = (int32_t)floor(n->rect.lo.y); y < (int32_t)ceil(n->rect.hi.y); y++)
-		for (int32_t x = (int32_t)floor(n->rect.lo.x); x < (int32_t)ceil(n->rect.hi.x); x++)
-			if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED &&
-			    worldmodel_evidence(m, x, y).res < res)
-				return false;
-	return true;
-}
-
-/* goals_find_target(c): the model node of the task's object: the one it chose before if
- * still there, else the object of the task's shape nearest where the task began
- * ("with several, the nearest": nearest Utak when he was given the task, so that
- * the choice does not wander as he walks); -1 when none is seen. */
-int32_t goals_find_target(Controller *c)
-{
-	const WorldModel *m = &c->model;
-	int32_t best = -1;
-	double best_d = INFINITY;
-	for (int32_t k = 0; k < m->node_count; k++) {
-		const ModelNode *n = &m->node[k];
-		if (n->kind != NODE_OBJECT)
-			continue;
-		/* An object is named by the shape it shows now: a coarse first look may
-		 * have shown another. The one chosen before is kept, though, until the
-		 * fovea has seen all of it and it shows another shape: else a shape read
-		 * a square off from one place and right from the next draws Utak to and
-		 * fro. */
-		bool chosen = c->target != 0 && n->ident == c->target;
-		if (goals_object_shape(m, k) != c->task.shape && !(chosen && !goals_seen_at(m, k, WORLDMODEL_RES_FOVEA)))
-			continue;
-		if (chosen)
-			return k;
-		Vec2 mid = vec2((n->rect.lo.x + n->rect.hi.x) / 2, (n->rect.lo.y + n->rect.hi.y) / 2);
-		double d = goals_distance(mid, c->start);
-		if (d < best_d) {
-			best_d = d;
-			best = k;
-		}
-	}
-	if (best >= 0)
-		c->target = m->node[best].ident;
-	return best;
 }
 
 /* ---- corners ---------------------------------------------------------------------- */
@@ -321,9 +234,48 @@ bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goa
 	return true;
 }
 
+/* goals_near(c, p, dist, goal): the reachable free cell nearest point p (ties to
+ * the nearer Utak by steps), not a goal already reached. */
+bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	double best = INFINITY;
+	for (int32_t at = 0; at < s->w * s->h; at++) {
+		if (dist[at] < 0)
+			continue;
+		Vec2 here = goals_centre(s->x0 + at % s->w, s->y0 + at / s->w);
+		bool visited = false;
+		for (int v = 0; v < c->visited_count && !visited; v++)
+			visited = goals_distance(here, c->visited[v]) < 0.5;
+		double d = goals_distance(here, p) + 1e-3 * dist[at];
+		if (!visited && d < best) {
+			best = d;
+			*goal = here;
+		}
+	}
+	return best < INFINITY;
+}
+
+bool goals_worth_looking(Controller *c, Vec2 p)
+{
+	const WorldModel *m = &c->model;
+	int32_t x = (int32_t)floor(p.x), y = (int32_t)floor(p.y);
+	if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED)
+		return false;
+	for (int32_t dy = -GOALS_LOOK; dy <= GOALS_LOOK; dy++)
+		for (int32_t dx = -GOALS_LOOK; dx <= GOALS_LOOK; dx++) {
+			if (worldmodel_belief(m, x + dx, y + dy) == BELIEF_UNKNOWN)
+				return true;
+			int32_t k = worldmodel_node_at(m, x + dx, y + dy);
+			if (k >= 0 && m->node[k].kind == NODE_OBJECT && !objects_read(c, k).confirmed)
+				return true;
+		}
+	return false;
+}
+
 /* goals_inspect(c, dist): beside the nearest object not yet seen whole in the fovea,
  * where a closer look may show its shape: part of looking for an object. */
-bool goals_inspect(const Controller *c, const int32_t *dist, Vec2 *goal)
+bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal)
 {
 	const WorldModel *m = &c->model;
 	double best_d = INFINITY;
@@ -333,7 +285,7 @@ bool goals_inspect(const Controller *c, const int32_t *dist, Vec2 *goal)
 		if (n->kind != NODE_OBJECT)
 			continue;
 		Vec2 beside;
-		if (goals_seen_at(m, k, WORLDMODEL_RES_FOVEA) || !goals_beside(c, k, dist, &beside))
+		if (objects_read(c, k).confirmed || !goals_beside(c, k, dist, &beside))
 			continue;
 		double d = goals_distance(beside, m->utak);
 		if (d < best_d) {
@@ -425,8 +377,15 @@ void goals_choose(Controller *c, GoalResult *out)
 		if (!pushing && c->carry && carrytask_goal(c, dist, out))
 			break; /* tasks (vi)-(ix): look, survey, grasp for the whole carry */
 		if (!pushing) {
-			int32_t k = goals_find_target(c);
+			int32_t k = objects_find_target(c), ux, uy;
 			bool push_task = c->task.kind != TASK_GO_SHAPE && c->task.kind != TASK_GO_ROUND;
+			/* A hypothesis is looked at closer first: beside the part of it the
+			 * fovea has not yet seen. */
+			if (k >= 0 && objects_unconfirmed_square(c, k, &ux, &uy) &&
+			    goals_near(c, goals_centre(ux, uy), dist, &out->goal)) {
+				out->found = true;
+				break;
+			}
 			if (k >= 0 && push_task && push_grasp_side(c, k, dist, &rm, start_room, &out->goal)) {
 				out->found = true;
 				break;
@@ -435,14 +394,16 @@ void goals_choose(Controller *c, GoalResult *out)
 				out->found = true;
 				break;
 			}
-			/* Not seen, or not reachable: look further, at the nearer of the
-			 * unseen and the objects seen only coarsely. */
+			/* Not seen, or not reachable: look further: first at the objects
+			 * seen only coarsely (each may be the one, too small or too coarse
+			 * to name yet: paper 3.3's hypotheses of low confidence), unless
+			 * the unseen is much nearer (GOALS_COARSE_FIRST). */
 			Vec2 unseen = {0}, coarse = {0};
 			bool have_unseen = goals_frontier(c, dist, &unseen);
 			bool have_coarse = k < 0 && goals_inspect(c, dist, &coarse);
 			out->exploring = out->found = have_unseen || have_coarse;
 			if (have_unseen && have_coarse)
-				out->goal = goals_distance(unseen, c->model.utak) <= goals_distance(coarse, c->model.utak) ? unseen : coarse;
+				out->goal = GOALS_COARSE_FIRST * goals_distance(unseen, c->model.utak) <= goals_distance(coarse, c->model.utak) ? unseen : coarse;
 			else
 				out->goal = have_unseen ? unseen : coarse;
 			if (!out->found)

@@ -327,13 +327,15 @@ void modeltree_derive(WorldModel *m)
 	/* Objects: 4-connected occupied sets, every neighbour floor. */
 	int32_t *label = util_alloc(area, sizeof *label);
 	int32_t *stack = util_alloc(area, sizeof *stack);
-	int32_t labels = 0, uncertain = 0;
+	int32_t labels = 0, uncertain = 0, comp_cap = 0;
+	int32_t *comp_node = NULL; /* a component's node, by label */
 	for (int32_t row = map.h - 1; row >= 0; row--) /* north first: the order of the map */
 		for (int32_t col = 0; col < map.w; col++) {
 			int64_t k0 = (int64_t)row * map.w + col;
 			if (map.belief[k0] != BELIEF_OCCUPIED || label[k0])
 				continue;
 			int32_t id = ++labels, top = 0;
+			comp_node = util_grow(comp_node, &comp_cap, id + 1, sizeof *comp_node);
 			bool isolated = true, held = false;
 			label[k0] = id;
 			stack[top++] = (int32_t)k0;
@@ -366,10 +368,12 @@ void modeltree_derive(WorldModel *m)
 				snprintf(name, sizeof name, "uncertain%d", (int)++uncertain);
 				int32_t node = tree_new_node(m, NODE_UNCERTAIN, name, floor_node);
 				tree_finish_node(m, node, &map, in);
+				comp_node[id] = node;
 				continue;
 			}
 			int32_t node =
 			    tree_new_node(m, NODE_OBJECT, "object", held ? org : floor_node);
+			comp_node[id] = node;
 			tree_trace(m, &map, in, node);
 			tree_finish_node(m, node, &map, in);
 			m->node[node].held = held;
@@ -377,8 +381,17 @@ void modeltree_derive(WorldModel *m)
 			if (held) /* relation to $org: offset from Utak's point */
 				m->node[node].relation = vec2_sub(m->node[node].rect.lo, m->utak);
 		}
+	/* Which node holds each occupied square: the label map, renumbered. */
+	for (size_t k = 0; k < area; k++)
+		label[k] = label[k] ? comp_node[label[k]] : -1;
+	free(m->node_at);
+	m->node_at = label;
+	m->node_at_x0 = map.x0;
+	m->node_at_y0 = map.y0;
+	m->node_at_w = map.w;
+	m->node_at_h = map.h;
+	free(comp_node);
 	free(stack);
-	free(label);
 	free(in);
 	free(map.belief);
 	free(prev);

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "utak/mind/goals.h"
+#include "utak/mind/objects.h"
 
 /* round_lay_out(c, k): the points outside object node k's rectangle corners,
  * counter-clockwise from the one nearest Utak, then his starting point. */
@@ -46,7 +47,7 @@ bool round_stale(Controller *c)
 {
 	if (c->task.kind != TASK_GO_ROUND || c->round_count == 0)
 		return false;
-	int32_t k = goals_find_target(c);
+	int32_t k = objects_find_target(c);
 	if (k < 0 || c->model.node[k].ident != c->round_ident)
 		return true;
 	Box r = c->model.node[k].rect, o = c->round_rect;

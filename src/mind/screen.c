@@ -29,19 +29,13 @@ int32_t screen_label(const Screen *s, int32_t i, int32_t j)
 	return s->label[(int64_t)j * s->w + i];
 }
 
-/* object_at(m, x, y): the object node whose rectangle holds square (x, y), or -1.
+/* object_at(m, x, y): the object node whose squares hold square (x, y), or -1.
  * (Occupied sets the model cannot yet read, its uncertain nodes, count as verge:
  * planning treats them as fixed until they are seen to be objects.) */
 static int32_t object_at(const WorldModel *m, int32_t x, int32_t y)
 {
-	Vec2 c = vec2(x + 0.5, y + 0.5);
-	for (int32_t k = 0; k < m->node_count; k++) {
-		const ModelNode *n = &m->node[k];
-		if (n->kind == NODE_OBJECT && c.x > n->rect.lo.x && c.x < n->rect.hi.x && c.y > n->rect.lo.y &&
-		    c.y < n->rect.hi.y)
-			return k;
-	}
-	return -1;
+	int32_t k = worldmodel_node_at(m, x, y);
+	return k >= 0 && m->node[k].kind == NODE_OBJECT ? k : -1;
 }
 
 void screen_build(Screen *s, const WorldModel *m, const Vec2 *extra, int n)

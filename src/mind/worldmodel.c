@@ -28,10 +28,11 @@
  *
  * INVARIANTS: worldmodel_validate. MEMORY: the evidence in tiles allocated as they
  * are first seen (worldmodel.h: 12 bytes a square seen, 512 KiB of directory), and
- * the tree's arrays, owned by the WorldModel. COMPLEXITY: an impression costs O(1024)
- * squares to record, O(P x 1024) to search P candidate positions (P <= 49 + 18 x the
- * length of the move within sight of the squares seen: wm_line_in_sight), O(T) to
- * count the seen window over T tiles, and O(A) to derive the tree, A the seen area. */
+ * the tree's arrays, owned by the WorldModel. COMPLEXITY: an impression costs
+ * O(1024) squares to record, O(P x 1024) to search P candidate positions (P <= 49
+ * + 18 x the length of the move within sight of the squares seen: wm_line_in_sight),
+ * O(T) to count the seen window over T tiles, and O(A) to derive the tree, A the
+ * seen area. */
 #include "utak/mind/worldmodel.h"
 
 #include <math.h>
@@ -114,6 +115,15 @@ Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y)
 	const Evidence *e = wm_peek(m, x, y);
 	Evidence none = {0, 0, WORLDMODEL_UNSEEN, 0};
 	return e ? *e : none;
+}
+
+int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y)
+{
+	x -= m->node_at_x0;
+	y -= m->node_at_y0;
+	if (!m->node_at || x < 0 || y < 0 || x >= m->node_at_w || y >= m->node_at_h)
+		return -1;
+	return m->node_at[(int64_t)y * m->node_at_w + x];
 }
 
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y)
@@ -416,7 +426,7 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
  * on distance. So the search is the same, and its cost follows what Utak can have
  * seen, not the command: "move -1000000 -1000000" into the verge a few squares
  * away tried 2.8 million positions, one projection through the eye each. (Where
- * the field leaves the evidence window, 256 squares from the start, fewer held
+ * the field leaves the evidence's reach, WORLDMODEL_REACH squares from the start, fewer held
  * squares are placed and the two may differ; the model is already clipped there.)
  * ALGORITHM: Liang-Barsky clipping against the seen rectangle grown by
  * WM_SIGHT_MARGIN. COMPLEXITY: O(1). */
@@ -625,6 +635,7 @@ void worldmodel_free(WorldModel *m)
 	free(m->tile);
 	free(m->tile_list);
 	free(m->node);
+	free(m->node_at);
 	free(m->ring);
 	free(m->vertex);
 	memset(m, 0, sizeof *m);

@@ -68,6 +68,11 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
+/* Free runs of a row up to this long are solved by comparing every column with every
+ * cell (at most 8 x 8 branch-free steps) instead of the envelope, whose stack
+ * branches mispredict on short runs. */
+#define SKELETON_SHORT_RUN 8
+
 /* skeleton_edt_count(g, dist2, count): skeleton_edt, also counting the free cells of
  * each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
  * histogram, gathered while the values are made rather than in a pass of its own). */
@@ -111,12 +116,14 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 	 * the blocked columns at its two ends. Within a run, with F(u) = u^2 + g(u)^2, the
 	 * parabola of column u at x is F(u) - 2 u x + x^2, and two parabolas a < b cross at
 	 * (F(b) - F(a)) / (2 (b - a)). The lower envelope's columns are kept in the stack
-	 * v[0 .. top]; a column is dropped when the new one crosses its left neighbour no
+	 * vu[0 .. top]; a column is dropped when the new one crosses its left neighbour no
 	 * later than it does, compared by cross multiplication in 64 bits instead of
-	 * Meijster's integer division: exact, and no division on the critical path. */
+	 * Meijster's integer division: exact, and no division on the critical path. The
+	 * stack holds each column with its F beside it (vu, vF), so the envelope's loads
+	 * run along two arrays instead of through v into F. */
 	const int32_t n = w + 2;
-	int64_t *F = util_alloc((size_t)n, sizeof *F);
-	int32_t *v = util_alloc((size_t)n, sizeof *v);
+	int64_t *vF = util_alloc((size_t)n, sizeof *vF);
+	int32_t *vu = util_alloc((size_t)n, sizeof *vu);
 	for (int32_t y = 0; y < h; y++) {
 		int32_t *row = dist2 + (size_t)y * w;
 		int32_t x0 = 0;
@@ -137,33 +144,59 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 				x0 = x1 + 1;
 				continue;
 			}
+			if (x1 - x0 < SKELETON_SHORT_RUN) {
+				/* a short run: every column against every cell, no branches (a
+				 * vertical corridor's crossing of the row) */
+				int32_t g2[SKELETON_SHORT_RUN], out[SKELETON_SHORT_RUN];
+				const int32_t len = x1 - x0 + 1;
+				for (int32_t i = 0; i < len; i++)
+					g2[i] = row[x0 + i] * row[x0 + i];
+				for (int32_t i = 0; i < len; i++) {
+					int32_t best = (i + 1) * (i + 1); /* the blocked end at x0 - 1 */
+					int32_t right = (len - i) * (len - i); /* and at x1 + 1 */
+					best = right < best ? right : best;
+					for (int32_t j = 0; j < len; j++) {
+						int32_t c = (i - j) * (i - j) + g2[j];
+						best = c < best ? c : best;
+					}
+					out[i] = best;
+				}
+				for (int32_t i = 0; i < len; i++) {
+					row[x0 + i] = out[i];
+					largest = out[i] > largest ? out[i] : largest;
+					if (count)
+						count[out[i] + 1]++;
+				}
+				x0 = x1 + 1;
+				continue;
+			}
 			/* columns lo = x0 - 1 .. hi = x1 + 1, blocked at both ends */
 			int32_t lo = x0 - 1, hi = x1 + 1;
 			int32_t top = 0;
-			v[0] = lo;
-			F[0] = (int64_t)lo * lo;
+			vu[0] = lo;
+			vF[0] = (int64_t)lo * lo;
 			for (int32_t u = x0; u <= hi; u++) {
 				int64_t Fu =
 				    (int64_t)u * u + (u <= x1 ? (int64_t)row[u] * row[u] : 0);
-				F[u - lo] = Fu;
 				while (top > 0) {
-					int32_t a = v[top - 1], b = v[top];
-					int64_t Fa = F[a - lo], Fb = F[b - lo];
+					int32_t a = vu[top - 1], b = vu[top];
+					int64_t Fa = vF[top - 1], Fb = vF[top];
 					/* cross(b, u) <= cross(a, b): b is nowhere lowest */
 					if ((Fu - Fb) * (b - a) > (Fb - Fa) * (u - b))
 						break;
 					top--;
 				}
-				v[++top] = u;
+				top++;
+				vu[top] = u;
+				vF[top] = Fu;
 			}
 			int32_t k = 0;
 			for (int32_t x = x0; x <= x1; x++) {
 				/* the lowest parabola at x moves right as x does */
-				while (k < top && F[v[k + 1] - lo] - F[v[k] - lo] <=
-				                      2 * (int64_t)x * (v[k + 1] - v[k]))
+				while (k < top && vF[k + 1] - vF[k] <= 2 * (int64_t)x * (vu[k + 1] - vu[k]))
 					k++;
-				int32_t d = x - v[k];
-				row[x] = (int32_t)(F[v[k] - lo] - (int64_t)v[k] * v[k]) + d * d;
+				int32_t d = x - vu[k];
+				row[x] = (int32_t)(vF[k] - (int64_t)vu[k] * vu[k]) + d * d;
 				if (row[x] > largest)
 					largest = row[x];
 				if (count)
@@ -172,8 +205,8 @@ static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
 			x0 = x1 + 1;
 		}
 	}
-	free(F);
-	free(v);
+	free(vF);
+	free(vu);
 	return largest;
 }
 
@@ -243,10 +276,20 @@ static bool skeleton_is_simple_mask(unsigned m)
 	return t4 == 1 && t8bar == 1;
 }
 
-static void skeleton_build_simple_table(bool table[256])
+/* What one deletion test needs from the 8-neighbourhood mask (one table load). */
+enum {
+	THIN_KEEP = 0,   /* not simple: deleting would change the topology */
+	THIN_DELETE = 1, /* simple, and not one edge neighbour: deletable */
+	THIN_RIDGE = 2   /* simple with exactly one edge neighbour: a ridge end or not */
+};
+
+/* skeleton_build_kind_table(kind): THIN_* of every mask (see the Thinner). */
+static void skeleton_build_kind_table(uint8_t kind[256])
 {
-	for (unsigned m = 0; m < 256; m++)
-		table[m] = skeleton_is_simple_mask(m);
+	for (unsigned m = 0; m < 256; m++) {
+		unsigned edge = (m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1);
+		kind[m] = !skeleton_is_simple_mask(m) ? THIN_KEEP : edge == 1 ? THIN_RIDGE : THIN_DELETE;
+	}
 }
 
 /* ---------------------------------------------------------------- thinning */
@@ -254,7 +297,8 @@ static void skeleton_build_simple_table(bool table[256])
 enum {
 	SKELETON_IN = 1,      /* still in the set */
 	SKELETON_VISITED = 2, /* reached in the distance order */
-	SKELETON_STACKED = 4  /* on the re-try stack */
+	SKELETON_STACKED = 4, /* on the re-try stack */
+	SKELETON_RECHECK = 8  /* next to a pruned cell: to test again after pruning */
 };
 
 /* The thinning works on a copy of the grid padded by one background cell on every
@@ -266,44 +310,52 @@ typedef struct Thinner {
 	int32_t *stack;   /* padded indices to try again */
 	int32_t top;
 	const int32_t *dist2; /* w * h, unpadded */
-	bool simple[256];
+	uint8_t kind[256];    /* THIN_* of each neighbourhood mask */
 } Thinner;
+
+/* thinner_mask_of(st, pi, pw): the neighbourhood mask, written out: the offsets are
+ * known shapes, so the eight loads issue together (a loop over t->off did not). */
+static inline unsigned thinner_mask_of(const uint8_t *st, int32_t pi, int32_t pw)
+{
+	return (unsigned)(st[pi + 1] & SKELETON_IN) | (unsigned)(st[pi + 1 + pw] & SKELETON_IN) << 1 |
+	       (unsigned)(st[pi + pw] & SKELETON_IN) << 2 |
+	       (unsigned)(st[pi - 1 + pw] & SKELETON_IN) << 3 | (unsigned)(st[pi - 1] & SKELETON_IN) << 4 |
+	       (unsigned)(st[pi - 1 - pw] & SKELETON_IN) << 5 |
+	       (unsigned)(st[pi - pw] & SKELETON_IN) << 6 | (unsigned)(st[pi + 1 - pw] & SKELETON_IN) << 7;
+}
 
 static inline unsigned thinner_mask(const Thinner *t, int32_t pi)
 {
-	unsigned m = 0;
-	for (int i = 0; i < 8; i++)
-		m |= (unsigned)(t->state[pi + t->off[i]] & SKELETON_IN) << i;
-	return m;
+	return thinner_mask_of(t->state, pi, t->pw);
 }
 
-/* thinner_dist2(t, pi): dist2 of the cell at padded index pi. */
-static int32_t thinner_dist2(const Thinner *t, int32_t pi)
+/* thinner_ridge_end(t, pi, m): pi, simple with one edge neighbour (mask m), is a
+ * ridge end. A ridge end has exactly one 4-neighbour in the set and no 8-neighbour in
+ * the set farther from the obstacles: it is the tip of a branch of the medial axis
+ * (the distance map has a local maximum there along the branch). Without the second
+ * condition every cell of the grassfire front that happens to lose its side
+ * neighbours first would be kept as an end, and grow a spur; with it, a branch whose
+ * distance rises from its tip (toward a convex corner of the space) burns back to its
+ * junction, as Blum's branches into corners carry no choice of route. One division
+ * finds the unpadded index; the neighbours are offsets from it. */
+static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
 {
-	return t->dist2[(size_t)(pi / t->pw - 1) * t->w + (pi % t->pw - 1)];
+	const int32_t w = t->w;
+	const int32_t *d2 = t->dist2 + (size_t)(pi / t->pw - 1) * w + (pi % t->pw - 1);
+	const int32_t d = d2[0];
+	const int32_t off[8] = {1, 1 + w, w, w - 1, -1, -1 - w, -w, 1 - w};
+	for (int i = 0; i < 8; i++)
+		if (((m >> i) & 1) && d2[off[i]] > d)
+			return false;
+	return true;
 }
 
-/* thinner_deletable(t, pi): pi is simple and not a ridge end. A ridge end has exactly
- * one 4-neighbour in the set and no 8-neighbour in the set farther from the obstacles:
- * it is the tip of a branch of the medial axis (the distance map has a local maximum
- * there along the branch). Without the second condition every cell of the grassfire
- * front that happens to lose its side neighbours first would be kept as an end, and
- * grow a spur; with it, a branch whose distance rises from its tip (toward a convex
- * corner of the space) burns back to its junction, as Blum's branches into corners
- * carry no choice of route. */
+/* thinner_deletable(t, pi): pi is simple and not a ridge end. */
 static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 {
 	unsigned m = thinner_mask(t, pi);
-	if (!t->simple[m])
-		return false;
-	int edge = (int)((m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1));
-	if (edge != 1)
-		return true;
-	int32_t d = thinner_dist2(t, pi);
-	for (int i = 0; i < 8; i++)
-		if (((m >> i) & 1) && thinner_dist2(t, pi + t->off[i]) > d)
-			return true;
-	return false;
+	uint8_t k = t->kind[m];
+	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, m));
 }
 
 /* thinner_delete_more(t, pi, top): deletes pi, then every visited cell that its
@@ -342,35 +394,42 @@ static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t,
 /* thinner_visit(t, pi): the visit of pi in the distance order: marks it visited and,
  * when deletable, deletes it (thinner_delete_from). The same as those two calls, with
  * the 8 neighbours loaded once for the deletion test and for the re-try stack: this
- * runs for every free cell. */
+ * runs for every free cell. The neighbours to try again, visited and in the set, come
+ * as a second mask from the same loads (none is stacked: the stack is empty between
+ * visits), so the usual deletion, with none, costs no loop over the neighbours.
+ * Every visit is a real one: on the benchmark grids no free cell is interior (all 8
+ * neighbours in the set) when its turn comes, as the distance order makes each cell
+ * part of the front then; so a border queue would save no visit, and was not built. */
 static void thinner_visit(Thinner *t, int32_t pi)
 {
-	uint8_t nb[8];
-	unsigned m = 0;
+	uint8_t *st = t->state;
+	const int32_t pw = t->pw;
+	const unsigned n[8] = {st[pi + 1],  st[pi + 1 + pw],  st[pi + pw],  st[pi - 1 + pw],
+	                       st[pi - 1], st[pi - 1 - pw], st[pi - pw], st[pi + 1 - pw]};
+	unsigned m = 0, again = 0;
 	for (int i = 0; i < 8; i++) {
-		nb[i] = t->state[pi + t->off[i]];
-		m |= (unsigned)(nb[i] & SKELETON_IN) << i;
+		m |= (n[i] & SKELETON_IN) << i;
+		again |= ((n[i] >> 1) & n[i] & 1u) << i; /* SKELETON_IN and SKELETON_VISITED */
 	}
-	t->state[pi] = (uint8_t)(t->state[pi] | SKELETON_VISITED);
-	if (!t->simple[m])
+	st[pi] = (uint8_t)(st[pi] | SKELETON_VISITED);
+	const uint8_t k = t->kind[m];
+	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, m)))
 		return;
-	int edge = (int)((m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1));
-	if (edge == 1 && !thinner_deletable(t, pi))
-		return; /* a ridge end */
-	t->state[pi] &= (uint8_t)~SKELETON_IN;
+	st[pi] &= (uint8_t)~SKELETON_IN;
+	if (again == 0)
+		return;
 	t->top = 0;
 	for (int i = 0; i < 8; i++)
-		if ((nb[i] & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
-		    (SKELETON_IN | SKELETON_VISITED)) {
+		if ((again >> i) & 1) {
 			int32_t qi = pi + t->off[i];
-			t->state[qi] = (uint8_t)(nb[i] | SKELETON_STACKED);
+			st[qi] = (uint8_t)(st[qi] | SKELETON_STACKED);
 			t->stack[t->top++] = qi;
 		}
 	for (;;) {
 		if (t->top == 0)
 			return;
 		int32_t qi = t->stack[--t->top];
-		t->state[qi] &= (uint8_t)~SKELETON_STACKED;
+		st[qi] &= (uint8_t)~SKELETON_STACKED;
 		if (thinner_deletable(t, qi)) {
 			/* rare: a cascade; the stack as it is now is taken over */
 			int32_t saved = t->top;
@@ -450,6 +509,14 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 	}
 	for (int32_t k = 0; k < nremove; k++)
 		t->state[remove[k]] &= (uint8_t)~SKELETON_IN;
+	/* only a cell next to a removed one has a new neighbourhood (every other was
+	 * left not deletable by the thinning), so only those are tested again */
+	for (int32_t k = 0; k < nremove; k++)
+		for (int i = 0; i < 8; i++) {
+			uint8_t *q = &t->state[remove[k] + t->off[i]];
+			if (*q & SKELETON_IN)
+				*q |= SKELETON_RECHECK;
+		}
 	return nremove;
 }
 
@@ -526,7 +593,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	t.stack = wk->stack;
 	for (int i = 0; i < 8; i++)
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
-	skeleton_build_simple_table(t.simple);
+	skeleton_build_kind_table(t.kind);
 
 	/* counting sort of the free cells by dist2, ties by index (the histogram came
 	 * with the distance transform) */
@@ -559,9 +626,14 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	}
 	s->pruned = thinner_prune(&t, s->dist2, order, nset);
 	if (s->pruned > 0) {
-		/* a junction that lost a branch may be deletable now */
+		/* a junction that lost a branch may be deletable now: the cells marked by
+		 * thinner_prune, in the same raster order as a test of every cell (which
+		 * it equals: a deletion here retries its neighbours through the stack) */
 		for (int32_t k = 0; k < nset; k++) {
 			int32_t pi = order[k];
+			if (!(t.state[pi] & SKELETON_RECHECK))
+				continue;
+			t.state[pi] &= (uint8_t)~SKELETON_RECHECK;
 			if ((t.state[pi] & SKELETON_IN) && thinner_deletable(&t, pi))
 				thinner_delete_from(&t, pi);
 		}

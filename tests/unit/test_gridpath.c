@@ -201,11 +201,123 @@ TEST_CASE(gridpath_matches_published_optima)
 	path_free(&p);
 }
 
+/* The jump-point search (GRIDPATH_JUMP) against the Dijkstra oracle on random grids,
+ * with open stretches (low density) where runs are long and cluttered ones where
+ * forced neighbours are everywhere, and against plain A* on the same queries. */
+TEST_CASE(gridpath_jump_equals_dijkstra_on_random_grids)
+{
+	Path p, q;
+	path_init(&p);
+	path_init(&q);
+	for (int trial = 0; trial < 300; trial++) {
+		int w = 1 + (int)(rng_next() % 24), h = 1 + (int)(rng_next() % 24);
+		int density = (int)(rng_next() % 45);
+		Grid g;
+		grid_init(&g, w, h, GRID_FREE);
+		for (int i = 0; i < w * h; i++)
+			if ((int)(rng_next() % 100) < density)
+				g.cells[i] = GRID_BLOCKED;
+		GridPathSearch s, a;
+		gridpath_init(&s, &g);
+		gridpath_init(&a, &g);
+		s.method = GRIDPATH_JUMP;
+		for (int k = 0; k < 8; k++) {
+			int sx = (int)(rng_next() % (uint32_t)w),
+			    sy = (int)(rng_next() % (uint32_t)h);
+			int gx = (int)(rng_next() % (uint32_t)w),
+			    gy = (int)(rng_next() % (uint32_t)h);
+			double len, alen;
+			GridPathStatus st = gridpath_find(&s, sx, sy, gx, gy, &p, &len);
+			GridPathStatus ast = gridpath_find(&a, sx, sy, gx, gy, &q, &alen);
+			TEST_CHECK(st == ast);
+			if (!grid_free_at(&g, sx, sy) || !grid_free_at(&g, gx, gy)) {
+				TEST_CHECK(st == GRIDPATH_BAD_ENDPOINT);
+				TEST_CHECK(p.count == 0 && len == -1);
+				continue;
+			}
+			double want = dijkstra_length(&g, sx, sy, gx, gy);
+			if (want < 0) {
+				TEST_CHECK(st == GRIDPATH_NO_PATH);
+				TEST_CHECK(p.count == 0);
+				continue;
+			}
+			TEST_CHECK(st == GRIDPATH_FOUND);
+			TEST_NEAR(len, want, 1e-9);
+			TEST_CHECK(len == alen);
+			TEST_CHECK(check_path(&g, &p, sx, sy, gx, gy, len));
+			TEST_CHECK(p.expanded >= 1);
+		}
+		gridpath_free(&s);
+		gridpath_free(&a);
+		grid_free(&g);
+	}
+	path_free(&p);
+	path_free(&q);
+}
+
+/* Every published optimum of every scenario file in tests/data/movingai: the jump
+ * search finds it, a legal path of that length, and so does plain A* on the same
+ * problem (the issue's check of one against the other). */
+TEST_CASE(gridpath_jump_matches_every_published_optimum)
+{
+	static const char *const files[][2] = {
+	    {"dao/arena.map", "dao/arena.map.scen"},
+	    {"mapf/room-32-32-4.map", "mapf/scen-even/room-32-32-4-even-1.scen"},
+	    {"mapf/maze-32-32-2.map", "mapf/scen-even/maze-32-32-2-even-1.scen"},
+	    {"mapf/random-32-32-10.map", "mapf/scen-even/random-32-32-10-even-1.scen"},
+	    {"mapf/warehouse-10-20-10-2-1.map",
+	     "mapf/scen-even/warehouse-10-20-10-2-1-even-1.scen"}};
+	char err[MOVINGAI_ERROR_SIZE], mpath[256], spath[256];
+	Path p, q;
+	path_init(&p);
+	path_init(&q);
+	int checked = 0;
+	for (size_t m = 0; m < sizeof files / sizeof files[0]; m++) {
+		snprintf(mpath, sizeof mpath, "tests/data/movingai/maps/%s", files[m][0]);
+		snprintf(spath, sizeof spath, "tests/data/movingai/scenarios/%s", files[m][1]);
+		Grid g;
+		MovingAiScen scen;
+		bool ok = movingai_read_map(mpath, &g, err);
+		if (!ok)
+			fprintf(stderr, "  %s\n", err);
+		TEST_CHECK(ok);
+		ok = movingai_read_scen(spath, &g, &scen, err);
+		if (!ok)
+			fprintf(stderr, "  %s\n", err);
+		TEST_CHECK(ok);
+		GridPathSearch s, a;
+		gridpath_init(&s, &g);
+		gridpath_init(&a, &g);
+		s.method = GRIDPATH_JUMP;
+		for (int i = 0; i < scen.count; i++) {
+			const MovingAiProblem *pr = &scen.problems[i];
+			double len, alen;
+			TEST_CHECK(gridpath_find(&s, pr->sx, pr->sy, pr->gx, pr->gy, &p, &len) ==
+			           GRIDPATH_FOUND);
+			TEST_CHECK(gridpath_find(&a, pr->sx, pr->sy, pr->gx, pr->gy, &q, &alen) ==
+			           GRIDPATH_FOUND);
+			TEST_NEAR(len, pr->optimum, movingai_tolerance(pr->optimum));
+			TEST_CHECK(len == alen);
+			TEST_CHECK(check_path(&g, &p, pr->sx, pr->sy, pr->gx, pr->gy, len));
+			checked++;
+		}
+		gridpath_free(&s);
+		gridpath_free(&a);
+		movingai_scen_free(&scen);
+		grid_free(&g);
+	}
+	TEST_CHECK(checked > 1000);
+	path_free(&p);
+	path_free(&q);
+}
+
 int main(void)
 {
 	TEST_RUN(gridpath_octile_by_hand);
 	TEST_RUN(gridpath_equals_dijkstra_on_random_grids);
 	TEST_RUN(gridpath_refuses_bad_endpoints);
 	TEST_RUN(gridpath_matches_published_optima);
+	TEST_RUN(gridpath_jump_equals_dijkstra_on_random_grids);
+	TEST_RUN(gridpath_jump_matches_every_published_optimum);
 	return TEST_EXIT();
 }

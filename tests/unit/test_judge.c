@@ -105,8 +105,52 @@ TEST_CASE(judge_shape_target_is_the_nearest)
 	}
 }
 
+/* judge_cost_is_a_few_passes: on a 256 x 256 TABLE with 1024 objects, what a
+ * shape task's verdict reads is within a few passes of the TABLE, as a corner
+ * task's is (each pass counted as the TABLE's area, an object's shape as its
+ * rectangle's). Before issue 14 it read the TABLE twice per object: 2048 passes. */
+TEST_CASE(judge_cost_is_a_few_passes)
+{
+	enum { SIDE = 256, PER_ROW = 32, CELL = (SIDE - 8) / PER_ROW };
+	static char text[PER_ROW * PER_ROW * 64 + 64];
+	size_t len = (size_t)snprintf(text, sizeof text, "table %d %d\n", SIDE, SIDE);
+	for (int k = 0; k < PER_ROW * PER_ROW; k++) {
+		int x = 4 + CELL * (k % PER_ROW) + 1, y = 4 + CELL * (k / PER_ROW) + 1, a = 3 + k % 3;
+		if (k % 2)
+			len += (size_t)snprintf(text + len, sizeof text - len, "object o%d C %d %d %d %d %d %d\n", k, x, y,
+						x + a, y, x, y + a);
+		else
+			len += (size_t)snprintf(text + len, sizeof text - len, "object o%d C %d %d %d %d %d %d %d %d\n", k,
+						x, y, x + a, y, x + a, y + a, x, y + a);
+	}
+	len += (size_t)snprintf(text + len, sizeof text - len, "utak %d.5 %d.5 north\n", SIDE / 2, SIDE / 2);
+	TEST_CHECK(len < sizeof text);
+	World w;
+	Table t;
+	Diag d;
+	TEST_CHECK(world_parse(&w, "cost.w", text, len, &d) == 0);
+	TEST_CHECK(table_build(&t, &w, &d) == 0);
+	char why[256];
+	const int64_t area = (int64_t)SIDE * SIDE;
+	TEST_CHECK(judge_of(&w, &t, "go ne-corner", why, sizeof why) != NULL);
+	int64_t corner = judge_squares_read();
+	TEST_CHECK(corner >= area); /* the counter counts */
+	static const char *const shape_tasks[] = {"push square sw-corner", "push triangle next-room", "go lshape"};
+	for (int i = 0; i < 3; i++) {
+		TEST_CHECK(judge_of(&w, &t, shape_tasks[i], why, sizeof why) != NULL);
+		int64_t read = judge_squares_read();
+		if (read > corner + 4 * area)
+			fprintf(stderr, "  %s: %lld squares read, the corner task %lld\n", shape_tasks[i], (long long)read,
+				(long long)corner);
+		TEST_CHECK(read <= corner + 4 * area);
+	}
+	table_free(&t);
+	world_free(&w);
+}
+
 int main(void)
 {
 	TEST_RUN(judge_shape_target_is_the_nearest);
+	TEST_RUN(judge_cost_is_a_few_passes);
 	return TEST_EXIT();
 }

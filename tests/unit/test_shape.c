@@ -1,15 +1,181 @@
-/* test_shape.c - naming objects by shape (shape.h): the projections of hand-drawn
- * squares, bricks, L-shapes and triangles, on and off the grid, and rotated. */
+/* test_shape.c - naming objects by shape at any angle (shape.h), against the true
+ * shape: each polygon turned in steps of 5 degrees and shifted by fractions of a
+ * square, projected onto squares by the TABLE's own rule (geom_project, the oracle
+ * of what the fovea sees), and named from those squares alone. The sizes start
+ * where the eye resolves the corners (shape.h): squares from 3 squares a side,
+ * bricks from 2 x 4 (aspect at least 1.6: between 1.2 and 1.6 a square's side is
+ * not resolved well enough to tell), L-shapes with a notch of 3 squares each way,
+ * triangles with legs of 5. */
+#include <math.h>
 #include <string.h>
 
 #include "test.h"
 #include "utak/base/geom.h"
 #include "utak/mind/shape.h"
 
+enum { FIELD = 64, MOST_SQUARES = FIELD * FIELD };
+static int32_t sq_x[MOST_SQUARES], sq_y[MOST_SQUARES], sq_n;
+
+static void span(void *ctx, int32_t y, int32_t x0, int32_t x1)
+{
+	(void)ctx;
+	for (int32_t x = x0; x <= x1; x++) {
+		sq_x[sq_n] = x;
+		sq_y[sq_n++] = y;
+	}
+}
+
+/* name(xy, n, deg, dx, dy): the polygon of n points xy turned by deg about its first
+ * point, moved to (20 + dx, 20 + dy), projected, and named. */
+static Shape name(const double *xy, int n, double deg, double dx, double dy, ShapeReading *r)
+{
+	double c, s;
+	geom_cos_sin(deg, &c, &s);
+	Polygon p = {.count = n};
+	for (int i = 0; i < n; i++)
+		p.v[i] = vec2(20 + dx + c * xy[2 * i] - s * xy[2 * i + 1], 20 + dy + s * xy[2 * i] + c * xy[2 * i + 1]);
+	sq_n = 0;
+	geom_project(&p, FIELD, FIELD, span, NULL);
+	return shape_read(sq_x, sq_y, sq_n, 1, r);
+}
+
+/* The shifts: on the grid, and off it; squares and bricks are tried at both at
+ * every angle, the other shapes (whose fits cost more) at one or the other in
+ * turn, so that each angle is tried on and off the grid in some family. */
+static const double shift[2][2] = {{0, 0}, {0.35, 0.7}};
+
+typedef struct Family {
+	Shape truth;
+	int n;
+	double xy[16];
+	int turn; /* the angles tried: 0 .. turn - 5 (a shape repeats after `turn`) */
+	int shifts; /* 2: both shifts at every angle; 1: one, in turn */
+} Family;
+
+/* sweep(f, &named, &wrong): every angle and shift; named counts the right name,
+ * wrong a named shape other than the truth (an unnamed result is neither). */
+static void sweep(const Family *f, int *right, int *wrong, int *runs)
+{
+	*right = *wrong = *runs = 0;
+	for (int deg = 0, turn = 0; deg < f->turn; deg += 5, turn++)
+		for (int k = 0; k < 2; k++) {
+			if (f->shifts == 1 && k != turn % 2)
+				continue;
+			ShapeReading r;
+			Shape s = name(f->xy, f->n, deg, shift[k][0], shift[k][1], &r);
+			++*runs;
+			*right += s == f->truth;
+			*wrong += s != f->truth && s != SHAPE_NONE;
+		}
+}
+
+/* Rectangles: a square repeats every quarter turn, a brick every half. Named right
+ * at every angle and shift, and the sides estimated to within a square. */
+TEST_CASE(rectangles_at_every_angle)
+{
+	static const double sides[][2] = {{3, 3}, {4, 4}, {6, 6}, {4, 2}, {5, 3}, {9, 4}};
+	for (unsigned i = 0; i < sizeof sides / sizeof sides[0]; i++) {
+		double a = sides[i][0], b = sides[i][1];
+		Family f = {a == b ? SHAPE_SQUARE : SHAPE_BRICK, 4, {0, 0, a, 0, a, b, 0, b}, a == b ? 90 : 180, 2};
+		int right, wrong, runs;
+		sweep(&f, &right, &wrong, &runs);
+		if (right != runs)
+			fprintf(stderr, "  %g x %g: %d of %d named right\n", a, b, right, runs);
+		TEST_CHECK(right == runs);
+		ShapeReading r;
+		TEST_CHECK(name(f.xy, 4, 25, 0.35, 0.7, &r) == f.truth);
+		TEST_NEAR(r.length, a, 1.0);
+		TEST_NEAR(r.width, b, 1.0);
+	}
+}
+
+/* L-shapes (the worlds' two, and others) and triangles (right, acute, obtuse,
+ * slanted): the whole turn. The eye misses a corner now and then at these sizes,
+ * which leaves a shape unnamed (then Utak looks again, closer); it must name at
+ * least SHAPE_TEST_RIGHT of the runs right and never name one as another shape. */
+#define SHAPE_TEST_RIGHT 0.97
+TEST_CASE(lshapes_and_triangles_at_every_angle)
+{
+	static const Family fam[] = {
+	    {SHAPE_LSHAPE, 6, {0, 0, 3, 0, 3, 4, 9, 4, 9, 7, 0, 7}, 360, 1},  /* room.w */
+	    {SHAPE_LSHAPE, 6, {0, 0, 3, 0, 3, 3, 8, 3, 8, 6, 0, 6}, 360, 1},  /* pen.w */
+	    {SHAPE_LSHAPE, 6, {0, 0, 6, 0, 6, 3, 3, 3, 3, 6, 0, 6}, 360, 1},  /* 6 x 6, arms of 3 */
+	    {SHAPE_TRIANGLE, 3, {0, 0, 6, 0, 0, 6}, 360, 1},
+	    {SHAPE_TRIANGLE, 3, {0, 0, 5, 0, 2.5, 4.3}, 360, 1},
+	    {SHAPE_TRIANGLE, 3, {0, 0, 10, 0, 4, 4}, 360, 1},
+	    {SHAPE_TRIANGLE, 3, {0, 0, 7.8, 1.9, 1.6, 7.5}, 360, 1}, /* tworooms.w */
+	};
+	for (unsigned i = 0; i < sizeof fam / sizeof fam[0]; i++) {
+		int right, wrong, runs;
+		sweep(&fam[i], &right, &wrong, &runs);
+		if (right < SHAPE_TEST_RIGHT * runs || wrong > 0)
+			fprintf(stderr, "  family %u: %d of %d named right, %d named wrong\n", i, right, runs, wrong);
+		TEST_CHECK(right >= SHAPE_TEST_RIGHT * runs);
+		TEST_CHECK(wrong == 0);
+	}
+}
+
+/* Shapes with no name: a T, a parallelogram, a trapezoid, a regular octagon and
+ * pentagon: never named, at any angle. */
+TEST_CASE(unnamed_shapes_at_every_angle)
+{
+	static Family fam[] = {
+	    {SHAPE_NONE, 8, {0, 0, 9, 0, 9, 3, 6, 3, 6, 9, 3, 9, 3, 3, 0, 3}, 360, 1},
+	    {SHAPE_NONE, 4, {0, 0, 10, 0, 14, 7, 4, 7}, 180, 1},
+	    {SHAPE_NONE, 4, {0, 0, 12, 0, 9, 6, 3, 6}, 180, 1},
+	    {SHAPE_NONE, 8, {0}, 45, 2},
+	    {SHAPE_NONE, 5, {0}, 72, 2},
+	};
+	for (int k = 0; k < 8; k++) {
+		fam[3].xy[2 * k] = 6 * cos(k * atan(1.0));
+		fam[3].xy[2 * k + 1] = 6 * sin(k * atan(1.0));
+	}
+	for (int k = 0; k < 5; k++) {
+		fam[4].xy[2 * k] = 6 * cos(k * 8 * atan(1.0) / 5);
+		fam[4].xy[2 * k + 1] = 6 * sin(k * 8 * atan(1.0) / 5);
+	}
+	for (unsigned i = 0; i < sizeof fam / sizeof fam[0]; i++) {
+		int right, wrong, runs;
+		sweep(&fam[i], &right, &wrong, &runs);
+		if (wrong > 0)
+			fprintf(stderr, "  unnamed family %u: named in %d of %d runs\n", i, wrong, runs);
+		TEST_CHECK(wrong == 0);
+	}
+}
+
+/* Squares given as coordinates (a held object's offsets from Utak: negative, in no
+ * order): a 4 x 4 block is a square, 4 x 2 a brick, and nothing is no shape; a
+ * block with a hole is read with the hole filled; too few squares have no shape. */
+TEST_CASE(shape_of_coordinates)
+{
+	int32_t x[25], y[25], n = 0;
+	for (int32_t j = 0; j < 16; j++) {
+		x[n] = -1 - (j * 3) % 4; /* every column once per row, shuffled */
+		y[n++] = -(j / 4);
+	}
+	TEST_CHECK(shape_of_squares(x, y, 16) == SHAPE_SQUARE);
+	TEST_CHECK(shape_of_squares(x, y, 8) == SHAPE_BRICK); /* the first two rows */
+	TEST_CHECK(shape_of_squares(x, y, 0) == SHAPE_NONE);
+	TEST_CHECK(shape_of_squares(x, y, 3) == SHAPE_NONE);
+	uint8_t ring[25];
+	memset(ring, 1, sizeof ring);
+	ring[12] = 0;
+	ShapeReading r;
+	n = 0;
+	for (int32_t k = 0; k < 25; k++)
+		if (ring[k]) {
+			x[n] = k % 5;
+			y[n++] = k / 5;
+		}
+	TEST_CHECK(shape_read(x, y, n, 1, &r) == SHAPE_SQUARE && r.squares == 25);
+}
+
+/* ---- the old axis-aligned rule, kept for the judge (shape.h) ---------------------- */
+
 static uint8_t mask[64 * 64];
 static int32_t mx0, my0, mx1, my1;
 
-static void span(void *ctx, int32_t y, int32_t x0, int32_t x1)
+static void axis_span(void *ctx, int32_t y, int32_t x0, int32_t x1)
 {
 	(void)ctx;
 	for (int32_t x = x0; x <= x1; x++)
@@ -21,7 +187,7 @@ static void span(void *ctx, int32_t y, int32_t x0, int32_t x1)
 }
 
 /* classify(p): projects p and classifies the squares within their rectangle. */
-static Shape classify(int n, const double *xy, double dx, double dy)
+static Shape axis_classify(int n, const double *xy, double dx, double dy)
 {
 	Polygon p = {.count = n};
 	for (int i = 0; i < n; i++)
@@ -29,7 +195,7 @@ static Shape classify(int n, const double *xy, double dx, double dy)
 	memset(mask, 0, sizeof mask);
 	mx0 = my0 = 64;
 	mx1 = my1 = -1;
-	geom_project(&p, 64, 64, span, NULL);
+	geom_project(&p, 64, 64, axis_span, NULL);
 	static uint8_t box[64 * 64];
 	int32_t w = mx1 - mx0 + 1, h = my1 - my0 + 1;
 	for (int32_t y = 0; y < h; y++)
@@ -38,7 +204,7 @@ static Shape classify(int n, const double *xy, double dx, double dy)
 	return shape_classify(box, w, h);
 }
 
-TEST_CASE(shapes_of_the_worlds)
+TEST_CASE(axis_rule_shapes_of_the_worlds)
 {
 	static const double square[] = {6, 20, 10, 20, 10, 24, 6, 24};
 	static const double brick[] = {24, 19, 33, 19, 33, 22, 24, 22};
@@ -49,16 +215,16 @@ TEST_CASE(shapes_of_the_worlds)
 	/* On the grid and shifted off it by fractions of a square. */
 	for (int k = 0; k < 4; k++) {
 		double dx = 0.25 * k, dy = 0.3 * k;
-		TEST_CHECK(classify(4, square, dx, dy) == SHAPE_SQUARE);
-		TEST_CHECK(classify(4, brick, dx, dy) == SHAPE_BRICK);
-		TEST_CHECK(classify(6, lshape, dx, dy) == SHAPE_LSHAPE);
-		TEST_CHECK(classify(6, pen_l, dx, dy) == SHAPE_LSHAPE);
-		TEST_CHECK(classify(3, triangle, dx, dy) == SHAPE_TRIANGLE);
-		TEST_CHECK(classify(3, right_tri, dx, dy) == SHAPE_TRIANGLE);
+		TEST_CHECK(axis_classify(4, square, dx, dy) == SHAPE_SQUARE);
+		TEST_CHECK(axis_classify(4, brick, dx, dy) == SHAPE_BRICK);
+		TEST_CHECK(axis_classify(6, lshape, dx, dy) == SHAPE_LSHAPE);
+		TEST_CHECK(axis_classify(6, pen_l, dx, dy) == SHAPE_LSHAPE);
+		TEST_CHECK(axis_classify(3, triangle, dx, dy) == SHAPE_TRIANGLE);
+		TEST_CHECK(axis_classify(3, right_tri, dx, dy) == SHAPE_TRIANGLE);
 	}
 }
 
-TEST_CASE(rectangles_by_aspect)
+TEST_CASE(axis_rule_rectangles_by_aspect)
 {
 	uint8_t full[12 * 12];
 	memset(full, 1, sizeof full);
@@ -78,33 +244,13 @@ TEST_CASE(rectangles_by_aspect)
 	TEST_CHECK(shape_classify(plus, 5, 5) == SHAPE_NONE);
 }
 
-/* Squares given as coordinates (a held object's offsets from Utak: negative, in no
- * order): a 4 x 4 block is a square, 4 x 2 a brick, the 4 x 4 block less a 2 x 2
- * corner an L, and nothing is no shape. */
-TEST_CASE(shape_of_coordinates)
-{
-	int32_t x[16], y[16], n = 0;
-	for (int32_t j = 0; j < 16; j++) {
-		x[n] = -1 - (j * 3) % 4; /* every column once per row, shuffled */
-		y[n++] = -(j / 4);
-	}
-	TEST_CHECK(shape_of_squares(x, y, 16) == SHAPE_SQUARE);
-	TEST_CHECK(shape_of_squares(x, y, 8) == SHAPE_BRICK); /* the first two rows */
-	n = 0;
-	for (int32_t j = 0; j < 16; j++)
-		if (!(x[j] <= -3 && y[j] <= -2)) { /* drop the 2 x 2 at one corner */
-			x[n] = x[j];
-			y[n++] = y[j];
-		}
-	TEST_CHECK(n == 12);
-	TEST_CHECK(shape_of_squares(x, y, n) == SHAPE_LSHAPE);
-	TEST_CHECK(shape_of_squares(x, y, 0) == SHAPE_NONE);
-}
-
 int main(void)
 {
-	TEST_RUN(shapes_of_the_worlds);
-	TEST_RUN(rectangles_by_aspect);
+	TEST_RUN(axis_rule_shapes_of_the_worlds);
+	TEST_RUN(axis_rule_rectangles_by_aspect);
+	TEST_RUN(rectangles_at_every_angle);
+	TEST_RUN(lshapes_and_triangles_at_every_angle);
+	TEST_RUN(unnamed_shapes_at_every_angle);
 	TEST_RUN(shape_of_coordinates);
 	return TEST_EXIT();
 }

@@ -30,6 +30,12 @@
  * /proc/ (/dev/stdout), cannot be replaced by renaming and is written in place,
  * still with every write checked. Hard links to a replaced file keep the old
  * contents: the target is a new file under the old name.
+ * STANDARD STREAMS. "-" is standard output; so is a device path that names the
+ * file standard output (or error) is open on, such as /dev/stdout: the contents go
+ * to that stream, after what the program printed there, and a commit flushes it
+ * without closing it. (Opening /dev/stdout anew would give a second file offset:
+ * when standard output is a regular file, the two writers would overwrite each
+ * other.)
  *
  * MEMORY: an Output is a fixed-size value (the paths it holds are at most
  * OUTPUT_MAX_PATH bytes); at most OUTPUT_MAX_OPEN are open at once, in a static
@@ -51,6 +57,7 @@ typedef struct Output {
 	FILE *stream;                /* where to write; NULL once committed or abandoned */
 	char target[OUTPUT_MAX_PATH]; /* the file to replace, links followed */
 	int slot;                    /* its temporary's entry in the static table; -1: in place */
+	bool standard;               /* stream is stdout or stderr: flushed, never closed */
 	char name[256];              /* the path as given, printable, for diagnostics */
 } Output;
 
@@ -76,7 +83,7 @@ void output_abandon(Output *o);
 void output_abandon_all(void);
 
 /* output_same(a, b): the two paths name the same file (the same string, or an
- * existing file reached by both). */
+ * existing file reached by both; "-" is /dev/stdout). */
 bool output_same(const char *a, const char *b);
 
 /* output_flush(f, name, d): flushes a stream utak writes to, standard output among

@@ -25,6 +25,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "utak/body/table.h"
 #include "utak/base/task.h"
@@ -42,5 +43,12 @@
  * why says what was or was not achieved. */
 bool judge_task(const World *start, const World *end, const Table *table, const Task *task, const Vec2 *trail,
 		int n, char *why, size_t size);
+
+/* judge_squares_read(): how many squares of a TABLE the last judge_task read in its
+ * own passes (rebuilding the starting TABLE and the rooms' skeleton aside): its
+ * cost, a few passes of the TABLE whatever the task (issue 14: a shape task's
+ * verdict once read the TABLE twice per object). For tests and benchmarks; one
+ * count for the whole program, so not thread-safe. */
+int64_t judge_squares_read(void);
 
 #endif

@@ -21,6 +21,7 @@
 #include "utak/mind/planner.h"
 #include "utak/mind/regions.h"
 #include "utak/mind/screen.h"
+#include "utak/mind/shape.h"
 #include "utak/base/task.h"
 #include "utak/mind/worldmodel.h"
 
@@ -54,6 +55,15 @@
  * square or two off; the object pressed against them is where they really are). */
 #define CONTROLLER_SEAT_PUSHES 8
 
+/* Shapes read lately (objects.c), by object ident and a key of the squares read. */
+#define CONTROLLER_MEMOS 64
+typedef struct ShapeMemo {
+	int32_t ident;
+	uint64_t key;
+	ShapeReading reading;
+	bool guessed;	/* the reading is at the fovea's scale, the object's too coarse */
+} ShapeMemo;
+
 typedef enum ControllerPhase {
 	PHASE_TRAVEL,	/* walking to a goal point (or exploring toward one) */
 	PHASE_GRASP,	/* beside the object: grasp it */
@@ -83,6 +93,7 @@ typedef struct Controller {
 	ControllerPhase phase;
 	Vec2 start;		/* Utak's believed point when the task began, model frame */
 	int32_t target;		/* the task's object: its model ident, 0 none */
+	Vec2 target_at;		/* ... and its centroid when last seen, model frame */
 	bool exploring;		/* the goal is a frontier of the unseen, not the task's */
 	bool surveying;		/* a push into a corner: going to look at the corner first */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
@@ -119,6 +130,8 @@ typedef struct Controller {
 	Vec2 seat_from;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
+	ShapeMemo memo[CONTROLLER_MEMOS];
+	int memo_next;		/* the entry to write next (the oldest) */
 	char note[2048];	/* what this cycle's perception and planning did (and the plan) */
 	char why[300];		/* PHASE_FAILED: why */
 	/* Tasks (vi)-(ix): carrying the object in (x, y, theta) (carrytask.h); NULL

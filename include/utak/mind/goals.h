@@ -30,9 +30,6 @@ static inline bool goals_cell_of(const Screen *s, Vec2 p, int32_t *i, int32_t *j
 static const int8_t goals_touch_offset[TOUCH_CELLS][2] = {{0, 1},  {1, 1},   {1, 0},  {1, -1},
 							  {0, -1}, {-1, -1}, {-1, 0}, {-1, 1}};
 
-/* goals_touching(c, k): touch shows an object's colour in a square of node k's
- * rectangle (any object when k < 0). */
-bool goals_touching(const Controller *c, int32_t k);
 /* goals_reach(g, si, sj, dist): breadth-first steps over g's free cells,
  * 4-connected, from (si, sj); -1 where unreached. dist has g->w * g->h entries. */
 void goals_reach(const Grid *g, int32_t si, int32_t sj, int32_t *dist);
@@ -47,13 +44,6 @@ typedef struct RoomMap {
 } RoomMap;
 void goals_roommap_build(RoomMap *r, const Screen *s);
 void goals_roommap_free(RoomMap *r);
-
-/* goals_object_shape(m, k): the shape of object node k. */
-Shape goals_object_shape(const WorldModel *m, int32_t k);
-/* goals_seen_at(m, k, res): every square of node k has been seen at res or finer. */
-bool goals_seen_at(const WorldModel *m, int32_t k, int res);
-/* goals_find_target(c): the model node of the task's object, -1 when none is seen. */
-int32_t goals_find_target(Controller *c);
 
 /* goals_corner_score(k, x, y): how far square (x, y) lies toward corner k. */
 int64_t goals_corner_score(Corner k, int32_t x, int32_t y);
@@ -73,9 +63,19 @@ void goals_corner_failed(Controller *c, int64_t short_by);
 bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal);
 /* goals_inspect(c, dist, goal): beside the nearest object not yet seen whole in the
  * fovea, where a closer look may show its shape (or show it to be part of a wall). */
-bool goals_inspect(const Controller *c, const int32_t *dist, Vec2 *goal);
+bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal);
 /* goals_beside(c, k, dist, goal): the reachable free cell beside node k nearest Utak. */
 bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
+/* goals_worth_looking(c, p): from point p there is still something to see: an
+ * unknown square, or a square of an object not yet confirmed, within GOALS_LOOK
+ * squares of it (and p is not believed occupied). */
+#define GOALS_LOOK 2
+/* Looking for the task's object, an object seen only coarsely is looked at before
+ * the unseen unless the unseen is this many times nearer. */
+#define GOALS_COARSE_FIRST 3.0
+bool goals_worth_looking(Controller *c, Vec2 p);
+/* goals_near(c, p, dist, goal): the reachable free cell nearest point p. */
+bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal);
 /* goals_next_room(c, g, dist, rm, from_room, goal): a reachable cell near the centre
  * of a room next to from_room. */
 bool goals_next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,

@@ -188,6 +188,11 @@ typedef struct WorldModel {
 	int32_t ring_count, ring_cap;
 	ModelVertex *vertex;
 	int32_t vertex_count, vertex_cap;
+	/* Which node holds each occupied square of the derivation's window (x0, y0,
+	 * w, h; row-major, -1 none): an object's own squares, which its rectangle
+	 * alone cannot tell from a neighbour's. */
+	int32_t *node_at;
+	int32_t node_at_x0, node_at_y0, node_at_w, node_at_h;
 	/* The squares ever seen: how many, and their containing rectangle (x0..x1,
 	 * y0..y1, inclusive; meaningless when seen_count is 0). Kept by every change
 	 * to the grid, so that no reader has to scan the whole evidence window. */
@@ -239,6 +244,10 @@ int32_t worldmodel_known_squares(const WorldModel *m);
 /* worldmodel_evidence(m, x, y): the square's evidence (all zero where never seen,
  * and beyond the reach). */
 Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y);
+
+/* worldmodel_node_at(m, x, y): the node (index into m->node) whose squares hold
+ * square (x, y): an object or an uncertain set; -1 for floor, unknown, or Utak. */
+int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y);
 
 /* worldmodel_utak_square(m, &x, &y): the square holding Utak's believed point. */
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y);

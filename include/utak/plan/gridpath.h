@@ -18,7 +18,11 @@
  * shared between threads. The Path holds the cell centres (x + 0.5, y + 0.5) from
  * start to goal, one per step, and path.expanded the number of cells expanded.
  *
- * MEMORY: 16 bytes per cell of the grid with a one-cell border, plus the open list
+ * JUMP POINTS: with s.method = GRIDPATH_JUMP after gridpath_init, the same query
+ * runs as a jump-point search (gridpath.c): the same length, path.expanded then
+ * counts the jump points expanded.
+ *
+ * MEMORY: 18 bytes per cell of the grid with a one-cell border, plus the open list
  * (16 bytes per pushed entry; at most 8 pushes per cell, far fewer in practice),
  * kept between queries.
  *
@@ -33,6 +37,13 @@
 
 #include "utak/plan/grid.h"
 #include "utak/plan/path.h"
+
+/* How gridpath_find searches; both return a shortest path of the same length (the
+ * cells may differ where several paths are shortest). */
+typedef enum GridPathMethod {
+	GRIDPATH_ASTAR = 0, /* A* over every cell (the default) */
+	GRIDPATH_JUMP,      /* A* over jump points (Harabor and Grastien 2011), see gridpath.c */
+} GridPathMethod;
 
 typedef enum GridPathStatus {
 	GRIDPATH_FOUND = 0,    /* a shortest path was found */
@@ -62,6 +73,7 @@ typedef struct GridPathNode {
 	int32_t diagonal; /* diagonal steps of the best known path to the cell */
 	uint8_t free;     /* 1 when free; the border cells are 0 */
 	uint8_t from;     /* direction (0..7) of the step that reached it */
+	uint16_t run;     /* jump search: steps of the run that reached it (0: too long) */
 } GridPathNode;
 
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
@@ -72,16 +84,28 @@ typedef struct GridPathSearch {
 	GridPathNode *node; /* (w + 2) (h + 2) cells */
 	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
 	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
-	 * the start's f; the current bucket is a binary heap, later ones are unsorted. */
-	GridPathBucket *bucket;
-	int bucket_cap;  /* buckets allocated */
-	int bucket_used; /* buckets touched this query: 0..bucket_used-1 */
-	int bucket_now;  /* the current bucket; no entry lies in an earlier one */
-	double f_start;  /* f of the start cell: the origin of bucket numbers */
+	 * the start's f; the current bucket is a binary heap, later ones are unsorted.
+	 * Only a page of GRIDPATH_PAGE buckets, from bucket page_base on, is kept;
+	 * entries past it wait unsorted in overflow until the page is empty. */
+	GridPathBucket *bucket; /* GRIDPATH_PAGE buckets, or NULL before the first query */
+	uint64_t *nonempty;     /* GRIDPATH_PAGE bits: bucket i holds entries */
+	int64_t page_base;      /* the bucket number of bucket[0] */
+	int64_t bucket_now;     /* the current bucket; no entry lies in an earlier one */
+	double f_start;         /* f of the start cell: the origin of bucket numbers */
+	GridPathOpen *overflow; /* entries of buckets >= page_base + GRIDPATH_PAGE */
+	int overflow_count, overflow_cap;
 	/* Entries whose f equals that of the cell being expanded, the least in the open
 	 * list: they may be expanded next in any order, so they skip the heap. */
 	GridPathOpen *stack;
 	int stack_count, stack_cap;
+	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
+	 * search. The jump search scans the grid along rows and columns, so it keeps the
+	 * free cells twice more, a byte each: row-major (rows) and column-major (cols),
+	 * both padded like node. */
+	GridPathMethod method;
+	int32_t ph;     /* padded height: h + 2 */
+	uint8_t *rows;  /* pw * ph: rows[y * pw + x] = 1 when (x - 1, y - 1) is free */
+	uint8_t *cols;  /* ph * pw: cols[x * ph + y], the same transposed */
 } GridPathSearch;
 
 /* gridpath_init(s, grid): prepares a search on a copy of grid (w, h >= 1). */
@@ -92,7 +116,8 @@ void gridpath_free(GridPathSearch *s);
  * cell (sx, sy) to cell (gx, gy). On GRIDPATH_FOUND, path holds the cell centres
  * and *length the exact length (straight + diagonal sqrt 2, computed from step
  * counts, not by summing). On other results path is empty and *length is -1.
- * path->expanded counts the cells expanded (closed) in every case. */
+ * path->expanded counts the cells expanded (closed) in every case: every cell the
+ * search closed, or for GRIDPATH_JUMP every jump point. */
 GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t gx, int32_t gy,
                              Path *path, double *length);
 

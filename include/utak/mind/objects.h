@@ -1,0 +1,79 @@
+/* objects.h - the objects of the world model named by shape: hypotheses and their
+ * confirmation (paper 3.3, 2.3; the meaning in /work/spec-verdicts.md). CONTROLLER
+ * SIDE: the goals (goals.c) and the action cycle (controller.c) ask these.
+ *
+ * An object node's shape is read from its own squares (worldmodel_node_at) by
+ * shape_read, at the scale of the coarsest cell any of them was seen in. Paper 3.3
+ * gives every part of the model a "degree of confidence based on evidence
+ * collected from a series of retinal impressions": here a shape read from squares
+ * some of which were seen only in the outer zones is a HYPOTHESIS; it is CONFIRMED
+ * when every square of the object has been seen in the fovea, and then it is the
+ * shape the object has (it may be another than the hypothesis, which is dropped).
+ * A set too coarse to name at its scale (a 4 x 4 square seen in the periphery is
+ * one or two blocks of 4) is still a hypothesis of low confidence: the shape its
+ * squares would have if they had been seen in the fovea (GUESSED). A hypothesis of
+ * the task's shape draws Utak closer, and the fovea then confirms or drops it.
+ * Utak walks to a hypothesis to look at it; he claims to have reached an object
+ * only when it is confirmed as the task's shape (objects_touching_target).
+ *
+ * THE TASK'S OBJECT ("the square") is, as for the judge, the object of the task's
+ * shape nearest Utak's starting point (his point to the object's centroid), among
+ * those Utak has named so (hypotheses too: he cannot know of others). The choice
+ * is kept while it is not confirmed as another shape (a coarse look may show it
+ * as none), until another object of the shape is seen nearer the start by more
+ * than OBJECTS_SWITCH squares (so that a shape
+ * read a square off from one place and right from the next does not draw Utak to
+ * and fro).
+ *
+ * MEMORY: readings are kept in a small cache in the Controller, by object ident and
+ * the squares read (shape_read costs milliseconds; the objects change little from
+ * one impression to the next). */
+#ifndef UTAK_OBJECTS_H
+#define UTAK_OBJECTS_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "utak/mind/controller.h"
+#include "utak/mind/shape.h"
+
+/* Another object of the task's shape must lie this much nearer the start to take
+ * the place of the one chosen (squares). */
+#define OBJECTS_SWITCH 1.0
+/* An object whose centroid lies this near the chosen one's is the chosen one, when
+ * the model has given it another number (seen coarsely, an object can merge with
+ * the unknown for an impression and come back; squares). */
+#define OBJECTS_SAME 2.0
+
+typedef struct ObjectReading {
+	Shape shape;
+	bool confirmed;   /* every square seen in the fovea */
+	int32_t squares;  /* the object's squares */
+	int32_t foveal;   /* how many of them were seen in the fovea */
+	double scale;     /* the side of the coarsest cell they were seen in: 1, 2 or 4 */
+	Vec2 centroid;    /* of its squares, model frame */
+	bool guessed;     /* the shape is a guess: the squares read as if seen in the fovea */
+	double confidence; /* 1 confirmed; below, the share seen in the fovea, halved for a guess */
+	ShapeReading reading;
+} ObjectReading;
+
+/* objects_read(c, k): what object node k is, by shape (cached). */
+ObjectReading objects_read(Controller *c, int32_t k);
+
+/* objects_find_target(c): the model node of the task's object; -1 when no object
+ * is named (as a hypothesis or confirmed) the task's shape. Sets c->target. */
+int32_t objects_find_target(Controller *c);
+
+/* objects_touching(c, k): touch shows an object's colour in a square of node k (any
+ * object when k < 0). */
+bool objects_touching(const Controller *c, int32_t k);
+
+/* objects_touching_target(c): Utak touches the task's object, confirmed as the
+ * task's shape; a target confirmed as another shape is dropped (c->target = 0). */
+bool objects_touching_target(Controller *c);
+
+/* objects_unconfirmed_square(c, k, &x, &y): a square of node k not yet seen in the
+ * fovea, the nearest Utak; false when there is none. */
+bool objects_unconfirmed_square(const Controller *c, int32_t k, int32_t *x, int32_t *y);
+
+#endif

@@ -1,0 +1,182 @@
+/* objects.c - the objects of the world model named by shape: hypotheses and their
+ * confirmation, and the task's object (paper 3.3, 2.3). CONTROLLER SIDE. The rules
+ * are in objects.h. */
+#include "utak/mind/objects.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "utak/base/util.h"
+#include "utak/mind/goals.h"
+
+/* Scale (shape.h) of each resolution: the side of its cells. */
+static double objects_scale(int res)
+{
+	return res == WORLDMODEL_RES_FOVEA ? 1 : res == WORLDMODEL_RES_INTERMEDIATE ? 2 : 4;
+}
+
+ObjectReading objects_read(Controller *c, int32_t k)
+{
+	const WorldModel *m = &c->model;
+	const ModelNode *n = &m->node[k];
+	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}};
+	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
+	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
+	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
+	if (n->kind != NODE_OBJECT || cap <= 0)
+		return o;
+	int32_t *xs = util_alloc((size_t)cap, sizeof *xs), *ys = util_alloc((size_t)cap, sizeof *ys);
+	int coarsest = WORLDMODEL_RES_FOVEA;
+	bool edge_seen = true; /* the floor round it seen in the fovea too */
+	/* FNV-1a over the squares and their resolutions: the memo's key. */
+	uint64_t key = 1469598103934665603u;
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++) {
+			if (worldmodel_node_at(m, x, y) != k)
+				continue;
+			for (int d = 0; d < 4; d++) {
+				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+				int32_t nx = x + step[d][0], ny = y + step[d][1];
+				edge_seen &= worldmodel_node_at(m, nx, ny) == k ||
+					     worldmodel_evidence(m, nx, ny).res == WORLDMODEL_RES_FOVEA;
+			}
+			int res = worldmodel_evidence(m, x, y).res;
+			coarsest = res < coarsest ? res : coarsest;
+			o.foveal += res == WORLDMODEL_RES_FOVEA;
+			o.centroid = vec2_add(o.centroid, vec2(x + 0.5, y + 0.5));
+			xs[o.squares] = x;
+			ys[o.squares++] = y;
+			uint64_t v[3] = {(uint64_t)(uint32_t)x, (uint64_t)(uint32_t)y, (uint64_t)res};
+			for (int i = 0; i < 3; i++) {
+				key ^= v[i];
+				key *= 1099511628211u;
+			}
+		}
+	if (o.squares > 0)
+		o.centroid = vec2_scale(o.centroid, 1.0 / o.squares);
+	o.scale = objects_scale(coarsest);
+	o.confirmed = o.squares > 0 && o.foveal == o.squares && edge_seen;
+	int hit = -1;
+	for (int i = 0; i < CONTROLLER_MEMOS && hit < 0; i++)
+		if (c->memo[i].ident == n->ident && c->memo[i].key == key)
+			hit = i;
+	if (hit < 0) {
+		hit = c->memo_next;
+		c->memo_next = (c->memo_next + 1) % CONTROLLER_MEMOS;
+		c->memo[hit].ident = n->ident;
+		c->memo[hit].key = key;
+		Shape named = shape_read(xs, ys, o.squares, o.scale, &c->memo[hit].reading);
+		c->memo[hit].guessed = false;
+		if (named == SHAPE_NONE && o.scale > 1 && !o.confirmed) {
+			ShapeReading fine;
+			if (shape_read(xs, ys, o.squares, 1, &fine) != SHAPE_NONE) {
+				c->memo[hit].reading = fine;
+				c->memo[hit].guessed = true;
+			}
+		}
+	}
+	free(xs);
+	free(ys);
+	o.reading = c->memo[hit].reading;
+	o.shape = o.reading.shape;
+	o.guessed = c->memo[hit].guessed;
+	o.confidence = o.confirmed ? 1 : (o.squares ? (double)o.foveal / o.squares : 0) * (o.guessed ? 0.5 : 1);
+	return o;
+}
+
+int32_t objects_find_target(Controller *c)
+{
+	const WorldModel *m = &c->model;
+	int32_t best = -1, chosen = -1, best_named = -1;
+	double best_d = INFINITY, named_d = INFINITY, chosen_d = INFINITY, chosen_near = OBJECTS_SAME;
+	bool chosen_confirmed = false;
+	for (int32_t k = 0; k < m->node_count; k++) {
+		if (m->node[k].kind != NODE_OBJECT)
+			continue;
+		ObjectReading o = objects_read(c, k);
+		double d = goals_distance(o.centroid, c->start);
+		/* The one chosen before, by number or, when the model has renumbered it,
+		 * by place: kept while the fovea has not shown it to be another shape. */
+		double moved = goals_distance(o.centroid, c->target_at);
+		bool same = c->target != 0 && (m->node[k].ident == c->target || moved < chosen_near);
+		if (same && (o.shape == c->task.shape || !o.confirmed)) {
+			chosen = k;
+			chosen_d = d;
+			chosen_confirmed = o.confirmed;
+			chosen_near = m->node[k].ident == c->target ? -1 : moved;
+		}
+		if (o.shape == c->task.shape && d < best_d) {
+			best_d = d;
+			best = k;
+		}
+		if (o.shape == c->task.shape && !o.guessed && d < named_d) {
+			named_d = d;
+			best_named = k;
+		}
+	}
+	/* A guess (too coarse to name) does not take the place of a target the fovea
+	 * has confirmed: a far object seen in the periphery can look like anything. */
+	if (chosen_confirmed) {
+		best = best_named;
+		best_d = named_d;
+	}
+	if (chosen >= 0 && (best < 0 || chosen_d <= best_d + OBJECTS_SWITCH))
+		best = chosen;
+	c->target = best >= 0 ? m->node[best].ident : 0;
+	if (best >= 0)
+		c->target_at = objects_read(c, best).centroid;
+	return best;
+}
+
+bool objects_touching(const Controller *c, int32_t k)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	for (int i = 0; i < TOUCH_CELLS; i++) {
+		char colour = c->impression.touch[i];
+		if (colour < 'A' || colour > 'Z' || colour == 'B')
+			continue;
+		if (k < 0)
+			return true;
+		if (worldmodel_node_at(&c->model, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]) == k)
+			return true;
+	}
+	return false;
+}
+
+bool objects_touching_target(Controller *c)
+{
+	int32_t k = objects_find_target(c);
+	if (k < 0 || !objects_touching(c, k))
+		return false;
+	ObjectReading o = objects_read(c, k);
+	return o.confirmed && o.shape == c->task.shape;
+}
+
+bool objects_unconfirmed_square(const Controller *c, int32_t k, int32_t *x, int32_t *y)
+{
+	const WorldModel *m = &c->model;
+	const ModelNode *n = &m->node[k];
+	double best = INFINITY;
+	/* The object's squares and the floor round them (one square beyond its
+	 * rectangle): any not yet seen in the fovea. */
+	for (int32_t j = (int32_t)floor(n->rect.lo.y) - 1; j <= (int32_t)ceil(n->rect.hi.y); j++)
+		for (int32_t i = (int32_t)floor(n->rect.lo.x) - 1; i <= (int32_t)ceil(n->rect.hi.x); i++) {
+			if (worldmodel_evidence(m, i, j).res == WORLDMODEL_RES_FOVEA)
+				continue;
+			bool part = worldmodel_node_at(m, i, j) == k;
+			for (int d = 0; d < 4 && !part; d++) {
+				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+				part = worldmodel_node_at(m, i + step[d][0], j + step[d][1]) == k;
+			}
+			if (!part)
+				continue;
+			double d = goals_distance(goals_centre(i, j), m->utak);
+			if (d < best) {
+				best = d;
+				*x = i;
+				*y = j;
+			}
+		}
+	return best < INFINITY;
+}
