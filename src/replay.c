@@ -765,7 +765,7 @@ void replay_cycle(Replay *r, const World *w, const Table *t, const Impression *i
 {
 	record_plan(r, c, "13", c->cycle);
 	/* The trace line, as main.c prints it. */
-	char line[512];
+	char line[sizeof c->note + 256 + 32];
 	char motion[256] = "";
 	FILE *f = fmemopen(motion, sizeof motion - 1, "w");
 	if (f) {

@@ -29,6 +29,7 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/carrytask.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
@@ -141,12 +142,16 @@ void controller_free(Controller *c)
 	planner_free(&c->planner);
 	path_free(&c->route);
 	path_free(&c->trail);
+	carrytask_delete(c->carry);
+	c->carry = NULL;
 }
 
 void controller_set_task(Controller *c, const Task *t)
 {
 	c->task = *t;
 	c->has_task = true;
+	if (carrytask_applies(t) && !c->carry)
+		c->carry = carrytask_new();
 }
 
 void controller_start(Controller *c, const Impression *first)
@@ -191,6 +196,8 @@ static void arrive(Controller *c)
 		c->surveying = false; /* the corner seen from close by: now the object */
 		return;
 	}
+	if (c->carry && carrytask_arrive(c))
+		return; /* the door or the corner seen from close by: now the object */
 	switch (c->task.kind) {
 	case TASK_GO_NEXT_ROOM:
 		c->phase = PHASE_DONE;
@@ -300,6 +307,8 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 		case PHASE_PUSH:
 			break;
 		}
+		if (c->phase == PHASE_PUSH && c->carry)
+			return carrytask_decide(c, cmd); /* tasks (vi)-(ix): the carry's next command */
 		char why[160];
 		if (!c->have_plan && !make_plan(c, why, sizeof why)) {
 			c->phase = PHASE_FAILED;
@@ -337,7 +346,19 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	return false;
 }
 
+static void perceive(Controller *c, const MotorCommand *cmd, const Impression *imp);
+
 void controller_perceive(Controller *c, const MotorCommand *cmd, const Impression *imp)
+{
+	perceive(c, cmd, imp);
+	if (c->carry) { /* the carry's plan, when one was made this cycle, after the note */
+		size_t n = strlen(c->note);
+		carrytask_note(c, c->note + n, sizeof c->note - n);
+	}
+}
+
+/* perceive(c, cmd, imp): steps 11-13, the note saying what they did. */
+static void perceive(Controller *c, const MotorCommand *cmd, const Impression *imp)
 {
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
@@ -371,6 +392,10 @@ void controller_perceive(Controller *c, const MotorCommand *cmd, const Impressio
 		c->stuck = 0;
 	}
 	c->last_position = c->model.utak;
+	if (c->carry && c->phase == PHASE_PUSH) {
+		carrytask_perceive(c, cmd); /* its own plan, checked its own way */
+		return;
+	}
 	if (cmd->kind == MOTOR_PUSH && c->phase == PHASE_PUSH && push_in_circles(c))
 		return;
 	if (c->phase == PHASE_SEAT) {

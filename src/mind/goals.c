@@ -11,6 +11,7 @@
  * coarsely. All coordinates are in the world model's $floor frame unless named
  * screen. */
 #include "utak/mind/goals.h"
+#include "utak/mind/carrytask.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -175,7 +176,7 @@ void goals_corner_failed(Controller *c, int64_t short_by)
 /* ---- the other goals ------------------------------------------------------------ */
 
 /* goals_frontier(c, g, dist): the nearest reachable known-floor cell beside an unknown one. */
-static bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
+bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
 	int32_t best = -1, best_d = INT32_MAX;
@@ -274,7 +275,7 @@ bool goals_worth_looking(Controller *c, Vec2 p)
 
 /* goals_inspect(c, dist): beside the nearest object not yet seen whole in the fovea,
  * where a closer look may show its shape: part of looking for an object. */
-static bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal)
+bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal)
 {
 	const WorldModel *m = &c->model;
 	double best_d = INFINITY;
@@ -496,6 +497,8 @@ void goals_choose(Controller *c, GoalResult *out)
 			out->goal = c->round[c->round_next];
 			break;
 		}
+		if (!pushing && c->carry && carrytask_goal(c, dist, out))
+			break; /* tasks (vi)-(ix): look, survey, grasp for the whole carry */
 		if (!pushing) {
 			int32_t k = objects_find_target(c), ux, uy;
 			bool push_task = c->task.kind != TASK_GO_SHAPE && c->task.kind != TASK_GO_ROUND;

@@ -522,6 +522,24 @@ static void wm_prune_held(WorldModel *m)
 	m->held_count = n;
 }
 
+/* wm_refind_held(m, imp): after a turn, the held set found again from what the eye
+ * now shows: wm_carry turned the squares' centres, which for a turn other than a
+ * quarter turn only guesses which squares the object now covers. The guess stays
+ * when the flood finds nothing (or too much: the object against a wall). */
+static void wm_refind_held(WorldModel *m, const Impression *imp)
+{
+	int32_t keep_dx[WORLDMODEL_HELD_MAX], keep_dy[WORLDMODEL_HELD_MAX]; /* 8 KB */
+	int32_t keep = m->held_count;
+	memcpy(keep_dx, m->held_dx, (size_t)keep * sizeof *keep_dx);
+	memcpy(keep_dy, m->held_dy, (size_t)keep * sizeof *keep_dy);
+	wm_find_held(m, imp);
+	if (m->held_count == 0 || m->held_count > 2 * keep + 8) {
+		m->held_count = keep;
+		memcpy(m->held_dx, keep_dx, (size_t)keep * sizeof *keep_dx);
+		memcpy(m->held_dy, keep_dy, (size_t)keep * sizeof *keep_dy);
+	}
+}
+
 /* wm_vacate(m, from, saved): the held object's squares, Utak on `from`, leave their
  * places (predicted floor); their evidence goes to saved. */
 static void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
@@ -548,7 +566,7 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 	double c, s;
 	geom_cos_sin(deg, &c, &s);
 	wm_vacate(m, from, saved);
-	int32_t tx = (int32_t)floor(to.x), ty = (int32_t)floor(to.y);
+	int32_t tx = (int32_t)floor(to.x), ty = (int32_t)floor(to.y), n = 0;
 	for (int32_t j = 0; j < m->held_count; j++) {
 		Vec2 centre = vec2(fx + m->held_dx[j] + 0.5, fy + m->held_dy[j] + 0.5);
 		Vec2 moved = vec2_add(geom_rotate(centre, from, c, s), vec2_sub(to, from));
@@ -556,7 +574,16 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 		Evidence *e = nx == tx && ny == ty ? NULL : wm_at(m, nx, ny);
 		if (e)
 			*e = saved[j];
+		/* The held set turns with it (two squares landing on one are one). */
+		bool again = false;
+		for (int32_t i = 0; i < n && !again; i++)
+			again = m->held_dx[i] == nx - tx && m->held_dy[i] == ny - ty;
+		if (!again) {
+			m->held_dx[n] = nx - tx;
+			m->held_dy[n++] = ny - ty;
+		}
 	}
+	m->held_count = n;
 }
 
 /* wm_seen_window(m): counts the squares seen and their rectangle (WorldModel's seen_
@@ -724,6 +751,8 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	wm_observe(m, ux, uy, imp);
 	if (held)
 		wm_prune_held(m);
+	if (cmd->kind == MOTOR_TURN && m->holding)
+		wm_refind_held(m, imp);
 	m->last = *imp;
 	m->impressions++;
 	wm_seen_window(m);

@@ -136,8 +136,11 @@ typedef struct Controller {
 	int tug_dx, tug_dy, tug_pulled, tug_tries;
 	ShapeMemo memo[CONTROLLER_MEMOS];
 	int memo_next;		/* the entry to write next (the oldest) */
-	char note[200];		/* what this cycle's perception and planning did */
-	char why[200];		/* PHASE_FAILED: why */
+	char note[2048];	/* what this cycle's perception and planning did (and the plan) */
+	char why[300];		/* PHASE_FAILED: why */
+	/* Tasks (vi)-(ix): carrying the object in (x, y, theta) (carrytask.h); NULL
+	 * for the others. */
+	struct CarryTask *carry;
 } Controller;
 
 void controller_init(Controller *c, PlannerKind planner);

@@ -58,6 +58,12 @@ bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const
 int64_t goals_corner_shortfall(Controller *c);
 /* goals_corner_failed(c, short_by): fails the task, saying how far short. */
 void goals_corner_failed(Controller *c, int64_t short_by);
+/* goals_frontier(c, dist, goal): the nearest reachable known-floor cell beside an
+ * unknown one, not yet visited. */
+bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal);
+/* goals_inspect(c, dist, goal): beside the nearest object not yet seen whole in the
+ * fovea, where a closer look may show its shape (or show it to be part of a wall). */
+bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal);
 /* goals_beside(c, k, dist, goal): the reachable free cell beside node k nearest Utak. */
 bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
 /* goals_worth_looking(c, p): from point p there is still something to see: an

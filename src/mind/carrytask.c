@@ -1,0 +1,880 @@
+/* carrytask.c - the carrying tasks (vi)-(ix): look, survey, choose the grasp, carry
+ * in (x, y, theta), release (paper 2.3, 3.6, 5). CONTROLLER SIDE: it knows the world
+ * through the world model and the screen only (carrytask.h says what the steps
+ * and the goal region are).
+ *
+ * ALGORITHM. The object's outline is traced from its squares on the screen (crack
+ * following, the set on the left, turning left at pinch points: the outer boundary
+ * of a 4-connected set, a rectilinear simple polygon that contains the object, as
+ * the TABLE's rule covers every square the object meets). The grasp is chosen by
+ * carry_grasp over the free squares beside the object, nearest Utak first; the
+ * carry by carry_plan (carry.h: A* over (x, y, theta) on the screen, resolution
+ * complete, the reason in words when no carry exists). While he holds it, the
+ * outline moves with every command as the model believes Utak moved (a push) or
+ * turns about his believed point (a turn), and each command's believed end is
+ * compared with the plan's (steps 12-13).
+ * MEMORY: a CarryTask of about 6 KB and its goal region (one byte a screen cell);
+ * each plan's working space is carry.h's, freed when the plan is made.
+ * COMPLEXITY: a plan costs carry.h's search; choosing the grasp up to
+ * CARRYTASK_MAX_GRASPS of them; the goal region O(w h) for rooms, O(w h L) for a
+ * corner (L the length of a line of sight). */
+#include "utak/mind/carrytask.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/util.h"
+#include "utak/mind/objects.h"
+#include "utak/mind/push.h"
+#include "utak/mind/rooms.h"
+#include "utak/mind/shape.h"
+#include "utak/plan/carry.h"
+#include "utak/plan/pathgraph.h"
+#include "utak/plan/skeleton.h"
+
+/* A line of sight is sampled this often (squares): finer than the thinnest wall. */
+#define CT_SIGHT_STEP 0.25
+/* Open floor for a re-grasp: every square within the object's reach plus this many
+ * is free, so that Utak can walk round it to any side. */
+#define CT_OPEN_MARGIN 2
+
+bool carrytask_applies(const Task *t)
+{
+	return t->kind == TASK_PUSH_NEXT_ROOM || t->kind == TASK_PUSH_THROUGH_DOOR ||
+	       t->kind == TASK_PUSH_AROUND_CORNER;
+}
+
+CarryTask *carrytask_new(void)
+{
+	CarryTask *ct = util_alloc(1, sizeof *ct);
+	memset(ct, 0, sizeof *ct);
+	return ct;
+}
+
+void carrytask_delete(CarryTask *ct)
+{
+	if (!ct)
+		return;
+	grid_free(&ct->region);
+	free(ct);
+}
+
+/* ---- the object's outline ------------------------------------------------------ */
+
+/* ct_in(set, w, h, x, y): square (x, y) of the set (outside: not). */
+static bool ct_in(const uint8_t *set, int32_t w, int32_t h, int32_t x, int32_t y)
+{
+	return x >= 0 && y >= 0 && x < w && y < h && set[y * w + x];
+}
+
+/* ct_hull(set, w, h, out): the convex hull of the set's square corners (Andrew's
+ * monotone chain): the fallback for an outline of too many vertices (a slanted
+ * edge seen as a staircase). False when it too has too many. */
+static bool ct_hull(const uint8_t *set, int32_t w, int32_t h, Polygon *out)
+{
+	int32_t n = 0;
+	Vec2 *pt = util_alloc((size_t)(w + 1) * (size_t)(h + 1), sizeof *pt);
+	for (int32_t x = 0; x <= w; x++) /* sorted by x, then y */
+		for (int32_t y = 0; y <= h; y++)
+			if (ct_in(set, w, h, x, y) || ct_in(set, w, h, x - 1, y) || ct_in(set, w, h, x, y - 1) ||
+			    ct_in(set, w, h, x - 1, y - 1))
+				pt[n++] = vec2(x, y);
+	Vec2 *hull = util_alloc((size_t)2 * (size_t)n + 2, sizeof *hull);
+	int32_t k = 0;
+	for (int32_t i = 0; i < n; i++) {
+		while (k >= 2 && geom_orient(hull[k - 2], hull[k - 1], pt[i]) <= 0)
+			k--;
+		hull[k++] = pt[i];
+	}
+	for (int32_t i = n - 2, lower = k + 1; i >= 0; i--) {
+		while (k >= lower && geom_orient(hull[k - 2], hull[k - 1], pt[i]) <= 0)
+			k--;
+		hull[k++] = pt[i];
+	}
+	k--; /* the last point is the first */
+	bool ok = k >= 3 && k <= GEOM_MAX_VERTICES;
+	if (ok) {
+		out->count = k;
+		memcpy(out->v, hull, (size_t)k * sizeof *hull);
+	}
+	free(pt);
+	free(hull);
+	return ok;
+}
+
+/* ct_outline(set, w, h, out): the outer boundary of the 4-connected set holding the
+ * lowest, leftmost square of set (w x h, one byte a square), counter-clockwise, its
+ * vertices where it turns; the hull when that has more than GEOM_MAX_VERTICES. */
+static bool ct_outline(const uint8_t *set, int32_t w, int32_t h, Polygon *out)
+{
+	int32_t sx = -1, sy = -1;
+	for (int32_t at = 0; at < w * h && sx < 0; at++)
+		if (set[at]) {
+			sx = at % w;
+			sy = at / w;
+		}
+	if (sx < 0)
+		return false;
+	/* Directions east, north, west, south; the set lies on the left of each edge.
+	 * At a vertex heading d, the squares ahead are ahead-left and ahead-right. */
+	static const int dxs[4] = {1, 0, -1, 0}, dys[4] = {0, 1, 0, -1};
+	/* The bottom edge of the lowest, leftmost square is on the boundary (nothing
+	 * lies below it), and its left end is a corner. */
+	int32_t x = sx + 1, y = sy, d = 0, n = 0;
+	out->v[n++] = vec2(sx, sy);
+	bool ok = true;
+	while (!(x == sx && y == sy)) {
+		int32_t lx = d == 0 || d == 3 ? x : x - 1, ly = d == 0 || d == 1 ? y : y - 1;
+		int32_t rx = d == 0 || d == 1 ? x : x - 1, ry = d == 1 || d == 2 ? y : y - 1;
+		bool left = ct_in(set, w, h, lx, ly), right = ct_in(set, w, h, rx, ry);
+		int nd = !left ? (d + 1) % 4 : right ? (d + 3) % 4 : d;
+		if (nd != d) {
+			if (n == GEOM_MAX_VERTICES) {
+				ok = false;
+				break;
+			}
+			out->v[n++] = vec2(x, y);
+		}
+		d = nd;
+		x += dxs[d];
+		y += dys[d];
+	}
+	out->count = n;
+	if (!ok || n < 4)
+		return ct_hull(set, w, h, out);
+	return true;
+}
+
+/* ct_object_outline(c, k, out): object node k's outline from its squares on the
+ * screen, in screen units. */
+static bool ct_object_outline(const Controller *c, int32_t k, Polygon *out)
+{
+	const Screen *s = &c->screen;
+	uint8_t *set = util_alloc((size_t)s->w * (size_t)s->h, 1);
+	memset(set, 0, (size_t)s->w * (size_t)s->h);
+	for (int32_t at = 0; at < s->w * s->h; at++)
+		set[at] = s->label[at] == k;
+	bool ok = ct_outline(set, s->w, s->h, out);
+	free(set);
+	return ok;
+}
+
+static Polygon ct_moved(const Polygon *p, Vec2 by)
+{
+	Polygon q = *p;
+	for (int32_t i = 0; i < q.count; i++)
+		q.v[i] = vec2_add(q.v[i], by);
+	return q;
+}
+
+static Vec2 ct_centroid(const Polygon *p)
+{
+	double a = 0, cx = 0, cy = 0;
+	for (int32_t i = 0; i < p->count; i++) {
+		Vec2 u = p->v[i], v = p->v[(i + 1) % p->count];
+		double cr = vec2_cross(u, v);
+		a += cr;
+		cx += (u.x + v.x) * cr;
+		cy += (u.y + v.y) * cr;
+	}
+	return fabs(a) > 0 ? vec2(cx / (3 * a), cy / (3 * a)) : p->v[0];
+}
+
+/* ---- the grids ------------------------------------------------------------------ */
+
+static void ct_free_span(void *ctx, int32_t y, int32_t x0, int32_t x1)
+{
+	Grid *g = ctx;
+	for (int32_t x = x0; x <= x1; x++)
+		g->cells[y * g->w + x] = GRID_FREE;
+}
+
+/* ct_carry_grid(c, k, held, out): the screen's space to carry on: the squares
+ * bumped into blocked, the object's own squares (node k's, the held set's, and the
+ * outline's, screen units) and Utak's free: they move with him. */
+static void ct_carry_grid(const Controller *c, int32_t k, const Polygon *held, Grid *out)
+{
+	const Screen *s = &c->screen;
+	grid_init(out, s->w, s->h, GRID_BLOCKED);
+	memcpy(out->cells, s->free.cells, (size_t)s->w * (size_t)s->h);
+	push_mark_bumped(c, out);
+	for (int32_t at = 0; at < s->w * s->h; at++)
+		if (s->label[at] >= 0 && (s->label[at] == k || c->model.node[s->label[at]].held))
+			out->cells[at] = GRID_FREE;
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	if (c->model.holding)
+		for (int32_t j = 0; j < c->model.held_count; j++) {
+			int32_t i2 = ux + c->model.held_dx[j] - s->x0, j2 = uy + c->model.held_dy[j] - s->y0;
+			if (i2 >= 0 && j2 >= 0 && i2 < s->w && j2 < s->h)
+				out->cells[j2 * s->w + i2] = GRID_FREE;
+		}
+	if (held)
+		geom_project(held, s->w, s->h, ct_free_span, out);
+	int32_t i, j;
+	if (goals_cell_of(s, c->model.utak, &i, &j))
+		out->cells[j * s->w + i] = GRID_FREE;
+}
+
+/* ct_goal_grid(c, open, reach, out): the goal region on this screen: the fixed
+ * region's squares the screen shows as floor (or as the object: it may already lie
+ * there); with open, open floor of the object's present room instead (a re-grasp). */
+static void ct_goal_grid(const Controller *c, const Grid *space, bool open, double reach, Grid *out)
+{
+	const CarryTask *ct = c->carry;
+	const Screen *s = &c->screen;
+	grid_init(out, s->w, s->h, GRID_BLOCKED);
+	int32_t r = (int32_t)ceil(reach) + CT_OPEN_MARGIN;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++) {
+			int32_t at = j * s->w + i, l = s->label[at];
+			if (space->cells[at] != GRID_FREE || l == SCREEN_UNKNOWN)
+				continue;
+			if (open) {
+				bool clear = true;
+				for (int32_t dy = -r; dy <= r && clear; dy++)
+					for (int32_t dx = -r; dx <= r && clear; dx++)
+						clear = grid_free_at(space, i + dx, j + dy) &&
+							screen_label(s, i + dx, j + dy) != SCREEN_UNKNOWN;
+				if (clear)
+					out->cells[at] = GRID_FREE;
+				continue;
+			}
+			int32_t x = s->x0 + i - ct->rx0, y = s->y0 + j - ct->ry0;
+			if (grid_free_at(&ct->region, x, y))
+				out->cells[at] = GRID_FREE;
+		}
+}
+
+/* ct_sight_blocked(known, a, b): a straight line from a to b (screen units) meets a
+ * square of the fixed space that is not free. */
+static bool ct_sight_blocked(const Grid *fixed, Vec2 a, Vec2 b)
+{
+	double len = hypot(b.x - a.x, b.y - a.y);
+	int32_t steps = (int32_t)ceil(len / CT_SIGHT_STEP);
+	for (int32_t t = 1; t < steps; t++) {
+		Vec2 p = vec2_add(a, vec2_scale(vec2_sub(b, a), (double)t / steps));
+		if (!grid_free_at(fixed, (int32_t)floor(p.x), (int32_t)floor(p.y)))
+			return true;
+	}
+	return false;
+}
+
+/* ct_mark_doorway(rm, d, region): the squares of door d's passage blocked in region:
+ * from the run across it, along the way through, while both ends of the run meet
+ * the wall's faces; and one square more each way. A slanted door: the squares
+ * within its width of its cell. */
+static void ct_mark_doorway(const RoomMap *rm, const RoomsDoor *d, Grid *region)
+{
+	const Grid *g = &rm->known;
+	if (d->ay == d->by || d->ax == d->bx) {
+		bool across_x = d->ay == d->by; /* the run lies along x: the way through is y */
+		int32_t lo = across_x ? d->ax : d->ay, hi = across_x ? d->bx : d->by, at = across_x ? d->ay : d->ax;
+		if (lo > hi) {
+			int32_t t = lo;
+			lo = hi;
+			hi = t;
+		}
+		for (int way = -1; way <= 1; way += 2) {
+			int32_t t = 0;
+			for (;; t++) {
+				int32_t row = at + way * t;
+				bool wall_lo = across_x ? !grid_free_at(g, lo - 1, row) : !grid_free_at(g, row, lo - 1);
+				bool wall_hi = across_x ? !grid_free_at(g, hi + 1, row) : !grid_free_at(g, row, hi + 1);
+				if (t > 0 && !(wall_lo && wall_hi))
+					break;
+				if (t > region->w + region->h)
+					break;
+			}
+			for (int32_t u = 0; u <= t; u++) /* the passage, and one square past it */
+				for (int32_t v = lo - 1; v <= hi + 1; v++) {
+					int32_t row = at + way * u, x = across_x ? v : row, y = across_x ? row : v;
+					if (x >= 0 && y >= 0 && x < region->w && y < region->h)
+						region->cells[y * region->w + x] = GRID_BLOCKED;
+				}
+		}
+		return;
+	}
+	int32_t r = d->width + 1;
+	for (int32_t y = d->y - r; y <= d->y + r; y++)
+		for (int32_t x = d->x - r; x <= d->x + r; x++)
+			if (x >= 0 && y >= 0 && x < region->w && y < region->h)
+				region->cells[y * region->w + x] = GRID_BLOCKED;
+}
+
+/* ct_roommap_build(c, k, out): the rooms as goals_roommap_build finds them, except
+ * that every object but node k (the one to carry) stands as fixed: the eye cannot
+ * tell a wall from an object by its colour, and a wall whose joint with the verge
+ * was seen only coarsely is modelled as an isolated object; a door between two such
+ * walls must still be a door. The object carried is space, as are the squares
+ * never seen (not fixed: they are blocked in the known grid, as in goals.c). */
+static void ct_roommap_build(const Controller *c, int32_t k, bool objects_fixed, RoomMap *r)
+{
+	const Screen *s = &c->screen;
+	grid_init(&r->known, s->w, s->h, GRID_BLOCKED);
+	for (int32_t at = 0; at < s->w * s->h; at++) {
+		int32_t l = s->label[at];
+		bool wall_like = objects_fixed && l >= 0 && l != k && !c->model.node[l].held;
+		if (l != SCREEN_UNKNOWN && s->fixed.cells[at] == GRID_FREE && !wall_like)
+			r->known.cells[at] = GRID_FREE;
+	}
+	skeleton_init(&r->skeleton);
+	pathgraph_init(&r->pathgraph);
+	rooms_init(&r->rooms);
+	skeleton_compute(&r->skeleton, &r->known);
+	pathgraph_build(&r->pathgraph, &r->skeleton, &r->known);
+	rooms_find(&r->rooms, &r->pathgraph);
+}
+
+/* ct_region_fix(c, rm): the goal region from this screen, fixed in the model's frame
+ * (carrytask.h). Returns its squares. */
+static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
+{
+	CarryTask *ct = c->carry;
+	const Screen *s = &c->screen;
+	grid_free(&ct->region);
+	grid_init(&ct->region, s->w, s->h, GRID_BLOCKED);
+	ct->rx0 = s->x0;
+	ct->ry0 = s->y0;
+	int32_t oi, oj, count = 0;
+	if (!goals_cell_of(s, ct->object_start, &oi, &oj))
+		return 0;
+	if (c->task.kind == TASK_PUSH_AROUND_CORNER) {
+		Vec2 from = screen_from_model(s, ct->object_start);
+		for (int32_t j = 0; j < s->h; j++)
+			for (int32_t i = 0; i < s->w; i++) {
+				if (s->label[j * s->w + i] != SCREEN_SPACE)
+					continue;
+				bool hidden = ct_sight_blocked(&rm->known, from, vec2(i + 0.5, j + 0.5));
+				for (int corner = 0; corner < 4 && hidden; corner++)
+					hidden = ct_sight_blocked(&rm->known, from, vec2(i + (corner & 1), j + (corner >> 1)));
+				if (hidden) {
+					ct->region.cells[j * s->w + i] = GRID_FREE;
+					count++;
+				}
+			}
+		return count;
+	}
+	int32_t room = rooms_at(&rm->rooms, oi, oj);
+	if (room < 0)
+		return 0;
+	int32_t doors[64];
+	int32_t nd = rooms_doors_of(&rm->rooms, room, doors, 64);
+	nd = nd < 64 ? nd : 64;
+	for (int32_t at = 0; at < s->w * s->h; at++) {
+		if (s->label[at] != SCREEN_SPACE)
+			continue;
+		int32_t here = rm->rooms.room[at];
+		bool next = false;
+		for (int32_t q = 0; q < nd && !next; q++) {
+			const RoomsDoor *d = &rm->rooms.doors[doors[q]];
+			next = here != room && (here == d->room_a || here == d->room_b);
+		}
+		if (next)
+			ct->region.cells[at] = GRID_FREE;
+	}
+	for (int32_t q = 0; q < rm->rooms.door_count; q++)
+		ct_mark_doorway(rm, &rm->rooms.doors[q], &ct->region);
+	for (int32_t at = 0; at < s->w * s->h; at++)
+		count += ct->region.cells[at] == GRID_FREE;
+	return count;
+}
+
+/* ct_region_grow(c): around a corner, the squares out of sight of where the object
+ * was are a fact about the fixed walls and that point: what has been seen since the
+ * region was fixed is added to it (nothing is taken away). */
+static void ct_region_grow(Controller *c)
+{
+	CarryTask *ct = c->carry;
+	if (c->task.kind != TASK_PUSH_AROUND_CORNER || !ct->region_fixed)
+		return;
+	Grid old = ct->region;
+	int32_t ox = ct->rx0, oy = ct->ry0;
+	ct->region = (Grid){0};
+	RoomMap rm;
+	ct_roommap_build(c, -1, false, &rm);
+	ct_region_fix(c, &rm);
+	goals_roommap_free(&rm);
+	/* The union, on a grid holding both. */
+	int32_t x0 = ox < ct->rx0 ? ox : ct->rx0, y0 = oy < ct->ry0 ? oy : ct->ry0;
+	int32_t x1 = ox + old.w > ct->rx0 + ct->region.w ? ox + old.w : ct->rx0 + ct->region.w;
+	int32_t y1 = oy + old.h > ct->ry0 + ct->region.h ? oy + old.h : ct->ry0 + ct->region.h;
+	Grid both;
+	grid_init(&both, x1 - x0, y1 - y0, GRID_BLOCKED);
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++)
+			if (grid_free_at(&old, x - ox, y - oy) || grid_free_at(&ct->region, x - ct->rx0, y - ct->ry0))
+				both.cells[(y - y0) * both.w + (x - x0)] = GRID_FREE;
+	grid_free(&old);
+	grid_free(&ct->region);
+	ct->region = both;
+	ct->rx0 = x0;
+	ct->ry0 = y0;
+}
+
+/* ct_survey_point(c, dist, rm): where to look from: the door of the object's room
+ * nearest the object, whose far side has region; for a corner, the reachable
+ * square of the region nearest Utak. */
+static bool ct_survey_point(Controller *c, const int32_t *dist, const RoomMap *rm)
+{
+	CarryTask *ct = c->carry;
+	const Screen *s = &c->screen;
+	if (c->task.kind != TASK_PUSH_AROUND_CORNER) {
+		int32_t oi, oj;
+		goals_cell_of(s, ct->object_start, &oi, &oj);
+		int32_t room = rooms_at(&rm->rooms, oi, oj), doors[64];
+		int32_t nd = room >= 0 ? rooms_doors_of(&rm->rooms, room, doors, 64) : 0;
+		double best = INFINITY;
+		for (int32_t q = 0; q < nd && q < 64; q++) {
+			const RoomsDoor *d = &rm->rooms.doors[doors[q]];
+			double far = hypot(d->x - oi, d->y - oj);
+			if (far < best && dist[d->y * s->w + d->x] >= 0) {
+				best = far;
+				ct->survey_at = goals_centre(s->x0 + d->x, s->y0 + d->y);
+				snprintf(ct->survey_what, sizeof ct->survey_what, "the door at (%d, %d), %d wide",
+					 (int)(s->x0 + d->x), (int)(s->y0 + d->y), (int)d->width);
+			}
+		}
+		return ct->have_survey = best < INFINITY;
+	}
+	int32_t best = -1;
+	for (int32_t at = 0; at < s->w * s->h; at++) {
+		int32_t x = s->x0 + at % s->w - ct->rx0, y = s->y0 + at / s->w - ct->ry0;
+		if (dist[at] >= 0 && grid_free_at(&ct->region, x, y) && (best < 0 || dist[at] < dist[best]))
+			best = at;
+	}
+	if (best < 0)
+		return false;
+	ct->survey_at = goals_centre(s->x0 + best % s->w, s->y0 + best / s->w);
+	snprintf(ct->survey_what, sizeof ct->survey_what, "the corridor beyond the corner, at (%.1f, %.1f)",
+		 ct->survey_at.x, ct->survey_at.y);
+	return ct->have_survey = true;
+}
+
+/* ---- the plan's text ------------------------------------------------------------ */
+
+static int ct_printf(char *buf, size_t size, int n, const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+static int ct_printf(char *buf, size_t size, int n, const char *fmt, ...)
+{
+	if (n < 0 || (size_t)n >= size)
+		return n;
+	va_list ap;
+	va_start(ap, fmt);
+	int k = vsnprintf(buf + n, size - (size_t)n, fmt, ap);
+	va_end(ap);
+	n += k;
+	return (size_t)n >= size ? (int)size - 1 : n;
+}
+
+/* ct_side(grasp, shape): which side of the object the grasp is on, by compass. */
+static const char *ct_side(Vec2 at, const Polygon *shape)
+{
+	Vec2 m = ct_centroid(shape), d = vec2_sub(at, m);
+	static const char *const names[8] = {"east", "north-east", "north", "north-west",
+					     "west", "south-west", "south", "south-east"};
+	double a = atan2(d.y, d.x) * 4 / 3.14159265358979323846;
+	int k = (int)lround(a);
+	return names[(k + 8) % 8];
+}
+
+/* ct_plan_text(c, plan, from_holding): the structured plan (paper 3.6), steps
+ * numbered, for the trace. */
+static void ct_plan_text(Controller *c, const CarryPlan *plan, bool holding)
+{
+	CarryTask *ct = c->carry;
+	const char *shape = task_shape_name(c->task.shape);
+	char *b = ct->plan;
+	size_t z = sizeof ct->plan;
+	int n = 0, step = 1;
+	n = ct_printf(b, z, n, "\n  plan:");
+	if (!holding) {
+		n = ct_printf(b, z, n, "\n    %d. go to (%.1f, %.1f), beside the %s on its %s side", step++, ct->grasp_at.x,
+			      ct->grasp_at.y, shape, ct_side(ct->grasp_at, &ct->held));
+		n = ct_printf(b, z, n, "\n    %d. grasp", step++);
+	}
+	n = ct_printf(b, z, n, "\n    %d. carry%s:", step++, ct->to_open_floor ? " to open floor" : "");
+	for (int i = 0; i + 1 < plan->count; i++) {
+		const MotorCommand *m = &plan->cmd[i];
+		if (m->kind == MOTOR_TURN)
+			n = ct_printf(b, z, n, " turn %d;", (int)lround(m->deg));
+		else
+			n = ct_printf(b, z, n, " push %.2f %.2f;", m->dx, m->dy);
+	}
+	n = ct_printf(b, z, n, " (%d pushes, %.1f squares; %d turns, %d degrees)", (int)plan->pushes, plan->pushed,
+		      (int)plan->turns, (int)plan->turned);
+	n = ct_printf(b, z, n, "\n    %d. release", step++);
+	if (ct->to_open_floor)
+		n = ct_printf(b, z, n, "\n    %d. re-grasp on another side, and carry on", step++);
+	ct->plan_new = true;
+}
+
+int carrytask_note(Controller *c, char *note, size_t size)
+{
+	CarryTask *ct = c->carry;
+	if (!ct || !ct->plan_new || size == 0)
+		return 0;
+	ct->plan_new = false;
+	int k = snprintf(note, size, "%s", ct->plan);
+	return (size_t)k >= size ? (int)size - 1 : k;
+}
+
+/* ct_name_reason(c, why, out, size): carry_grasp's reason, which names no object
+ * ("the object is ..."), with the task's object named. */
+static void ct_name_reason(const Controller *c, const char *why, char *out, size_t size)
+{
+	static const char anon[] = "the object";
+	bool unnamed = strncmp(why, anon, sizeof anon - 1) == 0;
+	const char *part[3] = {unnamed ? "the " : "", unnamed ? task_shape_name(c->task.shape) : "",
+			       unnamed ? why + sizeof anon - 1 : why};
+	size_t n = 0;
+	for (int p = 0; p < 3; p++)
+		for (const char *q = part[p]; *q && n + 1 < size; q++)
+			out[n++] = *q;
+	out[n] = '\0';
+}
+
+/* ---- choosing the grasp -------------------------------------------------------- */
+
+/* ct_choose_grasp(c, k, dist, out): carry_grasp over the free squares beside node
+ * k, nearest Utak first; failing that, a grasp that takes it to open floor for a
+ * re-grasp. out->found false with the reason when none serves. */
+static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalResult *out)
+{
+	CarryTask *ct = c->carry;
+	const Screen *s = &c->screen;
+	Polygon shape;
+	if (!ct_object_outline(c, k, &shape)) {
+		snprintf(out->why, sizeof out->why, "the %s's outline cannot be traced", task_shape_name(c->task.shape));
+		return;
+	}
+	Grid space, goal;
+	ct_carry_grid(c, k, &shape, &space);
+	/* Candidates: free squares Utak can reach, beside the object and no other
+	 * (a grasp takes the first object touch finds, paper 2.2), nearest first. */
+	Vec2 at[CARRYTASK_MAX_GRASPS];
+	int n = 0;
+	int32_t *order = util_alloc((size_t)s->w * (size_t)s->h, sizeof *order);
+	int32_t count = 0;
+	for (int32_t a = 0; a < s->w * s->h; a++) {
+		if (dist[a] < 0 || space.cells[a] != GRID_FREE || s->label[a] >= 0)
+			continue;
+		int32_t i = a % s->w, j = a / s->w;
+		bool beside = false, other = false;
+		for (int dy = -1; dy <= 1; dy++)
+			for (int dx = -1; dx <= 1; dx++) {
+				int32_t l = screen_label(s, i + dx, j + dy);
+				beside |= (dx || dy) && l == k;
+				other |= (dx || dy) && l >= 0 && l != k;
+			}
+		if (beside && !other)
+			order[count++] = a;
+	}
+	for (int32_t p = 1; p < count; p++) /* insertion sort by steps, then index */
+		for (int32_t q = p; q > 0 && dist[order[q]] < dist[order[q - 1]]; q--) {
+			int32_t t = order[q];
+			order[q] = order[q - 1];
+			order[q - 1] = t;
+		}
+	for (int32_t p = 0; p < count && n < CARRYTASK_MAX_GRASPS; p++)
+		at[n++] = vec2(order[p] % s->w + 0.5, order[p] / s->w + 0.5);
+	free(order);
+	if (n == 0) {
+		snprintf(out->why, sizeof out->why, "no free square beside the %s can be reached",
+			 task_shape_name(c->task.shape));
+		grid_free(&space);
+		return;
+	}
+	CarryGrasp each[CARRYTASK_MAX_GRASPS];
+	CarryResult best;
+	carry_result_init(&best);
+	int chosen = -1;
+	for (int pass = 0; pass < 2 && chosen < 0; pass++) {
+		CarryParams params = carry_params_default();
+		params.angles = pass == 0 ? CARRYTASK_COARSE_ANGLES : CARRY_ANGLES_DEFAULT;
+		CarryPlanner cp;
+		carry_init(&cp, &space, &params);
+		for (int open = 0; open <= 1 && chosen < 0; open++) {
+			if (open && ct->regrasps >= CARRYTASK_MAX_REGRASPS)
+				break;
+			double reach = 0; /* the farthest point from a grasp: about its diameter */
+			for (int32_t v = 0; v < shape.count; v++)
+				for (int32_t u = 0; u < v; u++)
+					reach = fmax(reach, hypot(shape.v[v].x - shape.v[u].x, shape.v[v].y - shape.v[u].y));
+			ct_goal_grid(c, &space, open, reach, &goal);
+			CarryGoal cg = {&goal, false, NULL, NULL};
+			chosen = carry_grasp(&cp, &shape, at, n, &cg, each, &best);
+			grid_free(&goal);
+			if (chosen >= 0)
+				ct->to_open_floor = open;
+			else if (!open)
+				ct_name_reason(c, each[0].why, out->why, sizeof out->why);
+		}
+		carry_free(&cp);
+	}
+	if (chosen >= 0) {
+		ct->grasp_at = screen_to_model(s, at[chosen]);
+		ct->have_grasp = true;
+		ct->held = ct_moved(&shape, vec2(s->x0, s->y0));
+		out->found = true;
+		out->goal = ct->grasp_at;
+		ct_plan_text(c, &best.plan, false);
+	}
+	carry_result_free(&best);
+	grid_free(&space);
+}
+
+/* ---- the hooks --------------------------------------------------------------------- */
+
+bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
+{
+	CarryTask *ct = c->carry;
+	int32_t k = objects_find_target(c);
+	if (k < 0)
+		return false;
+	const ModelNode *node = &c->model.node[k];
+	if (!ct->have_start) {
+		ct->object_start = vec2((node->rect.lo.x + node->rect.hi.x) / 2, (node->rect.lo.y + node->rect.hi.y) / 2);
+		ct->have_start = true;
+	}
+	int32_t ux, uy;
+	if (ct->stage == CARRY_STAGE_FETCH && objects_unconfirmed_square(c, k, &ux, &uy) &&
+	    goals_near(c, goals_centre(ux, uy), dist, &out->goal)) {
+		/* The object is grasped only when the fovea has seen all of it (as for
+		 * any task's object, objects.h): look closer first. */
+		out->found = true;
+		return true;
+	}
+	if (ct->stage == CARRY_STAGE_FETCH && ct->have_grasp) {
+		out->found = true;
+		out->goal = ct->grasp_at;
+		return true;
+	}
+	int32_t si, sj;
+	if (ct->stage == CARRY_STAGE_SURVEY && ct->have_survey &&
+	    !(goals_cell_of(&c->screen, ct->survey_at, &si, &sj) && dist[sj * c->screen.w + si] >= 0))
+		ct->stage = CARRY_STAGE_LOOK; /* the door was no door: look again */
+	if (ct->stage == CARRY_STAGE_FETCH && ct->have_grasp &&
+	    !(goals_cell_of(&c->screen, ct->grasp_at, &si, &sj) && dist[sj * c->screen.w + si] >= 0))
+		ct->have_grasp = false; /* no way there after all: choose again */
+	if (ct->stage == CARRY_STAGE_SURVEY && ct->have_survey) {
+		out->found = true;
+		out->goal = ct->survey_at;
+		return true;
+	}
+	if (ct->stage == CARRY_STAGE_LOOK) {
+		/* The place beyond: seen yet? Then fix it, and go and look at it from
+		 * close by (where it may be fixed again, better). */
+		bool seen = false;
+		for (int fixed = 0; fixed <= 0 && !seen; fixed++) {
+			RoomMap own;
+			ct_roommap_build(c, k, fixed, &own);
+			seen = ct_region_fix(c, &own) > 0 && ct_survey_point(c, dist, &own);
+			goals_roommap_free(&own);
+		}
+		if (seen) {
+			ct->region_fixed = true;
+			ct->stage = CARRY_STAGE_SURVEY;
+			out->found = true;
+			out->goal = ct->survey_at;
+			snprintf(ct->plan, sizeof ct->plan, "\n  plan: survey %s", ct->survey_what);
+			ct->plan_new = true;
+			return true;
+		}
+		/* Not yet: look further, at the unseen, or else at what was seen only
+		 * coarsely: a wall seen from afar may seem an object standing free. */
+		out->exploring = out->found = goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal);
+		if (!out->found)
+			snprintf(out->why, sizeof out->why, "%s",
+				 c->task.kind == TASK_PUSH_AROUND_CORNER ? "no corner to push round here: nothing out of sight of the object, and nothing left unseen"
+									 : "no door out of the object's room, and nothing left unseen");
+		return true;
+	}
+	/* FETCH without a grasp: choose it for the whole carry. */
+	ct_choose_grasp(c, k, dist, out);
+	return true;
+}
+
+bool carrytask_arrive(Controller *c)
+{
+	CarryTask *ct = c->carry;
+	if (ct->stage == CARRY_STAGE_SURVEY) {
+		/* Seen from close by: fix the goal region now, and fetch the object. */
+		RoomMap rm;
+		int32_t k = objects_find_target(c);
+		ct_roommap_build(c, k, false, &rm);
+		CarryTask keep = *ct; /* the region fixed before, should this one be empty */
+		grid_init(&keep.region, ct->region.w, ct->region.h, GRID_BLOCKED);
+		memcpy(keep.region.cells, ct->region.cells, (size_t)ct->region.w * (size_t)ct->region.h);
+		if (ct_region_fix(c, &rm) > 0) {
+			grid_free(&keep.region);
+		} else {
+			grid_free(&ct->region);
+			ct->region = keep.region;
+			ct->rx0 = keep.rx0;
+			ct->ry0 = keep.ry0;
+		}
+		goals_roommap_free(&rm);
+		ct->stage = CARRY_STAGE_FETCH;
+		ct->have_survey = false;
+		return true;
+	}
+	if (ct->stage == CARRY_STAGE_FETCH)
+		ct->have_grasp = false; /* grasped, or chosen again if touch finds it not there */
+	return false;
+}
+
+/* ct_fail(c, why): the task cannot be done. */
+static bool ct_fail(Controller *c, const char *why)
+{
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why, "%s", why);
+	return false;
+}
+
+/* ct_plan_carry(c): the carry from where Utak believes he and the object are. */
+static CarryStatus ct_plan_carry(Controller *c, bool *inside, char *why, size_t size)
+{
+	CarryTask *ct = c->carry;
+	Vec2 extra = c->start;
+	screen_build(&c->screen, &c->model, &extra, 1);
+	ct_region_grow(c);
+	const Screen *s = &c->screen;
+	Polygon shape = ct_moved(&ct->held, vec2(-s->x0, -s->y0));
+	Grid space, goal;
+	ct_carry_grid(c, -1, &shape, &space);
+	Vec2 at = screen_from_model(s, c->model.utak);
+	double reach = 0;
+	for (int32_t v = 0; v < shape.count; v++)
+		reach = fmax(reach, hypot(shape.v[v].x - at.x, shape.v[v].y - at.y));
+	ct_goal_grid(c, &space, ct->to_open_floor, reach, &goal);
+	char name[32];
+	snprintf(name, sizeof name, "the %s", task_shape_name(c->task.shape));
+	CarryObject obj = {shape, at, name};
+	*inside = carry_pose_inside(&obj, &goal, at, 0);
+	CarryStatus st = CARRY_FOUND;
+	for (int pass = 0; pass < 2 && !*inside && (pass == 0 || st != CARRY_FOUND); pass++) {
+		CarryParams params = carry_params_default();
+		params.angles = pass == 0 ? CARRYTASK_COARSE_ANGLES : CARRY_ANGLES_DEFAULT;
+		CarryPlanner cp;
+		carry_init(&cp, &space, &params);
+		CarryResult r;
+		carry_result_init(&r);
+		CarryGoal cg = {&goal, false, NULL, NULL};
+		st = carry_plan(&cp, &obj, &cg, &r);
+		if (st == CARRY_FOUND) {
+			ct->count = 0;
+			for (int i = 0; i + 1 < r.plan.count && ct->count < CARRYTASK_MAX_COMMANDS; i++) {
+				ct->cmd[ct->count] = r.plan.cmd[i];
+				ct->expect[ct->count++] = screen_to_model(s, r.plan.pose[i + 1].at);
+			}
+			ct->next = 0;
+			ct->have_carry = true;
+			ct_plan_text(c, &r.plan, true);
+		} else {
+			snprintf(why, size, "%s", r.why);
+		}
+		carry_result_free(&r);
+		carry_free(&cp);
+	}
+	grid_free(&space);
+	grid_free(&goal);
+	return st;
+}
+
+bool carrytask_decide(Controller *c, MotorCommand *cmd)
+{
+	CarryTask *ct = c->carry;
+	ct->stage = CARRY_STAGE_HOLD;
+	for (int attempt = 0; attempt < 2; attempt++) {
+		if (!ct->have_carry || ct->next >= ct->count) {
+			if (ct->have_carry)
+				ct->replans++; /* followed to its end, and not there */
+			if (ct->replans > CARRYTASK_MAX_REPLANS)
+				return ct_fail(c, "the carry was planned again and again, and the object is not there yet");
+			bool inside = false;
+			char why[CARRY_WHY];
+			ct->have_carry = false;
+			if (ct_plan_carry(c, &inside, why, sizeof why) != CARRY_FOUND) {
+				if (ct->regrasps >= CARRYTASK_MAX_REGRASPS)
+					return ct_fail(c, why);
+				/* No carry from this grasp any more (what was seen or bumped
+				 * into since says so): let go, and choose a grasp again. */
+				ct->regrasps++;
+				ct->to_open_floor = false;
+				ct->stage = CARRY_STAGE_FETCH;
+				ct->have_grasp = false;
+				c->phase = PHASE_TRAVEL;
+				c->have_plan = false;
+				snprintf(ct->plan, sizeof ct->plan, "\n  plan: release and grasp again: %s", why);
+				ct->plan_new = true;
+				*cmd = (MotorCommand){.kind = MOTOR_RELEASE};
+				return true;
+			}
+			if (inside) {
+				*cmd = (MotorCommand){.kind = MOTOR_RELEASE};
+				if (ct->to_open_floor) {
+					/* On open floor: let go, and choose a grasp again. */
+					ct->to_open_floor = false;
+					ct->regrasps++;
+					ct->stage = CARRY_STAGE_FETCH;
+					ct->have_grasp = false;
+					c->phase = PHASE_TRAVEL;
+					c->have_plan = false;
+				} else {
+					c->phase = PHASE_DONE;
+				}
+				return true;
+			}
+			continue;
+		}
+		break;
+	}
+	if (!ct->have_carry || ct->next >= ct->count)
+		return ct_fail(c, "the carry plan is empty");
+	MotorCommand *next = &ct->cmd[ct->next];
+	*cmd = *next;
+	ct->issued_from = c->model.utak;
+	if (next->kind == MOTOR_PUSH) {
+		double len = hypot(next->dx, next->dy);
+		if (len > CONTROLLER_MAX_LEG) {
+			/* A long leg in parts, so that what is seen on the way can change
+			 * the plan: every part lies on the checked straight push. */
+			double f = CONTROLLER_MAX_LEG / len;
+			cmd->dx = next->dx * f;
+			cmd->dy = next->dy * f;
+			next->dx -= cmd->dx;
+			next->dy -= cmd->dy;
+			return true;
+		}
+	}
+	ct->next++;
+	return true;
+}
+
+void carrytask_perceive(Controller *c, const MotorCommand *cmd)
+{
+	CarryTask *ct = c->carry;
+	if (cmd->kind == MOTOR_PUSH) {
+		ct->held = ct_moved(&ct->held, vec2_sub(c->model.utak, ct->issued_from));
+	} else if (cmd->kind == MOTOR_TURN) {
+		double cs, sn;
+		geom_cos_sin(cmd->deg, &cs, &sn);
+		for (int32_t i = 0; i < ct->held.count; i++)
+			ct->held.v[i] = geom_rotate(ct->held.v[i], c->model.utak, cs, sn);
+	}
+	if (!ct->have_carry)
+		return;
+	Vec2 expected = ct->next > 0 && (cmd->kind == MOTOR_TURN || ct->next <= ct->count)
+				? vec2_add(ct->issued_from, cmd->kind == MOTOR_PUSH ? vec2(cmd->dx, cmd->dy) : vec2(0, 0))
+				: c->model.utak;
+	if (goals_distance(c->model.utak, expected) > CARRYTASK_DISPARITY) {
+		ct->have_carry = false; /* step 13: plan the carry again from here */
+		ct->replans++;
+		snprintf(ct->plan, sizeof ct->plan, "; re-plan the carry: Utak is at (%.1f, %.1f), not (%.1f, %.1f)",
+			 c->model.utak.x, c->model.utak.y, expected.x, expected.y);
+		ct->plan_new = true;
+	}
+}
