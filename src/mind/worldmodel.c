@@ -540,6 +540,82 @@ static void wm_refind_held(WorldModel *m, const Impression *imp)
 	}
 }
 
+/* wm_box_held(m): the held set's box becomes the one it may regrow in. */
+static void wm_box_held(WorldModel *m)
+{
+	m->held_x0 = m->held_y0 = INT32_MAX;
+	m->held_x1 = m->held_y1 = INT32_MIN;
+	for (int32_t j = 0; j < m->held_count; j++) {
+		m->held_x0 = m->held_dx[j] < m->held_x0 ? m->held_dx[j] : m->held_x0;
+		m->held_y0 = m->held_dy[j] < m->held_y0 ? m->held_dy[j] : m->held_y0;
+		m->held_x1 = m->held_dx[j] > m->held_x1 ? m->held_dx[j] : m->held_x1;
+		m->held_y1 = m->held_dy[j] > m->held_y1 ? m->held_dy[j] : m->held_y1;
+	}
+}
+
+/* The squares round the held set a push may add to it: its box (wm_box_held) and
+ * one square beyond, as offsets from Utak's square, row-major. */
+static int64_t wm_grow_area(const WorldModel *m, int32_t *w)
+{
+	*w = m->held_x1 - m->held_x0 + 3;
+	return (int64_t)*w * (m->held_y1 - m->held_y0 + 3);
+}
+
+/* wm_floor_round_held(m): for each square of wm_grow_area, whether the model
+ * believes it floor now (caller frees); NULL when Utak holds nothing. */
+static bool *wm_floor_round_held(const WorldModel *m)
+{
+	if (m->held_count == 0 || m->held_x0 > m->held_x1) /* no box: nothing to regrow */
+		return NULL;
+	int32_t w, ux, uy;
+	int64_t n = wm_grow_area(m, &w);
+	worldmodel_utak_square(m, &ux, &uy);
+	bool *floor = util_alloc((size_t)n, sizeof *floor);
+	for (int64_t k = 0; k < n; k++)
+		floor[k] = worldmodel_belief(m, ux + m->held_x0 - 1 + (int32_t)(k % w),
+		                             uy + m->held_y0 - 1 + (int32_t)(k / w)) == BELIEF_FLOOR;
+	return floor;
+}
+
+/* wm_regrow_held(m, was_floor): after a push, the squares joined to the held set,
+ * within its box and one square beyond, that the eye now sees occupied where the
+ * model believed floor before this impression (was_floor: wm_floor_round_held
+ * with the held set put down) join it, when the eye leaves no doubt (p definite:
+ * a coarse cell over the object's edge smears it onto its neighbours).
+ * WHY: pushed a fraction of a square off the grid (noisy motion, paper 3.5), an
+ * object w squares wide covers w + 1 columns of the TABLE; the eye sees it there,
+ * but a held set that only ever shrank (wm_prune_held) would leave those squares
+ * behind at the next push, and the disparity search would then find the model
+ * matched best where Utak had not moved (with --noise 0.05, most pushes into a
+ * corner failed so). Only squares known as floor before may join: a wall the
+ * object is pushed against was occupied, or not yet seen, and stays the wall's. */
+static void wm_regrow_held(WorldModel *m, const bool *was_floor)
+{
+	if (m->held_count == 0 || !was_floor)
+		return;
+	int32_t w, ux, uy;
+	wm_grow_area(m, &w);
+	worldmodel_utak_square(m, &ux, &uy);
+	for (int32_t next = 0; next < m->held_count; next++) {
+		static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+		for (int d = 0; d < 4; d++) {
+			int32_t dx = m->held_dx[next] + step[d][0], dy = m->held_dy[next] + step[d][1];
+			if ((dx == 0 && dy == 0) || dx < m->held_x0 - 1 || dx > m->held_x1 + 1 ||
+			    dy < m->held_y0 - 1 || dy > m->held_y1 + 1 ||
+			    !was_floor[(int64_t)(dy - m->held_y0 + 1) * w + (dx - m->held_x0 + 1)] ||
+			    worldmodel_evidence(m, ux + dx, uy + dy).p < 1 - WM_DEFINITE)
+				continue;
+			bool seen = false;
+			for (int32_t j = 0; j < m->held_count && !seen; j++)
+				seen = m->held_dx[j] == dx && m->held_dy[j] == dy;
+			if (seen || m->held_count == WORLDMODEL_HELD_MAX)
+				continue;
+			m->held_dx[m->held_count] = dx;
+			m->held_dy[m->held_count++] = dy;
+		}
+	}
+}
+
 /* wm_vacate(m, from, saved): the held object's squares, Utak on `from`, leave their
  * places (predicted floor); their evidence goes to saved. */
 static void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
@@ -685,12 +761,15 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		}
 		break;
 	case MOTOR_TURN:
-		if (m->holding)
+		if (m->holding) {
 			wm_carry(m, from, to, cmd->deg);
+			wm_box_held(m);
+		}
 		break;
 	case MOTOR_GRASP:
 		/* Granted when touch showed an object (the simulator's rule, paper 2.2). */
 		wm_find_held(m, &m->last);
+		wm_box_held(m);
 		/* Holding whenever touch showed an object's colour; its squares may be
 		 * unknown (held_count 0: it leans on a wall), and then the model moves
 		 * Utak alone and the eye finds the object where it went. */
@@ -748,11 +827,17 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		wm_place(m, ux, uy, held, NULL);
 	free(held);
 	free(under);
+	bool *was_floor = held ? wm_floor_round_held(m) : NULL;
 	wm_observe(m, ux, uy, imp);
-	if (held)
+	if (held) {
 		wm_prune_held(m);
-	if (cmd->kind == MOTOR_TURN && m->holding)
+		wm_regrow_held(m, was_floor);
+	}
+	free(was_floor);
+	if (cmd->kind == MOTOR_TURN && m->holding) {
 		wm_refind_held(m, imp);
+		wm_box_held(m);
+	}
 	m->last = *imp;
 	m->impressions++;
 	wm_seen_window(m);

@@ -181,6 +181,9 @@ typedef struct WorldModel {
 	bool holding;
 	int32_t held_count;
 	int32_t held_dx[WORLDMODEL_HELD_MAX], held_dy[WORLDMODEL_HELD_MAX];
+	/* The box of the held offsets when the object was taken (or last turned): the
+	 * set may regrow within it, and one square beyond (wm_regrow_held). */
+	int32_t held_x0, held_y0, held_x1, held_y1;
 	/* The derived tree (paper 3.3): arrays linked by index. */
 	ModelNode *node;
 	int32_t node_count, node_cap;
