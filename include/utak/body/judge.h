@@ -5,21 +5,33 @@
  * itself (the World and its TABLE, which the controller never sees) and says
  * whether it has. Its verdict is the program's: exit status 0 or 1.
  *
- * Rooms are those of the fixed space (verge and walls; objects count as space),
- * found by rooms.c; compass directions are in Utak's frame at the start (his north
- * is the way he faced). The rules, per task:
+ * It uses only base/ and body/ (tests/wall.test.sh has no exception for it): the
+ * shared meaning is /work/spec-verdicts.md's, the code its own. Objects are named
+ * by judgeshape.h's rule on their TRUE polygons (exact geometry, orientation
+ * free); the task's object is the object of that shape nearest Utak's starting
+ * point by area centroid (ties to the earlier in the world file). Rooms, doors
+ * and doorways are judgerooms.h's (verge and walls only; objects count as space;
+ * a doorway belongs to no room); Utak's starting room, if he starts in a doorway,
+ * is the room of the nearest square that has one. Compass directions are in
+ * Utak's frame at the start (his north is the way he faced). The rules, per task:
  *   go CORNER       Utak's square is in his starting room and at most JUDGE_SLACK
  *                   short of the room's free square farthest in that direction
  *                   (score x + y, signs by the corner, in his frame);
- *   go next-room    his square is in another room than the one he started in;
- *   go SHAPE        an object of that shape fills one of the 8 squares around him;
- *   go round SHAPE  his path winds once round the nearest object of that shape,
- *                   and ends within JUDGE_HOME of where it began;
- *   push SHAPE CORNER   the object (of that shape) has a square at most
- *                   JUDGE_SLACK short of the room's farthest free square;
- *   push SHAPE next-room / through-door   all its squares lie in another room;
+ *   go next-room    his square is in a room (not a doorway) other than his
+ *                   starting room; with one room only, the task does not apply;
+ *   go SHAPE        the task's object fills one of the 8 squares around him;
+ *   go round SHAPE  his path winds once round the task's object (winding number
+ *                   about its centroid over 0.99 in absolute value) and ends within
+ *                   JUDGE_HOME of where it began;
+ *   push SHAPE CORNER   the object lies in the starting room and has a square at
+ *                   most JUDGE_SLACK short of the room's farthest free square;
+ *   push SHAPE next-room / through-door   every square of the object lies in one
+ *                   room, none in a doorway, other than the room of its centroid
+ *                   at the start;
  *   push SHAPE around-corner   its centre can no longer be seen, along a straight
- *                   line through the fixed space, from where its centre was. */
+ *                   line sampled every JUDGE_SIGHT_STEP squares through the fixed
+ *                   space, from where its centre was. (spec-verdicts.md's legs and
+ *                   bend of an L-shaped corridor are NOT yet implemented.) */
 #ifndef UTAK_JUDGE_H
 #define UTAK_JUDGE_H
 
@@ -36,6 +48,8 @@
 #define JUDGE_SLACK 1
 /* How close to his start Utak must end after going round (squares). */
 #define JUDGE_HOME 1.5
+/* The step, in squares, at which the line of sight of push around-corner is sampled. */
+#define JUDGE_SIGHT_STEP 0.1
 
 /* judge_task(start, end, table, task, trail, n, why, size): the verdict. start is
  * the world as it began, end and table as it ended, trail the n points Utak
