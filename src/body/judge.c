@@ -20,20 +20,10 @@ int64_t judge_squares_read(void)
 	return judge_read;
 }
 
-/* sight(t, a, b): whether the straight line from a to b crosses no verge square
- * (sampled every JUDGE_SIGHT_STEP squares, and at b). */
-static bool sight(const Table *t, Vec2 a, Vec2 b)
+/* box_has(b, x, y): whether square (x, y) lies in box b (x0, y0, x1, y1). */
+static bool box_has(const int32_t b[4], int32_t x, int32_t y)
 {
-	double len = hypot(b.x - a.x, b.y - a.y);
-	int32_t steps = (int32_t)ceil(len / JUDGE_SIGHT_STEP);
-	for (int32_t i = 0; i <= steps; i++) {
-		double u = steps ? (double)i / steps : 0;
-		int32_t x, y;
-		table_square_of(vec2(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)), &x, &y);
-		if (table_owner(t, x, y) == TABLE_VERGE)
-			return false;
-	}
-	return true;
+	return x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3];
 }
 
 /* own(h, x, y): a TABLE square's coordinates in Utak's frame (inverse of
@@ -232,10 +222,30 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		break;
 	}
 	case TASK_PUSH_AROUND_CORNER: {
-		ObjectSquares o0 = object_squares(&t0, start->object_count, k), o1 = object_squares(table, start->object_count, k);
-		ok = !sight(table, vec2(o0.cx, o0.cy), vec2(o1.cx, o1.cy));
-		snprintf(why, size, ok ? "the %s is out of sight of where it was" : "the %s can still be seen from where it was",
-			 shape);
+		Vec2 c0 = judge_shape_centroid(&start->objects[k].shape);
+		int32_t cx, cy;
+		table_square_of(c0, &cx, &cy);
+		JudgeBend b;
+		if (!judge_rooms_bend(&f, judge_rooms_nearest(&f, cx, cy), &b)) {
+			snprintf(why, size, "the task does not apply: there is no corner to push round here (the %s did not "
+				 "start in an L-shaped corridor)", shape);
+			break;
+		}
+		/* The leg it started in (-1: in the bend), and the other. */
+		int from = box_has(b.bend, cx, cy) ? -1 : box_has(b.leg[0], cx, cy) ? 0 : 1;
+		bool past = true, any = false;
+		judge_read += (int64_t)table->w * table->h;
+		for (int32_t y = 0; y < table->h; y++)
+			for (int32_t x = 0; x < table->w; x++)
+				if (table->owner[(int64_t)y * table->w + x] == k + 1) {
+					any = true;
+					bool leg = from < 0 ? box_has(b.leg[0], x, y) || box_has(b.leg[1], x, y)
+							    : box_has(b.leg[1 - from], x, y);
+					past = past && leg && !box_has(b.bend, x, y);
+				}
+		ok = any && past;
+		snprintf(why, size, ok ? "the %s is wholly in the other leg of the corridor, past the bend"
+				       : "the %s is not wholly in the other leg of the corridor, past the bend", shape);
 		break;
 	}
 	}

@@ -115,12 +115,14 @@ TEST_CASE(judge_rooms_a_big_room_with_piers_is_one)
 	judge_rooms_find(&r, &table);
 	TEST_CHECK(r.count == 1);
 	TEST_CHECK(r.doors == 0);
+	JudgeBend b;
+	TEST_CHECK(!judge_rooms_bend(&r, 0, &b));	/* a room, not a corridor */
 	TEST_CHECK(judge_rooms_at(&r, 1, 1) == 0 && judge_rooms_at(&r, 158, 118) == 0 && judge_rooms_at(&r, 123, 1) == 0 && judge_rooms_at(&r, 119, 1) == 0);
 	judge_rooms_free(&r);
 	unload();
 }
 
-TEST_CASE(judge_rooms_an_l_corridor_is_one_room)
+TEST_CASE(judge_rooms_an_l_corridor_is_one_room_with_a_bend)
 {
 	/* A corridor 4 wide: along the south, then up the east side. Constant
 	 * width: no narrowing, so one room and no door. */
@@ -132,6 +134,16 @@ TEST_CASE(judge_rooms_an_l_corridor_is_one_room)
 	TEST_CHECK(r.count == 1);
 	TEST_CHECK(r.doors == 0);
 	TEST_CHECK(judge_rooms_at(&r, 2, 2) == 0 && judge_rooms_at(&r, 27, 27) == 0);
+	/* Its legs and bend, known by construction: the south leg y 1..4, the east
+	 * leg x 25..28 (the border squares are verge), the bend their overlap. */
+	JudgeBend b;
+	TEST_CHECK(judge_rooms_bend(&r, 0, &b));
+	int32_t east[4] = {25, 1, 28, 28}, south[4] = {1, 1, 28, 4}, bend[4] = {25, 1, 28, 4};
+	for (int i = 0; i < 4; i++) {
+		TEST_CHECK(b.leg[0][i] == east[i]);
+		TEST_CHECK(b.leg[1][i] == south[i]);
+		TEST_CHECK(b.bend[i] == bend[i]);
+	}
 	judge_rooms_free(&r);
 	unload();
 }
@@ -159,7 +171,7 @@ int main(void)
 	TEST_RUN(judge_centroid_is_the_area_centroid);
 	TEST_RUN(judge_rooms_a_doorway);
 	TEST_RUN(judge_rooms_a_big_room_with_piers_is_one);
-	TEST_RUN(judge_rooms_an_l_corridor_is_one_room);
+	TEST_RUN(judge_rooms_an_l_corridor_is_one_room_with_a_bend);
 	TEST_RUN(judge_rooms_a_corridor_between_rooms);
 	return TEST_EXIT();
 }

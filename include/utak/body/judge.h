@@ -28,10 +28,12 @@
  *   push SHAPE next-room / through-door   every square of the object lies in one
  *                   room, none in a doorway, other than the room of its centroid
  *                   at the start;
- *   push SHAPE around-corner   its centre can no longer be seen, along a straight
- *                   line sampled every JUDGE_SIGHT_STEP squares through the fixed
- *                   space, from where its centre was. (spec-verdicts.md's legs and
- *                   bend of an L-shaped corridor are NOT yet implemented.) */
+ *   push SHAPE around-corner   the object started (area centroid) in an L-shaped
+ *                   corridor (judgerooms.h: two legs and their bend) and every
+ *                   square of it now lies in the other leg, none in the bend (from
+ *                   the bend itself: in either leg, past the bend); if it did not
+ *                   start in such a corridor the task does not apply and the
+ *                   verdict says so. */
 #ifndef UTAK_JUDGE_H
 #define UTAK_JUDGE_H
 
@@ -48,8 +50,6 @@
 #define JUDGE_SLACK 1
 /* How close to his start Utak must end after going round (squares). */
 #define JUDGE_HOME 1.5
-/* The step, in squares, at which the line of sight of push around-corner is sampled. */
-#define JUDGE_SIGHT_STEP 0.1
 
 /* judge_task(start, end, table, task, trail, n, why, size): the verdict. start is
  * the world as it began, end and table as it ended, trail the n points Utak

@@ -26,6 +26,7 @@
 #ifndef UTAK_JUDGEROOMS_H
 #define UTAK_JUDGEROOMS_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "utak/body/table.h"
@@ -46,7 +47,8 @@ typedef struct JudgeRooms {
 
 /* judge_rooms_find(r, t): the rooms of TABLE t by the rule above.
  * COMPLEXITY: O(w h) for the clearance, O(w h log(w h)) for the flood order,
- * O(doors x reach^2) for the doorways. MEMORY: 16 bytes per square. */
+ * O(doors x reach^2) for the doorways. MEMORY: 21 bytes per square while it works (room,
+ * clearance, flood order, union-find parent, peak, state), 8 after. */
 void judge_rooms_find(JudgeRooms *r, const Table *t);
 void judge_rooms_free(JudgeRooms *r);
 
@@ -56,5 +58,25 @@ int32_t judge_rooms_at(const JudgeRooms *r, int32_t x, int32_t y);
 
 /* judge_rooms_nearest(r, x, y): the room of the nearest square that has one. */
 int32_t judge_rooms_nearest(const JudgeRooms *r, int32_t x, int32_t y);
+
+/* THE BEND (push around-corner). A room is an L-SHAPED CORRIDOR when, within its
+ * bounding box (axis-aligned: the TABLE's corridors run along its axes), the squares
+ * not in the room are exactly one rectangle holding one corner of the box (the
+ * outer rectangle beside the bend), and each leg is at most JUDGE_LEG_WIDTH wide
+ * and at least JUDGE_LEG_LENGTH times as long as wide. With the box [x0, x1] x
+ * [y0, y1] and the missing rectangle, say, [xa, x1] x [ya, y1] (the NE corner):
+ * leg A is [x0, xa - 1] x [y0, y1], leg B is [x0, x1] x [y0, ya - 1], and the BEND
+ * is their intersection [x0, xa - 1] x [y0, ya - 1]. */
+#define JUDGE_LEG_WIDTH 12	/* squares: wider is a room, not a corridor */
+#define JUDGE_LEG_LENGTH 1.5	/* a leg's length over its width, at least */
+
+typedef struct JudgeBend {
+	int32_t leg[2][4];	/* x0, y0, x1, y1 (inclusive) of legs A and B */
+	int32_t bend[4];	/* the intersection of the legs */
+} JudgeBend;
+
+/* judge_rooms_bend(r, room, b): whether room is an L-shaped corridor; its legs and
+ * bend in b if so. COMPLEXITY: O(w h). */
+bool judge_rooms_bend(const JudgeRooms *r, int32_t room, JudgeBend *b);
 
 #endif
