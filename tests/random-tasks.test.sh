@@ -4,7 +4,7 @@
 # "task: failed: REASON", with exit status 0 or 1 to match, within the cycle limit:
 # never a crash, a sanitizer report, a hang, or a malformed verdict. Worlds the
 # reader refuses (the generator does not avoid every overlap) are skipped and
-# counted; at least 200 must run.
+# counted; at least 200 must run. Then the second generator (below).
 set -u
 tmp=${TMPDIR:-/tmp}/utak-random.$$
 mkdir -p "$tmp"; trap 'rm -rf "$tmp"' EXIT
@@ -64,4 +64,27 @@ done
 echo "$ran worlds ran ($achieved achieved; belief and verdict differ in $disagree, $false_ok of them false successes), $skipped refused by the reader"
 if [ "$false_ok" -gt "$FALSE_MAX" ]; then
 	echo "more than $FALSE_MAX false successes"; exit 1
+fi
+
+# The second generator and the perturbation (issue 13): the small fixed subset of
+# `make rates` that `make check` runs. 10 worlds of tests/gen/worldgen.c and one
+# perturbed copy of each world in worlds/ (tests/gen/perturb.c) must be valid worlds
+# the reader takes, the same seed the same bytes, and every task of (i)-(v) on them
+# must end in a well-formed verdict with its exit status. It prints the rates per
+# task (tests/rates.sh) but checks none: the targets are `make rates RATES_TARGETS=all`.
+GEN=${GEN:-build/chk/gen}
+mkdir -p "$tmp/g" "$tmp/p"
+"$GEN/worldgen" -n 10 -o "$tmp/g" 1 || { echo "worldgen failed"; exit 1; }
+"$GEN/perturb" -n 1 -o "$tmp/p" 1 worlds/*.w || { echo "perturb failed"; exit 1; }
+# The same seed gives the same bytes.
+"$GEN/worldgen" 3 | cmp -s - "$tmp/g/g3.w" || { echo "worldgen 3 differs from g3.w"; exit 1; }
+[ "$(ls "$tmp"/g/*.w | wc -l)" = 10 ] || { echo "not 10 worlds"; exit 1; }
+for w in "$tmp"/g/*.w "$tmp"/p/*.w; do
+	"$UTAK" -n "$w" "go ne-corner" >/dev/null 2>"$tmp/err" || { echo "$w refused:"; cat "$tmp/err"; cat "$w"; exit 1; }
+done
+RATES_RANDOM=10 RATES_PERTURB=1 RATES_CYCLES=80 RATES_JOBS=1 GEN="$GEN" sh tests/rates.sh "$UTAK" random >"$tmp/out" 2>&1
+st=$?
+cat "$tmp/out"
+if [ "$st" != 0 ] || grep -q '^  exit ' "$tmp/out"; then
+	echo "a run ended without a verdict"; exit 1
 fi

@@ -7,10 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "utak/plan/pathgraph.h"
-#include "utak/mind/rooms.h"
-#include "utak/mind/shape.h"
-#include "utak/plan/skeleton.h"
+#include "utak/body/judgerooms.h"
+#include "utak/body/judgeshape.h"
 #include "utak/base/util.h"
 
 /* Squares of a TABLE read by the current judge_task's own passes: its cost, which
@@ -22,35 +20,10 @@ int64_t judge_squares_read(void)
 	return judge_read;
 }
 
-/* The fixed space and its rooms. The pathgraph borrows the grid and skeleton. */
-typedef struct Fixed {
-	Grid grid;
-	Skeleton skeleton;
-	Pathgraph pathgraph;
-	Rooms rooms;
-} Fixed;
-
-static void fixed_build(Fixed *f, const Table *t)
+/* box_has(b, x, y): whether square (x, y) lies in box b (x0, y0, x1, y1). */
+static bool box_has(const int32_t b[4], int32_t x, int32_t y)
 {
-	grid_init(&f->grid, t->w, t->h, GRID_FREE);
-	judge_read += (int64_t)t->w * t->h;
-	for (int64_t i = 0; i < (int64_t)t->w * t->h; i++)
-		if (t->owner[i] == TABLE_VERGE)
-			f->grid.cells[i] = GRID_BLOCKED;
-	skeleton_init(&f->skeleton);
-	pathgraph_init(&f->pathgraph);
-	rooms_init(&f->rooms);
-	skeleton_compute(&f->skeleton, &f->grid);
-	pathgraph_build(&f->pathgraph, &f->skeleton, &f->grid);
-	rooms_find(&f->rooms, &f->pathgraph);
-}
-
-static void fixed_free(Fixed *f)
-{
-	rooms_free(&f->rooms);
-	pathgraph_free(&f->pathgraph);
-	skeleton_free(&f->skeleton);
-	grid_free(&f->grid);
+	return x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3];
 }
 
 /* own(h, x, y): a TABLE square's coordinates in Utak's frame (inverse of
@@ -128,57 +101,23 @@ static ObjectSquares object_squares(const Table *t, int32_t n, int32_t k)
 	return o;
 }
 
-/* object_shape(t, o, k): the shape of object k, whose squares are o; it reads only
- * o's containing rectangle. */
-static Shape object_shape(const Table *t, const ObjectSquares *o, int32_t k)
+/* target(start, shape): the object of that shape nearest Utak at the start, by the
+ * distance from his point to the object's area centroid, named by judgeshape.h's
+ * rule on its true polygon; ties to the earlier object in the world file.
+ * COMPLEXITY: O(objects x vertices^2); no TABLE read. */
+static int32_t target(const World *start, Shape shape)
 {
-	if (o->count == 0)
-		return SHAPE_NONE;
-	int32_t w = o->x1 - o->x0 + 1, h = o->y1 - o->y0 + 1;
-	uint8_t *mask = util_alloc((size_t)w * (size_t)h, 1);
-	judge_read += (int64_t)w * h;
-	for (int32_t y = 0; y < h; y++)
-		for (int32_t x = 0; x < w; x++)
-			mask[y * w + x] = t->owner[(int64_t)(y + o->y0) * t->w + x + o->x0] == k + 1;
-	Shape s = shape_classify(mask, w, h);
-	free(mask);
-	return s;
-}
-
-/* By distance from Utak, then by index: the order in which target looks. */
-typedef struct Candidate {
-	double d;
-	int32_t k;
-} Candidate;
-
-static int candidate_cmp(const void *pa, const void *pb)
-{
-	const Candidate *a = pa, *b = pb;
-	if (a->d != b->d)
-		return a->d < b->d ? -1 : 1;
-	return (a->k > b->k) - (a->k < b->k);
-}
-
-/* target(start, table0, shape): the object of that shape nearest Utak at the start
- * (the lowest index among equally near ones).
- * COMPLEXITY: one pass of the TABLE, a sort of the objects by distance, and the
- * shapes of the nearest ones only until one has the shape asked for (each reads its
- * containing rectangle). */
-static int32_t target(const World *start, const Table *t0, Shape shape)
-{
-	int32_t n = start->object_count, best = -1;
-	ObjectSquares *o = objects_squares(t0, n);
-	Candidate *c = util_alloc((size_t)(n > 0 ? n : 1), sizeof *c);
-	int32_t m = 0;
-	for (int32_t k = 0; k < n; k++)
-		if (o[k].count)
-			c[m++] = (Candidate){hypot(o[k].cx - start->utak.x, o[k].cy - start->utak.y), k};
-	qsort(c, (size_t)m, sizeof *c, candidate_cmp);
-	for (int32_t i = 0; i < m && best < 0; i++)
-		if (object_shape(t0, &o[c[i].k], c[i].k) == shape)
-			best = c[i].k;
-	free(c);
-	free(o);
+	int32_t best = -1;
+	double best_d = INFINITY;
+	for (int32_t k = 0; k < start->object_count; k++) {
+		const Polygon *p = &start->objects[k].shape;
+		if (judge_shape_name(p) != shape)
+			continue;
+		Vec2 c = judge_shape_centroid(p);
+		double d = hypot(c.x - start->utak.x, c.y - start->utak.y);
+		if (d < best_d)
+			best = k, best_d = d;
+	}
 	return best;
 }
 
@@ -192,16 +131,17 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		snprintf(why, size, "cannot rebuild the starting TABLE: %s", d.msg);
 		return false;
 	}
-	Fixed f;
-	fixed_build(&f, table);
+	JudgeRooms f;
+	judge_rooms_find(&f, table);
+	judge_read += (int64_t)table->w * table->h;
 	Heading h = start->heading;
 	const char *shape = task_shape_name(task->shape);
 	int32_t sx, sy, ex, ey;
 	table_square_of(start->utak, &sx, &sy);
 	table_square_of(end->utak, &ex, &ey);
-	int32_t start_room = rooms_at(&f.rooms, sx, sy), end_room = rooms_at(&f.rooms, ex, ey);
+	int32_t start_room = judge_rooms_nearest(&f, sx, sy), end_room = judge_rooms_at(&f, ex, ey);
 	bool ok = false;
-	int32_t k = task->shape == SHAPE_NONE ? -1 : target(start, &t0, task->shape);
+	int32_t k = task->shape == SHAPE_NONE ? -1 : target(start, task->shape);
 	if (task->shape != SHAPE_NONE && k < 0) {
 		snprintf(why, size, "there is no %s in this world", shape);
 		goto done;
@@ -213,7 +153,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		judge_read += (int64_t)table->w * table->h;
 		for (int32_t y = 0; y < table->h; y++)
 			for (int32_t x = 0; x < table->w; x++)
-				if (rooms_at(&f.rooms, x, y) == start_room)
+				if (judge_rooms_at(&f, x, y) == start_room)
 					best = fmax(best, score(h, task->corner, x, y));
 		int64_t got = INT64_MIN;
 		if (task->kind == TASK_GO_CORNER) {
@@ -222,7 +162,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 			judge_read += (int64_t)table->w * table->h;
 			for (int32_t y = 0; y < table->h; y++)
 				for (int32_t x = 0; x < table->w; x++)
-					if (table->owner[(int64_t)y * table->w + x] == k + 1 && rooms_at(&f.rooms, x, y) == start_room)
+					if (table->owner[(int64_t)y * table->w + x] == k + 1 && judge_rooms_at(&f, x, y) == start_room)
 						got = fmax(got, score(h, task->corner, x, y));
 		}
 		ok = got != INT64_MIN && got >= best - JUDGE_SLACK;
@@ -236,8 +176,14 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		break;
 	}
 	case TASK_GO_NEXT_ROOM:
+		if (f.count < 2) {
+			snprintf(why, size, "the task does not apply: there is no next room (one room)");
+			break;
+		}
 		ok = end_room >= 0 && end_room != start_room;
-		snprintf(why, size, ok ? "Utak is in another room than he started in" : "Utak is still in the room he started in");
+		snprintf(why, size, "%s", ok ? "Utak is in another room than he started in"
+			 : end_room == JUDGE_ROOM_NONE ? "Utak stands in a doorway, not wholly in the next room"
+			 : "Utak is still in the room he started in");
 		break;
 	case TASK_GO_SHAPE:
 		for (int i = 0; i < 8 && !ok; i++) {
@@ -248,8 +194,8 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		snprintf(why, size, ok ? "Utak touches the %s" : "Utak does not touch the %s", shape);
 		break;
 	case TASK_GO_ROUND: {
-		ObjectSquares o = object_squares(&t0, start->object_count, k);
-		double turns = n >= 3 ? geom_winding(trail, n, vec2(o.cx, o.cy)) : 0;
+		Vec2 c = judge_shape_centroid(&start->objects[k].shape);
+		double turns = n >= 3 ? geom_winding(trail, n, c) : 0;
 		double home = hypot(end->utak.x - start->utak.x, end->utak.y - start->utak.y);
 		ok = fabs(turns) > 0.99 && home <= JUDGE_HOME;
 		snprintf(why, size, "Utak's path winds %.2f times round the %s and ends %.2f from its start", fabs(turns),
@@ -259,13 +205,13 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 	case TASK_PUSH_NEXT_ROOM:
 	case TASK_PUSH_THROUGH_DOOR: {
 		ObjectSquares o0 = object_squares(&t0, start->object_count, k);
-		int32_t from = rooms_at(&f.rooms, (int32_t)floor(o0.cx), (int32_t)floor(o0.cy)), room = -2;
+		int32_t from = judge_rooms_nearest(&f, (int32_t)floor(o0.cx), (int32_t)floor(o0.cy)), room = -2;
 		bool one_room = true;
 		judge_read += (int64_t)table->w * table->h;
 		for (int32_t y = 0; y < table->h; y++)
 			for (int32_t x = 0; x < table->w; x++)
 				if (table->owner[(int64_t)y * table->w + x] == k + 1) {
-					int32_t r = rooms_at(&f.rooms, x, y);
+					int32_t r = judge_rooms_at(&f, x, y);
 					if (room == -2)
 						room = r;
 					else if (r != room)
@@ -276,15 +222,35 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		break;
 	}
 	case TASK_PUSH_AROUND_CORNER: {
-		ObjectSquares o0 = object_squares(&t0, start->object_count, k), o1 = object_squares(table, start->object_count, k);
-		ok = !pathgraph_segment_free(&f.grid, vec2(o0.cx, o0.cy), vec2(o1.cx, o1.cy));
-		snprintf(why, size, ok ? "the %s is out of sight of where it was" : "the %s can still be seen from where it was",
-			 shape);
+		Vec2 c0 = judge_shape_centroid(&start->objects[k].shape);
+		int32_t cx, cy;
+		table_square_of(c0, &cx, &cy);
+		JudgeBend b;
+		if (!judge_rooms_bend(&f, judge_rooms_nearest(&f, cx, cy), &b)) {
+			snprintf(why, size, "the task does not apply: there is no corner to push round here (the %s did not "
+				 "start in an L-shaped corridor)", shape);
+			break;
+		}
+		/* The leg it started in (-1: in the bend), and the other. */
+		int from = box_has(b.bend, cx, cy) ? -1 : box_has(b.leg[0], cx, cy) ? 0 : 1;
+		bool past = true, any = false;
+		judge_read += (int64_t)table->w * table->h;
+		for (int32_t y = 0; y < table->h; y++)
+			for (int32_t x = 0; x < table->w; x++)
+				if (table->owner[(int64_t)y * table->w + x] == k + 1) {
+					any = true;
+					bool leg = from < 0 ? box_has(b.leg[0], x, y) || box_has(b.leg[1], x, y)
+							    : box_has(b.leg[1 - from], x, y);
+					past = past && leg && !box_has(b.bend, x, y);
+				}
+		ok = any && past;
+		snprintf(why, size, ok ? "the %s is wholly in the other leg of the corridor, past the bend"
+				       : "the %s is not wholly in the other leg of the corridor, past the bend", shape);
 		break;
 	}
 	}
 done:
-	fixed_free(&f);
+	judge_rooms_free(&f);
 	table_free(&t0);
 	return ok;
 }

@@ -5,21 +5,35 @@
  * itself (the World and its TABLE, which the controller never sees) and says
  * whether it has. Its verdict is the program's: exit status 0 or 1.
  *
- * Rooms are those of the fixed space (verge and walls; objects count as space),
- * found by rooms.c; compass directions are in Utak's frame at the start (his north
- * is the way he faced). The rules, per task:
+ * It uses only base/ and body/ (tests/wall.test.sh has no exception for it): the
+ * shared meaning is /work/spec-verdicts.md's, the code its own. Objects are named
+ * by judgeshape.h's rule on their TRUE polygons (exact geometry, orientation
+ * free); the task's object is the object of that shape nearest Utak's starting
+ * point by area centroid (ties to the earlier in the world file). Rooms, doors
+ * and doorways are judgerooms.h's (verge and walls only; objects count as space;
+ * a doorway belongs to no room); Utak's starting room, if he starts in a doorway,
+ * is the room of the nearest square that has one. Compass directions are in
+ * Utak's frame at the start (his north is the way he faced). The rules, per task:
  *   go CORNER       Utak's square is in his starting room and at most JUDGE_SLACK
  *                   short of the room's free square farthest in that direction
  *                   (score x + y, signs by the corner, in his frame);
- *   go next-room    his square is in another room than the one he started in;
- *   go SHAPE        an object of that shape fills one of the 8 squares around him;
- *   go round SHAPE  his path winds once round the nearest object of that shape,
- *                   and ends within JUDGE_HOME of where it began;
- *   push SHAPE CORNER   the object (of that shape) has a square at most
- *                   JUDGE_SLACK short of the room's farthest free square;
- *   push SHAPE next-room / through-door   all its squares lie in another room;
- *   push SHAPE around-corner   its centre can no longer be seen, along a straight
- *                   line through the fixed space, from where its centre was. */
+ *   go next-room    his square is in a room (not a doorway) other than his
+ *                   starting room; with one room only, the task does not apply;
+ *   go SHAPE        the task's object fills one of the 8 squares around him;
+ *   go round SHAPE  his path winds once round the task's object (winding number
+ *                   about its centroid over 0.99 in absolute value) and ends within
+ *                   JUDGE_HOME of where it began;
+ *   push SHAPE CORNER   the object lies in the starting room and has a square at
+ *                   most JUDGE_SLACK short of the room's farthest free square;
+ *   push SHAPE next-room / through-door   every square of the object lies in one
+ *                   room, none in a doorway, other than the room of its centroid
+ *                   at the start;
+ *   push SHAPE around-corner   the object started (area centroid) in an L-shaped
+ *                   corridor (judgerooms.h: two legs and their bend) and every
+ *                   square of it now lies in the other leg, none in the bend (from
+ *                   the bend itself: in either leg, past the bend); if it did not
+ *                   start in such a corridor the task does not apply and the
+ *                   verdict says so. */
 #ifndef UTAK_JUDGE_H
 #define UTAK_JUDGE_H
 
