@@ -385,6 +385,15 @@ typedef struct WmSearch {
 	int32_t tried;  /* candidates scored */
 } WmSearch;
 
+/* wm_compared_bare(m, x, y, imp): the cells a position is judged on by the model
+ * as it stands (with the held object lifted, while pushing). */
+static int32_t wm_compared_bare(const WorldModel *m, int32_t x, int32_t y, const Impression *imp)
+{
+	int32_t compared;
+	worldmodel_mismatch(m, x, y, imp, &compared);
+	return compared;
+}
+
 static void wm_try(WmSearch *s, int32_t x, int32_t y)
 {
 	int32_t ux, uy;
@@ -398,6 +407,13 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	double score = s->held ? wm_score_holding(s->m, x, y, s->held, s->under, s->imp, &compared)
 	                       : wm_score(s->m, x, y, s->imp, &compared);
 	if (compared < WORLDMODEL_MIN_COMPARED)
+		return;
+	/* Pushing, the held object rides beside every candidate and is compared at
+	 * each: a position must also be judged on what stays put. WHY: a push of
+	 * thousands of squares that halted at once otherwise had its prediction, far
+	 * in the unseen, judged on the object alone and believed, and the model's
+	 * window (and the cost of deriving the tree, O(its area)) ran away with it. */
+	if (s->held && wm_compared_bare(s->m, x, y, s->imp) < WORLDMODEL_MIN_COMPARED)
 		return;
 	Vec2 c = vec2(x + 0.5, y + 0.5), ab = vec2_sub(s->to, s->from);
 	double len2 = vec2_dot(ab, ab),
@@ -791,7 +807,10 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 
 	/* Disparity: the positions near the prediction and along the commanded line. */
 	WmSearch s = {m, imp, held, under, px, py, from, to, px, py, INFINITY, rep->mismatch, 0};
-	if (rep->compared >= WORLDMODEL_MIN_COMPARED)
+	/* The prediction counts as judged by the same rule as every candidate (wm_try). */
+	bool judged = rep->compared >= WORLDMODEL_MIN_COMPARED &&
+	              (!held || wm_compared_bare(m, px, py, imp) >= WORLDMODEL_MIN_COMPARED);
+	if (judged)
 		s.best_key = rep->mismatch;
 	int32_t r = WORLDMODEL_DISPARITY_RADIUS;
 	for (int32_t dy = r; dy >= -r; dy--)
@@ -812,7 +831,7 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	rep->best_mismatch = s.best_score;
 	rep->candidates = s.tried;
 	if ((s.bx != px || s.by != py) &&
-	    (rep->compared < WORLDMODEL_MIN_COMPARED ||
+	    (!judged ||
 	     s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch)) {
 		rep->corrected = true;
 		m->utak = vec2_add(m->utak, vec2(s.bx - px, s.by - py));
