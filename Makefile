@@ -288,6 +288,7 @@ check: build/gen/.done
 #                        and the dao map den520d): medians of repeated runs with
 #                        their spread, the ratios peer / utak, and one read pass
 #                        over the grid beside each job (the physical limit)
+#   make bench-compare SIDE=1024   the same at one side alone: a few minutes
 #
 # bench/skelbench.c --compare writes the grids and times utak; bench/compare.py times
 # the peers on the same files and prints the tables. The peers are Debian's
@@ -311,7 +312,7 @@ build/peer/tcodpath: bench/peer/tcodpath.c | bench-compare-deps build/peer
 
 bench-compare: build/rel/bench/skelbench build/peer/tcodpath | bench-compare-deps
 	OMP_NUM_THREADS=1 $(DEBIAN_PYTHON) bench/compare.py build/rel/bench/skelbench \
-	    build/peer/tcodpath build/compare $(MOVINGAI)/maps/cities/Boston_0_1024.map \
+	    build/peer/tcodpath build/compare $(if $(SIDE),--side $(SIDE)) $(MOVINGAI)/maps/cities/Boston_0_1024.map \
 	    $(MOVINGAI)/maps/dao/den520d.map
 
 .PHONY: bench-compare bench-compare-deps

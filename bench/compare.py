@@ -3,7 +3,10 @@
 # (paper 4.2) and grid A* (paper 4.1) against the peers issues 4 and 16 name, side by
 # side in one run, on the same grids.
 #
-#   compare.py SKELBENCH TCODPATH DIR [MAP ...]
+#   compare.py SKELBENCH TCODPATH DIR [--side N] [MAP ...]
+#
+# With --side N only the grids N cells a side are made and timed (a reduced run, a few
+# minutes at 1024 instead of about 40 for both sizes; `make bench-compare SIDE=1024`).
 #
 # SKELBENCH --compare DIR MAP... (bench/skelbench.c) writes the rooms, rects (random
 # rectangles) and maze grids and each Moving AI MAP (scaled and cut to the size) at
@@ -119,13 +122,16 @@ def cv_thinning(img):
 
 def main(argv):
     if len(argv) < 4:
-        sys.stderr.write("usage: compare.py SKELBENCH TCODPATH DIR [MAP ...]\n")
+        sys.stderr.write("usage: compare.py SKELBENCH TCODPATH DIR [--side N] [MAP ...]\n")
         return 2
     skelbench, tcodpath, folder, maps = argv[1], argv[2], argv[3], argv[4:]
+    side = []
+    if maps[:1] == ["--side"] and len(maps) >= 2:
+        side, maps = maps[:2], maps[2:]
     cv2.setNumThreads(1)
     has_thinning = hasattr(cv2, "ximgproc") and hasattr(cv2.ximgproc, "thinning")
     os.makedirs(folder, exist_ok=True)
-    run = subprocess.run([skelbench, "--compare", folder] + maps, stdout=subprocess.PIPE,
+    run = subprocess.run([skelbench, "--compare", folder] + side + maps, stdout=subprocess.PIPE,
                          universal_newlines=True, check=True)
     grids = [parse_grid(line) for line in run.stdout.splitlines() if line.startswith("grid ")]
 

@@ -15,10 +15,10 @@
  * as a planner that recomputes the skeleton of a screen of one size would. The query runs from near
  * one corner to near the opposite one and reports the pathgraph vertices it expanded.
  *
- *   skelbench --compare DIR [MAP...]
+ *   skelbench --compare DIR [--side N] [MAP...]
  * The utak side of `make bench-compare` (bench/compare.py): writes the rooms, rects and
  * maze grids and each MAP (scaled by a whole factor and cut, bench_fit) at 1024 and
- * 4096 cells a side into DIR as NAME-SIDE.pgm (binary PGM, 255 free, 0 blocked, first
+ * 4096 cells a side (at N alone with --side, for a reduced run) into DIR as NAME-SIDE.pgm (binary PGM, 255 free, 0 blocked, first
  * row y = 0) with NAME-SIDE.d2 (the distance transform: w h int32_t dist2 values,
  * native byte order, for compare.py to check OpenCV's against), and prints one line
  * per grid: "grid NAME W H ends SX SY GX GY len A* JPS exp A* JPS skcells N" and then,
@@ -505,13 +505,19 @@ static void bench_fit(Grid *g, int32_t side)
 	*g = out;
 }
 
-/* bench_compare(dir, maps, count): --compare (see the top of the file). */
-static int bench_compare(const char *dir, char **maps, int count)
+/* bench_compare(dir, maps, count): --compare (see the top of the file); the sides
+ * 1024 and 4096, or only `only` when it is positive (--side). */
+static int bench_compare(const char *dir, char **maps, int count, int32_t only)
 {
 	static const char *const names[] = {"rooms", "rects", "maze"};
 	void (*const make[])(Grid *, int32_t) = {bench_rooms, bench_rects, bench_maze};
-	static const int32_t sides[] = {1024, 4096};
-	for (int z = 0; z < 2; z++) {
+	int32_t sides[] = {1024, 4096};
+	int nsides = 2;
+	if (only > 0) {
+		sides[0] = only;
+		nsides = 1;
+	}
+	for (int z = 0; z < nsides; z++) {
 		for (int k = 0; k < 3; k++) {
 			Grid g;
 			bench_seed = 2026;
@@ -552,8 +558,17 @@ static int bench_compare(const char *dir, char **maps, int count)
 
 int main(int argc, char **argv)
 {
-	if (argc > 2 && strcmp(argv[1], "--compare") == 0)
-		return bench_compare(argv[2], argv + 3, argc - 3);
+	if (argc > 2 && strcmp(argv[1], "--compare") == 0) {
+		if (argc > 4 && strcmp(argv[3], "--side") == 0) {
+			int32_t side = atoi(argv[4]);
+			if (side < 16 || side > 16384) {
+				fprintf(stderr, "skelbench: --side: 16 to 16384 cells\n");
+				return 2;
+			}
+			return bench_compare(argv[2], argv + 5, argc - 5, side);
+		}
+		return bench_compare(argv[2], argv + 3, argc - 3, 0);
+	}
 	int repeats = argc > 1 ? atoi(argv[1]) : 3;
 	int32_t largest = argc > 2 ? atoi(argv[2]) : 4096;
 	if (repeats < 1)
