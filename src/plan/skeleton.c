@@ -4,15 +4,17 @@
  * ALGORITHM
  * 1. Distance transform: Meijster, Roerdink and Hesselink, "A general algorithm for
  *    computing distance transforms in linear time" (Mathematical Morphology and its
- *    Applications to Image and Signal Processing, 2000). Phase 1 scans every column
- *    for the distance g to the nearest blocked cell in that column; phase 2 takes, in
- *    every row, the lower envelope of the parabolas (x - u)^2 + g(u)^2, found as in
- *    Felzenszwalb and Huttenlocher ("Distance transforms of sampled functions", Theory
- *    of Computing 8, 2012) but with exact integer comparisons in place of divisions,
- *    and run separately on each run of free cells between two blocked ones (a blocked
- *    cell is nearer than anything beyond it). The cells just outside the grid are
- *    blocked: phase 1 starts each column at distance 1 from the rows -1 and h, and
- *    phase 2 has a blocked column at -1 and at w.
+ *    Applications to Image and Signal Processing, 2000). Phase 1 finds, for every cell,
+ *    the distance g to the nearest blocked cell in its column: one pass down the grid
+ *    (the distance to the blocked cell above, 16 bits a cell, four columns at once in
+ *    a 64-bit word), then one pass up that takes the distance below and the minimum
+ *    and hands each row at once to phase 2, which takes the lower envelope of the
+ *    parabolas (x - u)^2 + g(u)^2 along the row, found as in Felzenszwalb and
+ *    Huttenlocher ("Distance transforms of sampled functions", Theory of Computing 8,
+ *    2012) but with exact integer comparisons in place of divisions; a blocked cell
+ *    is one more parabola, with g = 0. The cells just outside the grid are blocked:
+ *    phase 1 starts each column at distance 1 from the rows -1 and h, and phase 2 has
+ *    a blocked column at -1 and at w.
  * 2. Thinning: distance-ordered homotopic thinning (Pudney, "Distance-ordered homotopic
  *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
  *    here in 2D with the (4, 8) topology. Free cells are visited in order of
@@ -45,10 +47,13 @@
  *
  * MEMORY  dist2 and on (5 bytes a cell), and the working space, kept in the Skeleton
  *    for the next grid of the same size: a padded state byte per cell, the visiting
- *    order and a stack (4 bytes a cell each), and the counting-sort histogram (4 bytes
- *    per possible dist2 value: about (shorter side / 2)^2, a quarter of the cells).
+ *    order and a stack (4 bytes a cell each; the stack holds the transform's 2 bytes a
+ *    cell of column distances before the thinning uses it), and the counting-sort
+ *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
+ *    quarter of the cells). skeleton_edt alone allocates its 2 bytes a cell.
  *
- * COMPLEXITY  O(w h): the transform is two passes per axis; the sort is two passes;
+ * COMPLEXITY  O(w h): the transform is two passes down the columns and two along
+ *    the rows; the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
  *    a free cell on the benchmark grids); pruning walks each branch once.
  *
@@ -61,17 +66,28 @@
  *    on rooms), of which none found its cell interior (all 8 neighbours in the set)
  *    and 11 374 cells were tried again: the distance order puts every cell on the
  *    front when its turn comes, so a border queue would save no visit, and the
- *    visit's cost (about 9 ns) is its loads and its branch on the table. Of the
- *    changes of issue 16 (the neighbourhood written out, one table load for the
- *    decision, the envelope's paired arrays, the all-pairs short runs) none moved
- *    these figures by more than 5-10%, most within the noise (the output is the
- *    same cell for cell); the transform's row pass (the envelope) is 85% of the
- *    transform. The medial axis from a feature transform was not tried: this
- *    thinning's visits already cost about as much as one more pass of the transform
- *    would, and its spur rule and topology are what the tests pin. From 1024 to 4096
- *    a side the cost grows 15-34 times for 16 times the cells: the visits of the
- *    4096 grids miss the cache (state, 17 MB, no longer fits), most on the random
- *    rectangles, whose many distance levels each sweep the whole grid. */
+ *    visit's cost (about 9 ns) is its loads and its branch on the table. The medial
+ *    axis from a feature transform was not tried: this thinning's visits already
+ *    cost about as much as one more pass of the transform would, and its spur rule
+ *    and topology are what the tests pin. From 1024 to 4096 a side the cost grows
+ *    15-34 times for 16 times the cells: the visits of the 4096 grids miss the cache
+ *    (state, 17 MB, no longer fits), most on the random rectangles, whose many
+ *    distance levels each sweep the whole grid.
+ *    The transform (the same values) went, on the 1024 grids, from 130, 115 and 104
+ *    million instructions (rooms, rects, maze; valgrind --tool=cachegrind) to 80,
+ *    80 and 80, and its mispredicted branches (cachegrind's model) on the maze from
+ *    627 000 to 522 000; in thread CPU time, best of 21 alternating with the former
+ *    code in one process on the loaded machine, rooms 8.5 -> 6.1 ms, rects 7.8 ->
+ *    6.5, maze 7.6 -> 7.0, Boston_0_1024 9.2 -> 7.4, but den520d 5.5 -> 6.0 (much
+ *    of it blocked: the former code skipped blocked cells, the envelope now takes
+ *    each as a parabola). Of that, the 16-bit four-lane phase 1 took 25 million
+ *    instructions to 12 (at -O3, where GCC vectorises it, phase 1 is 3 times faster
+ *    than the scalar loop); the envelope without runs and with each entry's
+ *    differences kept, 26 to 17 in the test. A one-step advance without a branch in
+ *    the envelope's sweep cut the maze's mispredictions to 318 000 but was 10-30%
+ *    slower (the select lengthens the sweep's chain of dependences); not kept. What
+ *    is left is the envelope's two data-dependent branches (pop, advance), which on
+ *    the maze's rows of short runs mispredict about once in two cells. */
 #include "utak/plan/skeleton.h"
 
 #include <assert.h>
@@ -83,149 +99,186 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
-/* Free runs of a row up to this long are solved by comparing every column with every
- * cell (at most 8 x 8 branch-free steps) instead of the envelope, whose stack
- * branches mispredict on short runs. */
-#define SKELETON_SHORT_RUN 8
+/* Phase 1 works on four columns at once, four 16-bit lanes in a uint64_t (SWAR: plain
+ * C, so the same code on every compiler and at -O2, where GCC 12 does not vectorise
+ * these loops). A lane holds a column distance, at most SKELETON_MAX_SIDE < 0x8000,
+ * so adding 1 or 0x7fff to a lane never carries into the next. */
+#define EDT_ONES 0x0001000100010001u
+#define EDT_HIGH 0x8000800080008000u
+#define EDT_LOW 0x7fff7fff7fff7fffu
 
-/* skeleton_edt_count(g, dist2, count): skeleton_edt, also counting the free cells of
- * each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
- * histogram, gathered while the values are made rather than in a pass of its own). */
-static int32_t skeleton_edt_count(const Grid *g, int32_t *dist2, int32_t *count)
+/* edt_lanes_nonzero(v): 0xffff in each lane of v that is not 0, else 0 (lanes of v
+ * below 0x8001). */
+static inline uint64_t edt_lanes_nonzero(uint64_t v)
 {
-	const int32_t w = g->w, h = g->h;
+	return (((v + EDT_LOW) & EDT_HIGH) >> 15) * 0xffffu;
+}
+
+/* The row pass's envelope (edt_row) lies on two guards: at the bottom a column far
+ * to the left, which never drops column -1 (they cross near EDT_FAR / 2, and any
+ * column u >= 0 crosses column -1 at (u - 1) / 2 or later); above the top a parabola
+ * EDT_ABOVE + x^2, never lower than the last real column, w, which is at most
+ * (SKELETON_MAX_SIDE + 1)^2 < EDT_ABOVE at any cell (and EDT_ABOVE + x^2 < 2^31). */
+#define EDT_FAR (-16384)
+#define EDT_ABOVE 0x40000000
+
+/* The envelope's stack (see edt_row), w + 4 entries a field. */
+typedef struct EdtStack {
+	int32_t *u, *G, *L; /* column, its g^2, its distance from the entry below */
+	int64_t *F, *D;     /* F = u^2 + G, and F less the entry below's F */
+} EdtStack;
+
+/* edt_row(g, out, w, v, count, largest): phase 2 of one row: out[x] = min over the
+ * columns u of (x - u)^2 + g[u]^2, with columns -1 and w blocked (g = 0; a blocked
+ * cell of the row is simply a column with g = 0, so the row needs no splitting into
+ * runs). With F(u) = u^2 + g(u)^2 the parabola of column u at x is F(u) - 2 u x + x^2,
+ * and two parabolas a < b cross at (F(b) - F(a)) / (2 (b - a)). The lower envelope's
+ * columns are kept on a stack; the top b is dropped when the new column u crosses it
+ * no later than b crosses the one below (cross multiplied in 64 bits: exact, and no
+ * division); each entry keeps its differences from the one below, so the test is two
+ * multiplications of values already loaded. Then one sweep reads the envelope: the
+ * entry lowest at x moves right as x does, and the next one is compared by value
+ * (32 bits). Returns the larger of the row's largest value and largest, and counts each
+ * value d in count[d + 1] (blocked cells too, at 0: the caller clears count[1]). */
+static inline int32_t edt_row(const uint16_t *restrict g, int32_t *restrict out, int32_t w,
+                              const EdtStack *v, int32_t *restrict count, int32_t largest)
+{
+	int32_t *restrict vu = v->u, *restrict vG = v->G, *restrict vL = v->L;
+	int64_t *restrict vF = v->F, *restrict vD = v->D;
+	vu[0] = EDT_FAR;
+	vG[0] = 0;
+	vF[0] = (int64_t)EDT_FAR * EDT_FAR;
+	vu[1] = -1;
+	vG[1] = 0;
+	vF[1] = 1;
+	vD[1] = 1 - vF[0];
+	vL[1] = -1 - EDT_FAR;
+	int32_t top = 1;
+	for (int32_t u = 0; u <= w; u++) {
+		const int32_t gu = u < w ? g[u] : 0;
+		const int32_t Gu = gu * gu;
+		const int64_t Fu = (int64_t)u * u + Gu;
+		/* the top is nowhere strictly lowest: cross(top, u) <= cross(below, top) */
+		while ((Fu - vF[top]) * vL[top] <= vD[top] * (u - vu[top]))
+			top--;
+		vD[top + 1] = Fu - vF[top];
+		vL[top + 1] = u - vu[top];
+		top++;
+		vu[top] = u;
+		vG[top] = Gu;
+		vF[top] = Fu;
+	}
+	vu[top + 1] = 0;
+	vG[top + 1] = EDT_ABOVE;
+	int32_t k = 1;
+	for (int32_t x = 0; x < w; x++) {
+		int32_t d = x - vu[k], e = x - vu[k + 1];
+		int32_t val = vG[k] + d * d, next = vG[k + 1] + e * e;
+		while (next <= val) {
+			k++;
+			val = next;
+			e = x - vu[k + 1];
+			next = vG[k + 1] + e * e;
+		}
+		out[x] = val;
+		largest = val > largest ? val : largest;
+		if (count)
+			count[val + 1]++;
+	}
+	return largest;
+}
+
+/* skeleton_edt_count(g, dist2, count, up): skeleton_edt, also counting the free cells
+ * of each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
+ * histogram, gathered while the values are made rather than in a pass of its own).
+ * up is scratch of 2 w h bytes, or NULL to allocate it here. */
+static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint16_t *up)
+{
+	const int32_t w = gr->w, h = gr->h;
 	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
 	int32_t largest = 0;
 	if (w == 0 || h == 0)
 		return largest;
-	/* Phase 1, row by row so that the inner loop runs along memory: dist2 holds g,
-	 * the distance along the column to the nearest blocked cell (or to row -1 / h).
-	 * The rows are restrict pointers into one array: they never overlap, and saying
-	 * so frees the compiler from reloading after every store (and lets it vectorise
-	 * where its options allow; -O2 with GCC 12 does not). */
-	for (int32_t x = 0; x < w; x++)
-		dist2[x] = g->cells[x] == GRID_FREE ? 1 : 0;
-	for (int32_t y = 1; y < h; y++) {
-		const uint8_t *restrict c = g->cells + (size_t)y * w;
-		int32_t *restrict row = dist2 + (size_t)y * w;
-		const int32_t *restrict prev = dist2 + (size_t)(y - 1) * w;
-		for (int32_t x = 0; x < w; x++)
-			row[x] = c[x] == GRID_FREE ? prev[x] + 1 : 0;
-	}
-	for (int32_t x = 0; x < w; x++) {
-		int32_t *last = dist2 + (size_t)(h - 1) * w;
-		if (last[x] > 1)
-			last[x] = 1;
-	}
-	for (int32_t y = h - 2; y >= 0; y--) {
-		int32_t *restrict row = dist2 + (size_t)y * w;
-		const int32_t *restrict next = dist2 + (size_t)(y + 1) * w;
-		for (int32_t x = 0; x < w; x++) {
-			int32_t below = next[x] + 1;
-			row[x] = below < row[x] ? below : row[x];
-		}
-	}
-	/* Phase 2, one row at a time. A blocked cell at column b (or the outside at -1 and
-	 * w) is the nearest obstacle column for every cell across it from the cells
-	 * beyond, so the row falls into independent runs of free cells, each solved with
-	 * the blocked columns at its two ends. Within a run, with F(u) = u^2 + g(u)^2, the
-	 * parabola of column u at x is F(u) - 2 u x + x^2, and two parabolas a < b cross at
-	 * (F(b) - F(a)) / (2 (b - a)). The lower envelope's columns are kept in the stack
-	 * vu[0 .. top]; a column is dropped when the new one crosses its left neighbour no
-	 * later than it does, compared by cross multiplication in 64 bits instead of
-	 * Meijster's integer division: exact, and no division on the critical path. The
-	 * stack holds each column with its F beside it (vu, vF), so the envelope's loads
-	 * run along two arrays instead of through v into F. */
-	const int32_t n = w + 2;
-	int64_t *vF = util_alloc((size_t)n, sizeof *vF);
-	int32_t *vu = util_alloc((size_t)n, sizeof *vu);
+	uint16_t *own = up ? NULL : util_alloc((size_t)w * h, sizeof *up);
+	up = up ? up : own;
+	uint16_t *dn = util_alloc((size_t)w, sizeof *dn);
+	uint16_t *g = util_alloc((size_t)w, sizeof *g);
+	EdtStack v;
+	const size_t n = (size_t)w + 4;
+	v.u = util_alloc(n, sizeof *v.u);
+	v.G = util_alloc(n, sizeof *v.G);
+	v.L = util_alloc(n, sizeof *v.L);
+	v.F = util_alloc(n, sizeof *v.F);
+	v.D = util_alloc(n, sizeof *v.D);
+	/* Phase 1 down the grid, row by row so that the loops run along memory: up is the
+	 * distance along the column to the nearest blocked cell above (row -1 is
+	 * blocked), 0 on a blocked cell. A row's four cells come as one 32-bit load and
+	 * are spread to four lanes; the lanes equal to GRID_FREE keep up + 1. The stores
+	 * and loads go through memcpy, which keeps the lane of each column the same on
+	 * either byte order (the spread keeps the order of significance). */
+	const int32_t w4 = w & ~3;
+	memset(dn, 0, (size_t)w * sizeof *dn);
 	for (int32_t y = 0; y < h; y++) {
-		int32_t *row = dist2 + (size_t)y * w;
-		int32_t x0 = 0;
-		while (x0 < w) {
-			if (row[x0] == 0) {
-				x0++;
-				continue;
-			}
-			int32_t x1 = x0;
-			while (x1 + 1 < w && row[x1 + 1] != 0)
-				x1++;
-			if (x1 - x0 < 2) {
-				/* one or two free cells: each touches a blocked end, at 1 */
-				row[x0] = row[x1] = 1;
-				largest = largest > 1 ? largest : 1;
-				if (count)
-					count[2] += x1 - x0 + 1;
-				x0 = x1 + 1;
-				continue;
-			}
-			if (x1 - x0 < SKELETON_SHORT_RUN) {
-				/* a short run: every column against every cell, no branches (a
-				 * vertical corridor's crossing of the row) */
-				int32_t g2[SKELETON_SHORT_RUN], out[SKELETON_SHORT_RUN];
-				const int32_t len = x1 - x0 + 1;
-				for (int32_t i = 0; i < len; i++)
-					g2[i] = row[x0 + i] * row[x0 + i];
-				for (int32_t i = 0; i < len; i++) {
-					int32_t best = (i + 1) * (i + 1); /* the blocked end at x0 - 1 */
-					int32_t right = (len - i) * (len - i); /* and at x1 + 1 */
-					best = right < best ? right : best;
-					for (int32_t j = 0; j < len; j++) {
-						int32_t c = (i - j) * (i - j) + g2[j];
-						best = c < best ? c : best;
-					}
-					out[i] = best;
-				}
-				for (int32_t i = 0; i < len; i++) {
-					row[x0 + i] = out[i];
-					largest = out[i] > largest ? out[i] : largest;
-					if (count)
-						count[out[i] + 1]++;
-				}
-				x0 = x1 + 1;
-				continue;
-			}
-			/* columns lo = x0 - 1 .. hi = x1 + 1, blocked at both ends */
-			int32_t lo = x0 - 1, hi = x1 + 1;
-			int32_t top = 0;
-			vu[0] = lo;
-			vF[0] = (int64_t)lo * lo;
-			for (int32_t u = x0; u <= hi; u++) {
-				int64_t Fu =
-				    (int64_t)u * u + (u <= x1 ? (int64_t)row[u] * row[u] : 0);
-				while (top > 0) {
-					int32_t a = vu[top - 1], b = vu[top];
-					int64_t Fa = vF[top - 1], Fb = vF[top];
-					/* cross(b, u) <= cross(a, b): b is nowhere lowest */
-					if ((Fu - Fb) * (b - a) > (Fb - Fa) * (u - b))
-						break;
-					top--;
-				}
-				top++;
-				vu[top] = u;
-				vF[top] = Fu;
-			}
-			int32_t k = 0;
-			for (int32_t x = x0; x <= x1; x++) {
-				/* the lowest parabola at x moves right as x does */
-				while (k < top && vF[k + 1] - vF[k] <= 2 * (int64_t)x * (vu[k + 1] - vu[k]))
-					k++;
-				int32_t d = x - vu[k];
-				row[x] = (int32_t)(vF[k] - (int64_t)vu[k] * vu[k]) + d * d;
-				if (row[x] > largest)
-					largest = row[x];
-				if (count)
-					count[row[x] + 1]++;
-			}
-			x0 = x1 + 1;
+		const uint8_t *restrict c = gr->cells + (size_t)y * w;
+		uint16_t *restrict row = up + (size_t)y * w;
+		const uint16_t *restrict prev = y > 0 ? up + (size_t)(y - 1) * w : dn;
+		for (int32_t x = 0; x < w4; x += 4) {
+			uint32_t b;
+			uint64_t p;
+			memcpy(&b, c + x, sizeof b);
+			memcpy(&p, prev + x, sizeof p);
+			uint64_t bytes = b;
+			bytes = (bytes | bytes << 16) & 0x0000ffff0000ffffu;
+			bytes = (bytes | bytes << 8) & 0x00ff00ff00ff00ffu;
+			const uint64_t is_free = ~edt_lanes_nonzero(bytes ^ (EDT_ONES * GRID_FREE));
+			p = (p + EDT_ONES) & is_free;
+			memcpy(row + x, &p, sizeof p);
 		}
+		for (int32_t x = w4; x < w; x++)
+			row[x] = (uint16_t)((prev[x] + 1) & -(uint16_t)(c[x] == GRID_FREE));
 	}
-	free(vF);
-	free(vu);
+	/* Then up the grid, row by row: dn, the distance to the nearest blocked cell below
+	 * (row h blocked; a cell is blocked where up is 0), and g = min(up, dn), the
+	 * column distance, made and used at once by the row pass (no second pass over
+	 * the grid). min of two lanes below 0x8000: (a | 0x8000) - d has its top bit set
+	 * where a >= d, with no borrow from the next lane. */
+	memset(dn, 0, (size_t)w * sizeof *dn);
+	for (int32_t y = h - 1; y >= 0; y--) {
+		const uint16_t *restrict u = up + (size_t)y * w;
+		for (int32_t x = 0; x < w4; x += 4) {
+			uint64_t a, d;
+			memcpy(&a, u + x, sizeof a);
+			memcpy(&d, dn + x, sizeof d);
+			d = (d + EDT_ONES) & edt_lanes_nonzero(a);
+			memcpy(dn + x, &d, sizeof d);
+			const uint64_t take_d = ((((a | EDT_HIGH) - d) & EDT_HIGH) >> 15) * 0xffffu;
+			const uint64_t m = (d & take_d) | (a & ~take_d);
+			memcpy(g + x, &m, sizeof m);
+		}
+		for (int32_t x = w4; x < w; x++) {
+			uint16_t d = (uint16_t)((dn[x] + 1) & -(uint16_t)(u[x] != 0));
+			dn[x] = d;
+			g[x] = d < u[x] ? d : u[x];
+		}
+		largest = edt_row(g, dist2 + (size_t)y * w, w, &v, count, largest);
+	}
+	if (count)
+		count[1] = 0; /* the blocked cells, counted at 0 */
+	free(v.u);
+	free(v.G);
+	free(v.L);
+	free(v.F);
+	free(v.D);
+	free(dn);
+	free(g);
+	free(own);
 	return largest;
 }
 
-int32_t skeleton_edt(const Grid *g, int32_t *dist2) { return skeleton_edt_count(g, dist2, NULL); }
+int32_t skeleton_edt(const Grid *g, int32_t *dist2)
+{
+	return skeleton_edt_count(g, dist2, NULL, NULL);
+}
 
 /* skeleton_dist2_bound(w, h): no free cell is farther than this (squared) from the
  * nearest blocked cell, as the ring outside the grid is blocked: in the shorter axis
@@ -599,7 +652,9 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		wk->start = util_alloc(wk->start_cap, sizeof *wk->start);
 	}
 	int32_t *start = wk->start, *order = wk->order;
-	const int32_t maxd = skeleton_edt_count(g, s->dist2, start);
+	/* the stack is scratch until the thinning: the transform's column distances
+	 * (2 bytes a cell of its 4; malloc'd memory takes the type it is written as) */
+	const int32_t maxd = skeleton_edt_count(g, s->dist2, start, (uint16_t *)(void *)wk->stack);
 	assert((size_t)maxd + 2 <= wk->start_cap);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
