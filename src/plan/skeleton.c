@@ -87,7 +87,10 @@
  *    the envelope's sweep cut the maze's mispredictions to 318 000 but was 10-30%
  *    slower (the select lengthens the sweep's chain of dependences); not kept. What
  *    is left is the envelope's two data-dependent branches (pop, advance), which on
- *    the maze's rows of short runs mispredict about once in two cells. */
+ *    the maze's rows of short runs mispredict about once in two cells.
+ *    The visit's neighbourhood masks written out (thinner_visit) took the skeleton,
+ *    transform included, from 23.0, 22.7 and 23.0 ms to 21.9, 20.5 and 21.9 (rooms,
+ *    rects, maze; `skelbench 5 1024`, the two builds alternating, loaded machine). */
 #include "utak/plan/skeleton.h"
 
 #include <assert.h>
@@ -474,11 +477,17 @@ static void thinner_visit(Thinner *t, int32_t pi)
 	const int32_t pw = t->pw;
 	const unsigned n[8] = {st[pi + 1],  st[pi + 1 + pw],  st[pi + pw],  st[pi - 1 + pw],
 	                       st[pi - 1], st[pi - 1 - pw], st[pi - pw], st[pi + 1 - pw]};
-	unsigned m = 0, again = 0;
-	for (int i = 0; i < 8; i++) {
-		m |= (n[i] & SKELETON_IN) << i;
-		again |= ((n[i] >> 1) & n[i] & 1u) << i; /* SKELETON_IN and SKELETON_VISITED */
-	}
+	/* written out: GCC 12 at -O2 kept the loop over i, with a shift by a register,
+	 * and it was a third of skeleton_compute's time (perf record) */
+	const unsigned m = (n[0] & SKELETON_IN) | (n[1] & SKELETON_IN) << 1 |
+	                   (n[2] & SKELETON_IN) << 2 | (n[3] & SKELETON_IN) << 3 |
+	                   (n[4] & SKELETON_IN) << 4 | (n[5] & SKELETON_IN) << 5 |
+	                   (n[6] & SKELETON_IN) << 6 | (n[7] & SKELETON_IN) << 7;
+	/* the neighbours in the set and visited (SKELETON_IN and SKELETON_VISITED) */
+	const unsigned v = (n[0] >> 1 & 1u) | (n[1] >> 1 & 1u) << 1 | (n[2] >> 1 & 1u) << 2 |
+	                   (n[3] >> 1 & 1u) << 3 | (n[4] >> 1 & 1u) << 4 | (n[5] >> 1 & 1u) << 5 |
+	                   (n[6] >> 1 & 1u) << 6 | (n[7] >> 1 & 1u) << 7;
+	const unsigned again = m & v;
 	st[pi] = (uint8_t)(st[pi] | SKELETON_VISITED);
 	const uint8_t k = t->kind[m];
 	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, m)))
@@ -516,10 +525,17 @@ static int thinner_degree(const Thinner *t, int32_t pi)
 	       (t->state[pi + t->off[4]] & SKELETON_IN) + (t->state[pi + t->off[6]] & SKELETON_IN);
 }
 
-/* thinner_prune(t, dist2): removes the spurs (see the header comment); returns the
- * number of cells removed. Spurs are found on the set as thinned, then removed. */
-static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, int32_t nset)
+/* thinner_prune(t, dist2, order, nset, maxd): removes the spurs (see the header
+ * comment); returns the number of cells removed. Spurs are found on the set as
+ * thinned, then removed. maxd is the largest dist2: no junction is farther from the
+ * obstacles, so a branch longer than SKELETON_SPUR_FACTOR * sqrt(maxd) +
+ * SKELETON_SPUR_SLACK cells is no spur whatever its junction, and its walk stops
+ * there (the same test, monotone in the clearance; on the 1024 maze, whose dead ends
+ * are long corridors, it saves most of the walking). */
+static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, int32_t nset,
+                             int32_t maxd)
 {
+	const double longest = SKELETON_SPUR_FACTOR * sqrt((double)maxd) + SKELETON_SPUR_SLACK;
 	/* order[0 .. nset) lists the padded indices of the set; cells to remove are
 	 * collected at the end of the stack array, which is as long as the grid. */
 	int32_t nremove = 0;
@@ -553,6 +569,8 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 			prev = cur;
 			cur = next;
 			length++;
+			if (length > longest)
+				break; /* to_junction is false */
 		}
 		if (!to_junction)
 			continue;
@@ -694,7 +712,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			if (t.state[row + x] & SKELETON_IN)
 				order[nset++] = row + x;
 	}
-	s->pruned = thinner_prune(&t, s->dist2, order, nset);
+	s->pruned = thinner_prune(&t, s->dist2, order, nset, maxd);
 	if (s->pruned > 0) {
 		/* a junction that lost a branch may be deletable now: the cells marked by
 		 * thinner_prune, in the same raster order as a test of every cell (which
