@@ -1,4 +1,4 @@
-/* shape.c - naming an object by its shape at any angle (paper 2.3; spec-verdicts.md).
+/* shape.c - naming an object by its shape at any angle (paper 2.3; doc/verdicts.md).
  * CONTROLLER SIDE. The measures and their tolerances are in shape.h.
  *
  * ALGORITHM.

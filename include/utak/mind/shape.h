@@ -1,11 +1,11 @@
 /* shape.h - naming an object by its shape, at any angle: square, brick, L-shape,
- * triangle (paper 2.3; the meaning in /work/spec-verdicts.md). CONTROLLER SIDE.
+ * triangle (paper 2.3; the meaning in doc/verdicts.md). CONTROLLER SIDE.
  *
  * The tasks name objects by shape ("the square", "the brick", "the L-shaped
  * object"). The judge names the objects of the real world from their exact
  * polygons (body/judge.c); the controller names the objects of its world model
  * from the squares it believes they cover, which is all the eye gives it. Both
- * mean the same by each name (spec-verdicts.md):
+ * mean the same by each name (doc/verdicts.md):
  *   triangle      3 corners;
  *   square, brick 4 corners, all near right angles; a square when the long side is
  *                 at most 1.2 times the short one, a brick when at least 1.5 times;
