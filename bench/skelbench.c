@@ -338,7 +338,7 @@ static void bench_one(const char *name, Grid g, int repeats)
 	grid_free(&g);
 }
 
-/* bench_load_map(path, g): a Moving AI .map file (../shared/data/movingai/README.md):
+/* bench_load_map(path, g): a Moving AI .map file (movingai.h):
  * '.', 'G' and 'S' free, anything else blocked; the file's rows in order as y. */
 static bool bench_load_map(const char *path, Grid *g)
 {

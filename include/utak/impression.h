@@ -13,7 +13,7 @@
 
 #include <stdint.h>
 
-/* The retina (paper 2.2; READING.md): 64 foveal cells of one square, 48 cells of
+/* The retina (paper 2.2, its 160 cells): 64 foveal cells of one square, 48 cells of
  * 2x2 squares, 48 of 4x4 squares; a 32x32-square field. */
 enum {
 	RETINA_CELLS = 160,

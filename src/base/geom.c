@@ -1,7 +1,7 @@
 /* geom.c - points, polygons and their projection onto the TABLE's squares (paper 2.1).
  *
  * ALGORITHM (projection). A square belongs to a polygon P when its open interior
- * meets closed P (READING.md). If no edge of P enters the open square, the square
+ * meets closed P (utak(5)). If no edge of P enters the open square, the square
  * lies wholly inside or wholly outside P, and its centre tells which. So the
  * squares of P are
  *     (squares whose open interior an edge passes through)

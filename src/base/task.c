@@ -1,4 +1,5 @@
-/* task.c - the reader of tasks: short forms and the paper's sentences (paper 2.3). CONTROLLER SIDE.
+/* task.c - the reader of tasks: short forms and the paper's sentences (paper 2.3). BOTH SIDES
+ * (base/): the controller and the judge read the same task.
  *
  * A task is normalised (lower case, punctuation other than '-' dropped, blanks
  * folded) and cut into words; then matched against a few patterns, most specific

@@ -1,5 +1,5 @@
 /* judgerooms.c - the judge's rooms: a watershed of clearance with the door rule of
- * spec-verdicts.md (paper 2.3). SIMULATOR SIDE; the rule is in judgerooms.h.
+ * doc/verdicts.md (paper 2.3). SIMULATOR SIDE; the rule is in judgerooms.h.
  *
  * ALGORITHM: two-pass 8-neighbour chamfer distance (Rosenfeld and Pfaltz,
  * "Distance functions on digital pictures", 1968, with weights 1 and sqrt 2);

@@ -1,4 +1,4 @@
-/* judgeshape.c - the judge's shape names from true polygons (spec-verdicts.md;
+/* judgeshape.c - the judge's shape names from true polygons (doc/verdicts.md;
  * paper 2.3). SIMULATOR SIDE; the rule and its constants are in judgeshape.h.
  *
  * ALGORITHM: merge near-duplicate and collinear vertices (repeat until stable),

@@ -1,4 +1,4 @@
-/* shape.c - naming an object by its shape at any angle (paper 2.3; spec-verdicts.md).
+/* shape.c - naming an object by its shape at any angle (paper 2.3; doc/verdicts.md).
  * CONTROLLER SIDE. The measures and their tolerances are in shape.h.
  *
  * ALGORITHM.
@@ -347,7 +347,7 @@ static int32_t empty_pieces(const uint8_t *mask, int32_t w, int32_t h)
 	return pieces;
 }
 
-/* ---- the axis-aligned rule, for the judge ---------------------------------------- */
+/* ---- the axis-aligned rule, no longer used (shape.h) ----------------------------- */
 
 /* empty_pieces and shape_classify: the rule this file had before issue 13, on the
  * squares' axis-aligned rectangle (shape.h says why it stays). */

@@ -19,7 +19,7 @@
  * rooms; tee: a wall across and one half-wall, three rooms; hall: a large open
  * room with piers (one room, however big). Doors are 2 to 8 squares wide, never
  * wider than half the smaller room beside them, so that each room "widens well
- * beyond" its door (spec-verdicts.md): N rooms is the number the judge must find.
+ * beyond" its door (doc/verdicts.md): N rooms is the number the judge must find.
  *
  * OBJECTS. A square (90%; a second one 20%), a brick (70%), an L-shape (50%), a
  * triangle (50%), up to three irregular polygons (5 to 8 corners) and clutter
@@ -456,7 +456,7 @@ static void objects(Gen *g)
 	double grow = 1.0 + gen_unit(r) * fmin(1.0, (fmin(g->w, g->h) - WORLDGEN_MIN_SIDE) / 120.0);
 	int squares = gen_chance(r, 0.9) + gen_chance(r, 0.2);
 	for (int k = 0; k < squares; k++) {
-		char name[16];
+		char name[24];
 		snprintf(name, sizeof name, "square%d", k + 1);
 		if (place(g, name, colour(g), shape_square(gen_range(r, 3, 6) * grow), 0))
 			g->has[SHAPE_SQUARE] = 1;
@@ -474,13 +474,13 @@ static void objects(Gen *g)
 		g->has[SHAPE_TRIANGLE] |= place(g, "triangle", colour(g), shape_triangle(r, gen_range(r, 2.5, 4.5) * grow), 0);
 	int odd = gen_int(r, 0, 3);
 	for (int k = 0; k < odd; k++) {
-		char name[16];
+		char name[24];
 		snprintf(name, sizeof name, "piece%d", k + 1);
 		place(g, name, colour(g), shape_irregular(r, gen_range(r, 2, 5) * grow), 0);
 	}
 	int clutter = gen_int(r, 0, (int)fmin(30, g->w * g->h / 600.0));
 	for (int k = 0; k < clutter; k++) {
-		char name[16];
+		char name[24];
 		snprintf(name, sizeof name, "bit%d", k + 1);
 		double z = gen_range(r, 1, 2.5);
 		int kind = gen_int(r, 0, 2);

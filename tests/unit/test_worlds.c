@@ -1,5 +1,5 @@
 /* test_worlds.c - every world in worlds/ loads, and its TABLE dump is the projection
- * rule applied square by square (paper 2.1; READING.md), as computed by the
+ * rule applied square by square (paper 2.1; utak(5)), as computed by the
  * independent oracle of projection_oracle.h. Run from the repository's top. */
 #include <dirent.h>
 #include <stdlib.h>

@@ -2,7 +2,7 @@
  * representation (paper 2.1) checked against Box2D's overlap test (issue 6).
  *
  * TABLETOP decides that two shapes collide when their digital representations
- * meet: some TABLE square is claimed by both (geom_project; READING.md: a square
+ * meet: some TABLE square is claimed by both (geom_project; utak(5): a square
  * belongs to a polygon when its open interior meets the polygon). The paper calls
  * this "correct to within certain limitations" (2.1). This program measures the
  * limitation. For random pairs of polygons in random poses it compares TABLETOP's

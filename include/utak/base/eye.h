@@ -10,10 +10,11 @@
  * squares": offset (ox, oy) is the unit square [ox, ox+1] x [oy, oy+1] when Utak's
  * square is [0, 1] x [0, 1].
  *
- * CELLS (READING.md). Fovea: the 64 squares at offsets -4..3, one square a cell.
- * Intermediate zone: the rest of -8..7, in 2 x 2 cells starting at even offsets
- * (48). Peripheral zone: the rest of -16..15, in 4 x 4 cells starting at multiples
- * of 4 (48). A cell is named by its lower-left square (ox, oy) and its side.
+ * CELLS (paper 2.2: 64 + 48 + 48). Fovea: the 64 squares at offsets -4..3, one
+ * square a cell. Intermediate zone: the rest of -8..7, in 2 x 2 cells starting at
+ * even offsets (48). Peripheral zone: the rest of -16..15, in 4 x 4 cells starting
+ * at multiples of 4 (48). A cell is named by its lower-left square (ox, oy) and
+ * its side.
  *
  * CELL ORDER (the order of Impression.level): the 64 foveal cells, then the 48
  * intermediate, then the 48 peripheral; within a zone, row by row from the row

@@ -4,7 +4,7 @@
  * edges the pairs of consecutive points (and last-first). Coordinates are in TABLE
  * squares: one unit is one square, square (i, j) is [i, i+1] x [j, j+1].
  *
- * The digital representation (READING.md): a square belongs to a polygon when the
+ * The digital representation (utak(5)): a square belongs to a polygon when the
  * square's open interior meets the closed polygon (its interior or its edges). A
  * polygon touching a square only along the square's border does not claim it, so
  * the axis-aligned square (10,10)-(14,14) claims exactly 16 squares. */

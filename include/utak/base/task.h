@@ -1,4 +1,5 @@
-/* task.h - the tasks of paper 2.3, read from a short form or the paper's English. CONTROLLER SIDE.
+/* task.h - the tasks of paper 2.3, read from a short form or the paper's English. BOTH SIDES
+ * (base/): the controller carries a task out, the judge checks it (doc/verdicts.md).
  *
  * The paper assumes a task arrives as a starting and a goal world model (3.1,
  * step 6) "to circumvent the handling of natural language input". Here a task is
@@ -25,7 +26,8 @@ typedef enum TaskKind {
 	TASK_PUSH_AROUND_CORNER,/* (viii) push an object around the corner */
 } TaskKind;
 
-/* Shapes the controller recognises in its world model (controller.c). */
+/* The shapes a task can name: the judge names true polygons (body/judgeshape.h),
+ * the controller the squares of its world model (mind/shape.h). */
 typedef enum Shape { SHAPE_NONE, SHAPE_SQUARE, SHAPE_BRICK, SHAPE_LSHAPE, SHAPE_TRIANGLE } Shape;
 
 /* Corners, in Utak's frame: north is +y (ahead at the first impression), east +x. */

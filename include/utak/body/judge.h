@@ -6,7 +6,7 @@
  * whether it has. Its verdict is the program's: exit status 0 or 1.
  *
  * It uses only base/ and body/ (tests/wall.test.sh has no exception for it): the
- * shared meaning is /work/spec-verdicts.md's, the code its own. Objects are named
+ * shared meaning is doc/verdicts.md's, the code its own. Objects are named
  * by judgeshape.h's rule on their TRUE polygons (exact geometry, orientation
  * free); the task's object is the object of that shape nearest Utak's starting
  * point by area centroid (ties to the earlier in the world file). Rooms, doors

@@ -1,5 +1,5 @@
 /* judgerooms.h - the judge's rooms, doors and doorways, from the verge and the walls
- * of the real TABLE (spec-verdicts.md "Rooms, doors, doorways"; paper 2.3's tasks
+ * of the real TABLE (doc/verdicts.md "Rooms, doors, doorways"; paper 2.3's tasks
  * (ii), (vi)-(viii)). SIMULATOR SIDE: its own code, sharing the controller's
  * meaning (mind/rooms.c) but none of its code; it uses only base/ and body/.
  *

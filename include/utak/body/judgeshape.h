@@ -1,5 +1,5 @@
 /* judgeshape.h - the judge's name for an object's shape, from its TRUE polygon by
- * exact geometry (spec-verdicts.md "Objects and their shapes"; paper 2.3's tasks
+ * exact geometry (doc/verdicts.md "Objects and their shapes"; paper 2.3's tasks
  * name objects by shape). SIMULATOR SIDE: independent of the controller's
  * mind/shape.c, with which it shares a meaning but no code.
  *

@@ -4,7 +4,7 @@
  * owner[y * w + x], y = 0 the south row). Each entry says who claims the square:
  * TABLE_FLOOR, TABLE_VERGE (the verge and the walls, colour B) or object k as
  * k + 1. Utak is not stored: he is a point, and his square is the one that holds
- * it (READING.md).
+ * it (utak(5), THE DIGITAL REPRESENTATION).
  *
  * INVARIANT (table_validate): every object's squares are exactly its projection;
  * no square is claimed twice; no object square is outside the verge. */

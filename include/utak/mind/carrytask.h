@@ -26,7 +26,7 @@
  * An impossible carry (no grasp, not even after a re-grasp) ends the task with the
  * planner's reason in words.
  *
- * THE GOAL REGION (the judge's meaning, /work/spec-verdicts.md, on Utak's model):
+ * THE GOAL REGION (the judge's meaning, doc/verdicts.md, on Utak's model):
  *   next room, through the door: the squares seen as floor in the rooms (rooms.h)
  *     that share a door with the room of the object's centre, less each door's
  *     doorway (the squares between the wall's two faces, and a square more on each

@@ -1,5 +1,5 @@
 /* objects.h - the objects of the world model named by shape: hypotheses and their
- * confirmation (paper 3.3, 2.3; the meaning in /work/spec-verdicts.md). CONTROLLER
+ * confirmation (paper 3.3, 2.3; the meaning in doc/verdicts.md). CONTROLLER
  * SIDE: the goals (goals.c) and the action cycle (controller.c) ask these.
  *
  * An object node's shape is read from its own squares (worldmodel_node_at) by

@@ -1,11 +1,11 @@
 /* shape.h - naming an object by its shape, at any angle: square, brick, L-shape,
- * triangle (paper 2.3; the meaning in /work/spec-verdicts.md). CONTROLLER SIDE.
+ * triangle (paper 2.3; the meaning in doc/verdicts.md). CONTROLLER SIDE.
  *
  * The tasks name objects by shape ("the square", "the brick", "the L-shaped
  * object"). The judge names the objects of the real world from their exact
  * polygons (body/judge.c); the controller names the objects of its world model
  * from the squares it believes they cover, which is all the eye gives it. Both
- * mean the same by each name (spec-verdicts.md):
+ * mean the same by each name (doc/verdicts.md):
  *   triangle      3 corners;
  *   square, brick 4 corners, all near right angles; a square when the long side is
  *                 at most 1.2 times the short one, a brick when at least 1.5 times;
@@ -106,8 +106,9 @@ Shape shape_read(const int32_t *x, const int32_t *y, int32_t n, double scale, Sh
 /* shape_of_squares(x, y, n): shape_read at the fovea's scale; SHAPE_NONE when n is 0. */
 Shape shape_of_squares(const int32_t *x, const int32_t *y, int32_t n);
 
-/* shape_classify(mask, w, h): THE OLD RULE, kept only for the judge (body/judge.c)
- * until it names shapes from the exact polygons with its own code (issue 13): the
+/* shape_classify(mask, w, h): THE OLD RULE, which the judge used until issue 13 gave
+ * it its own (body/judgeshape.h); neither the judge nor the controller calls it
+ * now, only tests/unit/test_shape.c (a candidate for removal): the
  * shape of the squares mask[y * w + x] != 0 by how full their axis-aligned
  * rectangle is (SHAPE_AXIS_FILL; a square up to SHAPE_AXIS_ASPECT), an L-shape when
  * the empty squares form one block at a corner, a triangle when 1/4 to 3/4 full

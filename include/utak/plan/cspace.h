@@ -5,7 +5,7 @@
  * A shape is translated over the grid with its REFERENCE POINT (the origin of its
  * coordinates) at a cell's centre. Cell c is free in the configuration-space grid
  * when the shape so placed covers only free cells; it covers a cell when the cell's
- * open square meets the closed shape (the digital representation of READING.md and
+ * open square meets the closed shape (the digital representation of utak(5) and
  * geom.h: touching a square along its border does not cover it). Cells outside the
  * grid count as blocked. This is the Minkowski sum of the blocked cells with the
  * reflected shape (Lozano-Perez 1983, "Spatial planning: a configuration space

@@ -1,8 +1,8 @@
 /* movingai.h - the Moving AI grid benchmark files: .map and .scen (benchmark input
  * for the paper's path-finding comparison, paper 4.1).
  *
- * Format (../shared/data/movingai/README.md; N. Sturtevant, "Benchmarks for
- * Grid-Based Pathfinding", IEEE TCIAIG 4(2), 2012):
+ * Format (https://movingai.com/benchmarks/, tests/data/README.md; N. Sturtevant,
+ * "Benchmarks for Grid-Based Pathfinding", IEEE TCIAIG 4(2), 2012):
  *   .map  - "type octile", "height H", "width W", "map", then H rows of W characters;
  *           '.' 'G' 'S' are free, '@' 'O' 'T' 'W' blocked. Row r is y = r (y grows
  *           down the file; the planner does not care). CRLF line ends are accepted.

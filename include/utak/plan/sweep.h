@@ -3,7 +3,7 @@
  * object, carry.h).
  *
  * THE RULE. A square is covered by a closed set S when the square's open interior
- * meets S: the TABLE's rule (READING.md, geom.h), which at a single pose is
+ * meets S: the TABLE's rule (utak(5), geom.h), which at a single pose is
  * geom_project itself. Covered WITHIN r (r > 0) means the closed square comes
  * nearer than r to S: the cover of S thickened by r, used where the simulator's
  * arithmetic may put the shape a rounding error away from where exact arithmetic
