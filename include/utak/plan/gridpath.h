@@ -74,7 +74,8 @@ typedef struct GridPathNode {
 	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
 	int32_t straight; /* straight steps of the best known path to the cell */
 	int32_t diagonal; /* diagonal steps of the best known path to the cell */
-	uint8_t free;     /* 1 when free; the border cells are 0 */
+	uint8_t moves;    /* the legal steps from the cell: bit d for step d of gridpath.c
+	                     (no corner cutting); 0 for blocked and border cells */
 	uint8_t from;     /* direction (0..7) of the step that reached it */
 	uint16_t run;     /* jump search: steps of the run that reached it (0: too long) */
 } GridPathNode;
