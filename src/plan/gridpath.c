@@ -19,6 +19,14 @@
  * through a stack. Measured on the 1024 x
  * 1024 maps, the buckets made the search about 1.5 times faster than one binary
  * heap and the stack about 10% more (the machine was shared: +-20% noise).
+ * Each free cell's legal steps are one byte of its node (made once by
+ * gridpath_init), so an expansion walks the set bits in order of d instead of
+ * testing eight neighbours and two corners each; with the bit scan of the buckets
+ * by ctz and growth tests inline, instructions per corner-to-corner query at 1024
+ * (callgrind, gridpath_find) fell from 438 to 337 million on the maze (688 000
+ * cells expanded, about 490 instructions each), 258 to 237 on rooms, 166 to 153 on
+ * rects, 215 to 198 on Boston_0_1024, 57 to 52 on den520d; the same paths, point
+ * for point.
  *
  * EXACT TIES: a cost is kept as two integers, straight and diagonal step counts,
  * and turned into a double by one fixed expression. Since sqrt 2 is irrational,
