@@ -32,7 +32,9 @@
  * cells expanded), the jump search 0.54 to 11.4 ms (rooms 1.3, Boston_0_1024 1.7);
  * at 4096, A* 114-542 ms and the jump search 5-104 ms. Against libtcod's A* on the
  * same problems: plain A* 8.9-28 times faster except on the maze (1.3-1.4), the jump
- * search 94-501 times except on the maze (6.7-7.4). */
+ * search 94-501 times except on the maze (6.7-7.4). Each cell's legal steps in a
+ * byte of its node (see GridPathNode.moves) cut the maze's instructions from 438 to
+ * 337 million (README, Benchmarks). */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
 
