@@ -19,6 +19,14 @@
  * through a stack. Measured on the 1024 x
  * 1024 maps, the buckets made the search about 1.5 times faster than one binary
  * heap and the stack about 10% more (the machine was shared: +-20% noise).
+ * Each free cell's legal steps are one byte of its node (made once by
+ * gridpath_init), so an expansion walks the set bits in order of d instead of
+ * testing eight neighbours and two corners each; with the bit scan of the buckets
+ * by ctz and growth tests inline, instructions per corner-to-corner query at 1024
+ * (callgrind, gridpath_find) fell from 438 to 337 million on the maze (688 000
+ * cells expanded, about 490 instructions each), 258 to 237 on rooms, 166 to 153 on
+ * rects, 215 to 198 on Boston_0_1024, 57 to 52 on den520d; the same paths, point
+ * for point.
  *
  * EXACT TIES: a cost is kept as two integers, straight and diagonal step counts,
  * and turned into a double by one fixed expression. Since sqrt 2 is irrational,
@@ -62,6 +70,20 @@
 #define GRIDPATH_PAGE 4096
 #define GRIDPATH_WORDS (GRIDPATH_PAGE / 64)
 
+/* gridpath_ctz64(bits): the index of the lowest set bit of bits != 0 (one
+ * instruction where the compiler has it; the loop cost a tenth of the maze's A*). */
+static inline int gridpath_ctz64(uint64_t bits)
+{
+#if defined(__GNUC__)
+	return __builtin_ctzll(bits);
+#else
+	int i = 0;
+	while (!((bits >> i) & 1))
+		i++;
+	return i;
+#endif
+}
+
 /* The 8 steps: 0..3 straight (E, N, W, S), 4..7 diagonal (NE, NW, SW, SE); a
  * diagonal d = 4 + k lies between straight steps k and (k + 1) mod 4. "N" is +y. */
 static const int8_t gridpath_dx[8] = {1, 0, -1, 0, 1, -1, -1, 1};
@@ -97,9 +119,25 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 	for (int32_t y = 0; y < grid->h; y++)
 		for (int32_t x = 0; x < grid->w; x++) {
 			uint8_t f = grid->cells[(size_t)y * grid->w + x] == GRID_FREE;
-			s->node[(size_t)(y + 1) * pw + (x + 1)].free = f;
 			s->rows[(size_t)(y + 1) * pw + (x + 1)] = f;
 			s->cols[(size_t)(x + 1) * ph + (y + 1)] = f;
+		}
+	/* each free cell's legal steps, so that an expansion tests one byte, not 8 */
+	for (int32_t y = 1; y <= grid->h; y++)
+		for (int32_t x = 1; x <= grid->w; x++) {
+			const size_t c = (size_t)y * pw + x;
+			if (!s->rows[c])
+				continue;
+			unsigned m = 0;
+			for (int d = 0; d < 4; d++)
+				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]] << d;
+			for (int k = 0; k < 4; k++) {
+				const int d = 4 + k;
+				if ((m >> k & 1) && (m >> ((k + 1) & 3) & 1) &&
+				    s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]])
+					m |= 1u << d;
+			}
+			s->node[c].moves = (uint8_t)m;
 		}
 }
 
@@ -151,24 +189,30 @@ static inline int64_t gridpath_bucket_of(const GridPathSearch *s, double f)
 	return rel < (double)s->bucket_now ? s->bucket_now : (int64_t)rel;
 }
 
+/* gridpath_room(p, count, cap): p with room for one more entry. The test is inline,
+ * the call only when full (a call per push was a tenth of the maze's A*). */
+static inline GridPathOpen *gridpath_room(GridPathOpen *p, int count, int *cap)
+{
+	return count < *cap ? p : util_grow(p, cap, count + 1, sizeof *p);
+}
+
 /* gridpath_file(s, e, b): e into bucket b of the page, unsorted (b is not current). */
-static void gridpath_file(GridPathSearch *s, GridPathOpen e, int64_t b)
+static inline void gridpath_file(GridPathSearch *s, GridPathOpen e, int64_t b)
 {
 	int slot = (int)(b - s->page_base);
 	GridPathBucket *k = &s->bucket[slot];
-	k->e = util_grow(k->e, &k->cap, k->count + 1, sizeof *k->e);
+	k->e = gridpath_room(k->e, k->count, &k->cap);
 	k->e[k->count++] = e;
 	s->nonempty[slot / 64] |= (uint64_t)1 << (slot % 64);
 }
 
 /* gridpath_push: files e in its bucket; in the current one, by heap insertion; past
  * the page, in the overflow. */
-static void gridpath_push(GridPathSearch *s, GridPathOpen e)
+static inline void gridpath_push(GridPathSearch *s, GridPathOpen e)
 {
 	int64_t b = gridpath_bucket_of(s, e.f);
 	if (b >= s->page_base + GRIDPATH_PAGE) {
-		s->overflow = util_grow(s->overflow, &s->overflow_cap, s->overflow_count + 1,
-		                        sizeof *s->overflow);
+		s->overflow = gridpath_room(s->overflow, s->overflow_count, &s->overflow_cap);
 		s->overflow[s->overflow_count++] = e;
 		return;
 	}
@@ -178,7 +222,7 @@ static void gridpath_push(GridPathSearch *s, GridPathOpen e)
 	}
 	int slot = (int)(b - s->page_base);
 	GridPathBucket *k = &s->bucket[slot];
-	k->e = util_grow(k->e, &k->cap, k->count + 1, sizeof *k->e);
+	k->e = gridpath_room(k->e, k->count, &k->cap);
 	s->nonempty[slot / 64] |= (uint64_t)1 << (slot % 64);
 	int i = k->count++;
 	while (i > 0) {
@@ -201,10 +245,7 @@ static int gridpath_next_slot(const GridPathSearch *s, int slot)
 			bits &= ~(uint64_t)0 << (slot % 64);
 		if (bits == 0)
 			continue;
-		int i = 0;
-		while (!((bits >> i) & 1))
-			i++;
-		return w * 64 + i;
+		return w * 64 + gridpath_ctz64(bits);
 	}
 	return GRIDPATH_PAGE;
 }
@@ -514,8 +555,7 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
 			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
 			if (ne.f == e.f) {
-				s->stack = util_grow(s->stack, &s->stack_cap, s->stack_count + 1,
-				                     sizeof *s->stack);
+				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
 				s->stack[s->stack_count++] = ne;
 			} else
 				gridpath_push(s, ne);
@@ -567,7 +607,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		return GRIDPATH_BAD_ENDPOINT;
 	const int32_t pw = s->pw;
 	const int32_t start = (sy + 1) * pw + (sx + 1), goal = (gy + 1) * pw + (gx + 1);
-	if (!s->node[start].free || !s->node[goal].free)
+	if (!s->rows[start] || !s->rows[goal])
 		return GRIDPATH_BAD_ENDPOINT;
 
 	if (s->method == GRIDPATH_JUMP)
@@ -579,7 +619,6 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	gridpath_next_round(s);
 	const uint32_t open_mark = 2 * s->round, closed_mark = 2 * s->round + 1;
 	GridPathNode *node = s->node;
-	const uint8_t *rows = s->rows;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
 
 	gridpath_open_reset(s);
@@ -614,26 +653,15 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			break;
 		}
 		int32_t cx = c % pw, cy = c / pw;
-		uint8_t straight_free[4];
-		for (int d = 0; d < 8; d++) {
+		/* the legal steps from one byte (gridpath_init), in order of d as before:
+		 * the order of pushes decides ties, and so the path */
+		for (unsigned m = nc->moves; m; m &= m - 1) {
+			const int d = gridpath_ctz64(m);
 			int32_t n = c + offset[d];
 			GridPathNode *nn = &node[n];
-			int32_t ns = nc->straight, nd = nc->diagonal;
-			/* free from the byte grid (a sixteenth of node's lines in cache): only
-			 * free neighbours touch their node */
-			if (d < 4) {
-				straight_free[d] = rows[n];
-				if (!straight_free[d])
-					continue;
-				ns++;
-			} else {
-				/* The no-corner-cutting rule: both orthogonal neighbours free. */
-				if (!straight_free[d - 4] || !straight_free[(d - 3) & 3] || !rows[n])
-					continue;
-				nd++;
-			}
 			if (nn->mark == closed_mark)
 				continue;
+			int32_t ns = nc->straight + (d < 4), nd = nc->diagonal + (d >= 4);
 			double ng = gridpath_cost(ns, nd);
 			if (nn->mark == open_mark &&
 			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
@@ -648,8 +676,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
 			if (ne.f == e.f) {
 				/* As good as the best open entry: expand it next, no heap. */
-				s->stack = util_grow(s->stack, &s->stack_cap, s->stack_count + 1,
-				                     sizeof *s->stack);
+				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
 				s->stack[s->stack_count++] = ne;
 			} else
 				gridpath_push(s, ne);

@@ -33,7 +33,12 @@
  *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
  *    path); k paths O(k L) such searches for routes of L arcs.
  *
- * MEASURED  by bench/skelbench.c on 1024 x 1024 (CPU time, best of 3): build 2.8-3.8
+ * MEASURED  instructions of a rebuild on 1024 x 1024 (callgrind, pathgraph_build on the
+ *    bench-compare grids): the vertex scan a word of eight cells at a time, the chain
+ *    walk written out and the clearing of the last build's cells alone took them from
+ *    13.9 to 5.9 million on rooms, 15.5 to 6.9 on rects, 59.8 to 31.0 on the maze,
+ *    11.6 to 4.6 on Boston_0_1024, 9.1 to 3.2 on den520d (the same graph, cell for
+ *    cell). Earlier, by bench/skelbench.c (CPU time, best of 3): build 2.8-3.8
  *    ms (rooms, random rectangles), 10.6 ms (maze: 250 000 skeleton cells); a corner
  *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
@@ -59,9 +64,10 @@ typedef struct IntList {
 	int count, cap;
 } IntList;
 
-static void intlist_push(IntList *l, int32_t x)
+static inline void intlist_push(IntList *l, int32_t x)
 {
-	l->v = util_grow(l->v, &l->cap, l->count + 1, sizeof *l->v);
+	if (l->count == l->cap) /* the call only when full: the walks push every cell */
+		l->v = util_grow(l->v, &l->cap, l->count + 1, sizeof *l->v);
 	l->v[l->count++] = x;
 }
 
@@ -106,6 +112,15 @@ struct PathgraphScratch {
 	IntList walk_s, walk_d; /* S to S' and D to D' walks when out of sight */
 	IntList cells;          /* the route's cells, while making the polyline */
 	int64_t expanded;
+	/* Kept between builds of a grid of one size (pathgraph_build): the junction
+	 * sets' parent directions (w h bytes, zero but on the cells of built_vcells)
+	 * and every vertex cell of the last build, so that the next build clears
+	 * cell_ref and toward on those cells and the edges' cells alone instead of
+	 * the whole grid (4 + 1 bytes a cell: a fifth of a build on 1024 x 1024). */
+	uint8_t *toward;
+	size_t toward_cells;
+	IntList built_vcells;
+	bool built_valid; /* cell_ref is -1 outside built_vcells and the edges' cells */
 };
 
 /* ---------------------------------------------------------------- the line test */
@@ -187,6 +202,8 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->walk_s.v);
 	free(sc->walk_d.v);
 	free(sc->cells.v);
+	free(sc->toward);
+	free(sc->built_vcells.v);
 	free(sc);
 }
 
@@ -349,18 +366,27 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb, int3
 		b->cells.v[i] = b->cells.v[j];
 		b->cells.v[j] = t;
 	}
+	const int32_t w = pg->w, wh = pg->w * pg->h;
+	const uint8_t *on = b->s->on;
 	int32_t prev = c, cur = nb, x = nb_x;
 	while (pg->cell_ref[cur] == PATHGRAPH_REF_NONE) {
 		pg->cell_ref[cur] = PATHGRAPH_REF_CHAIN;
 		b->chain_cells++;
 		intlist_push(&b->cells, cur);
+		/* the first skeleton neighbour other than prev, east north west south
+		 * (builder_neighbour's order, written out: a call per direction was a
+		 * third of the walk) */
 		int32_t next = -1, next_x = x;
-		for (int d = 0; d < 4 && next < 0; d++) {
-			int32_t q = builder_neighbour(b, cur, x, d);
-			if (q >= 0 && q != prev) {
-				next = q;
-				next_x = x + PATHGRAPH_DX[d];
-			}
+		if (x + 1 < w && on[cur + 1] && cur + 1 != prev) {
+			next = cur + 1;
+			next_x = x + 1;
+		} else if (cur + w < wh && on[cur + w] && cur + w != prev) {
+			next = cur + w;
+		} else if (x > 0 && on[cur - 1] && cur - 1 != prev) {
+			next = cur - 1;
+			next_x = x - 1;
+		} else if (cur >= w && on[cur - w] && cur - w != prev) {
+			next = cur - w;
 		}
 		prev = cur;
 		cur = next;
@@ -372,11 +398,60 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb, int3
 	builder_add_edge(b, v, u, first);
 }
 
+/* builder_vertex_at(b, i, d): the vertex whose first cell is i, of degree d != 2. */
+static void builder_vertex_at(Builder *b, int32_t i, int d)
+{
+	intlist_push(&b->vstart, b->vcells.count);
+	if (d >= 3) {
+		builder_junction_set(b, i);
+	} else {
+		builder_add_vertex(b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+		intlist_push(&b->vcells, i);
+	}
+}
+
+/* Eight cells a word in the vertex scan where the compiler has bit-scan builtins
+ * and stores bytes little-end first (as gridpath.c); elsewhere cell by cell. */
+#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define PATHGRAPH_SCAN_WORDS 1
+static inline uint64_t pathgraph_load8(const uint8_t *p)
+{
+	uint64_t v;
+	memcpy(&v, p, sizeof v);
+	return v;
+}
+#else
+#define PATHGRAPH_SCAN_WORDS 0
+#endif
+
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 {
 	/* keep the query scratch, and the cell map of a grid of the same size */
+	const size_t n = (size_t)s->w * (size_t)s->h;
+	if (!pg->scratch)
+		pg->scratch = util_alloc(1, sizeof *pg->scratch);
 	struct PathgraphScratch *scratch = pg->scratch;
 	int32_t *cell_ref = pg->cell_ref && pg->w == s->w && pg->h == s->h ? pg->cell_ref : NULL;
+	const bool clear_listed = cell_ref && scratch->built_valid && scratch->toward_cells == n;
+	if (clear_listed) {
+		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
+		for (int32_t k = 0; k < pg->cell_count; k++)
+			cell_ref[pg->cells[k]] = PATHGRAPH_REF_NONE;
+		for (int k = 0; k < scratch->built_vcells.count; k++) {
+			cell_ref[scratch->built_vcells.v[k]] = PATHGRAPH_REF_NONE;
+			scratch->toward[scratch->built_vcells.v[k]] = 0;
+		}
+	} else if (cell_ref) {
+		memset(cell_ref, 0xff, n * sizeof *cell_ref); /* all PATHGRAPH_REF_NONE */
+	}
+	if (scratch->toward_cells != n || !scratch->toward) {
+		free(scratch->toward);
+		scratch->toward = util_alloc(n, 1);
+		scratch->toward_cells = n;
+	} else if (!clear_listed) {
+		memset(scratch->toward, 0, n);
+	}
+	scratch->built_valid = false;
 	pg->scratch = NULL;
 	if (cell_ref)
 		pg->cell_ref = NULL;
@@ -386,11 +461,15 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	pg->h = s->h;
 	pg->grid = g;
 	pg->skeleton = s;
-	const size_t n = (size_t)s->w * (size_t)s->h;
-	pg->cell_ref = cell_ref ? cell_ref : util_alloc(n + 1, sizeof *pg->cell_ref);
-	memset(pg->cell_ref, 0xff, n * sizeof *pg->cell_ref); /* all PATHGRAPH_REF_NONE */
+	if (!cell_ref) {
+		cell_ref = util_alloc(n + 1, sizeof *pg->cell_ref);
+		memset(cell_ref, 0xff, n * sizeof *cell_ref); /* all PATHGRAPH_REF_NONE */
+	}
+	pg->cell_ref = cell_ref;
 	Builder b = {.pg = pg, .s = s};
-	b.toward = util_alloc(n, 1);
+	b.toward = scratch->toward;
+	b.vcells = scratch->built_vcells; /* its memory, reused */
+	b.vcells.count = 0;
 
 	/* (1) vertices, in row-major order of their first cell. Most cells are off the
 	 * skeleton: the scan skips eight at a time where they are all zero; and most
@@ -400,11 +479,35 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 		const uint8_t *below = y > 0 ? on - pg->w : NULL;
 		const uint8_t *above = y + 1 < pg->h ? on + pg->w : NULL;
 		for (int32_t x = 0; x < pg->w;) {
-			uint64_t eight;
-			if (x + 8 <= pg->w && (memcpy(&eight, on + x, 8), eight == 0)) {
+#if PATHGRAPH_SCAN_WORDS
+			/* eight cells a word, inside the row: the degrees of all eight as
+			 * byte sums (each at most 4, so no carries), and only the cells of
+			 * degree other than 2 visited below */
+			if (x >= 1 && x + 9 <= pg->w) {
+				const uint64_t ones = 0x0101010101010101ULL;
+				uint64_t here = pathgraph_load8(on + x);
+				if (here == 0) {
+					x += 8;
+					continue;
+				}
+				uint64_t deg = pathgraph_load8(on + x - 1) + pathgraph_load8(on + x + 1) +
+				               (below ? pathgraph_load8(below + x) : 0) +
+				               (above ? pathgraph_load8(above + x) : 0);
+				uint64_t t = deg ^ (2 * ones); /* a byte nonzero: degree not 2 */
+				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
+				while (cand) {
+					const int32_t cx = x + __builtin_ctzll(cand) / 8;
+					cand &= cand - 1;
+					const int32_t i = y * pg->w + cx;
+					if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
+						builder_vertex_at(&b, i, on[cx - 1] + on[cx + 1] +
+						                             (below && below[cx]) +
+						                             (above && above[cx]));
+				}
 				x += 8;
 				continue;
 			}
+#endif
 			if (!on[x]) {
 				x++;
 				continue;
@@ -412,16 +515,8 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 			int d = (x > 0 && on[x - 1]) + (x + 1 < pg->w && on[x + 1]) +
 			        (below && below[x]) + (above && above[x]);
 			int32_t i = y * pg->w + x;
-			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE) {
-				intlist_push(&b.vstart, b.vcells.count);
-				if (d >= 3) {
-					builder_junction_set(&b, i);
-				} else {
-					builder_add_vertex(
-					    &b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
-					intlist_push(&b.vcells, i);
-				}
-			}
+			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE)
+				builder_vertex_at(&b, i, d);
 			x++;
 		}
 	}
@@ -498,8 +593,8 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 			pg->incident[pg->incident_start[c] + fill[c]++] = e;
 	}
 	free(fill);
-	free(b.toward);
-	free(b.vcells.v);
+	scratch->built_vcells = b.vcells;
+	scratch->built_valid = true;
 	free(b.vstart.v);
 }
 
