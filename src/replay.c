@@ -26,6 +26,7 @@
 
 #include "utak/base/eye.h"
 #include "utak/base/util.h"
+#include "utak/mind/carrytask.h"
 #include "utak/mind/screen.h"
 #include "utak/mind/worldmodel.h"
 
@@ -630,12 +631,35 @@ static void screen_text(Text *t, const Controller *c)
 	text_puts(t, "\"}");
 }
 
-/* carry_text(t, c): the planned poses of a carried object (replay.h, carry): the
- * push planner's, at Utak's believed point and each waypoint still ahead, without
+/* carry_text(t, c): the planned poses of a carried object (replay.h, carry). For
+ * the tasks (vi)-(ix), the carry planner's (carrytask.h): its own outline of the held
+ * object about Utak's believed point, then the pose after each command still ahead,
+ * a turn turning the object about Utak's point (paper 3.6). Otherwise the push
+ * planner's, at Utak's believed point and each waypoint still ahead, without
  * turning; the footprint is the held node's rings about Utak's point. */
 static void carry_text(Text *t, const Controller *c)
 {
 	const WorldModel *m = &c->model;
+	const CarryTask *ct = c->carry;
+	if (ct && c->phase == PHASE_PUSH && ct->have_carry && ct->held.count > 2) {
+		text_puts(t, ",\n \"carry\": {\"footprint\": [[");
+		for (int32_t i = 0; i < ct->held.count; i++) {
+			if (i)
+				text_putc(t, ',');
+			text_point(t, vec2_sub(ct->held.v[i], m->utak));
+		}
+		text_puts(t, "]], \"poses\": [");
+		text_pose(t, m->utak, 0);
+		double theta = 0;
+		for (int i = ct->next; i < ct->count; i++) {
+			if (ct->cmd[i].kind == MOTOR_TURN)
+				theta += ct->cmd[i].deg;
+			text_putc(t, ',');
+			text_pose(t, ct->expect[i], theta);
+		}
+		text_puts(t, "]}");
+		return;
+	}
 	if (c->phase != PHASE_PUSH || !c->have_plan || c->route.count == 0)
 		return;
 	int32_t held = -1;

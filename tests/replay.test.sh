@@ -4,12 +4,15 @@
 # Without a browser: the page's data is JSON with one frame per cycle printed plus
 # the start, each frame's trace line the one utak printed for that cycle; the page
 # names no external resource; a TABLE of 4096 x 4096 costs a page of the same order
-# as a small one (its size grows with the run, not the TABLE's area); an --act run
+# as a small one (its size grows with the run, not the TABLE's area); in a carry
+# that turns (worlds/lshape-turn.w), every trace line whole, plan lines too, and the
+# held object's planned poses are the printed plan's pushes and turns; an --act run
 # has a frame per command; a page that cannot be written is exit status 2 and one
 # line "utak: FILE: reason".
 # In a browser (tests/browser/replay.mjs, headless Chromium driven by
 # playwright-core): the page of the paper's task (v) in worlds/room.w loads with no
-# console error and no request, steps cycle by cycle, plays, and its TABLE differs
+# console error and no request, steps cycle by cycle (each with its trace line and
+# the objects believed then, as the data has them), plays, and its TABLE differs
 # between the first and last frame where Utak started and ended. Without chromium or
 # the node module this part is skipped (exit 77), saying so, except in CI (CI set),
 # where it fails: .ci/run installs both (make browser-deps).
@@ -42,6 +45,43 @@ assert any("carry" in f for f in d["frames"]), "no carried poses in a push"
 # Self-contained: no external script, style sheet, font, image or fetch.
 for bad in ("<script src", "<link", "@import", "url(http", "fetch(", "XMLHttpRequest", "src=\"http"):
     assert bad not in page, bad
+PY
+
+# A carry that turns (task (ix)): each cycle's trace line is all utak printed for it,
+# the structured plan's lines too; a frame holding the object has its planned poses,
+# and from pose to pose they are the commands of the plan printed last (a push moves
+# the pose by its vector, a turn turns it about Utak's point by its degrees).
+"$UTAK" --html "$tmp/carry.html" worlds/lshape-turn.w "push lshape next-room" >"$tmp/carry.txt"
+sh tests/replay-data.sh "$tmp/carry.html" >"$tmp/carry.json"
+python3 - "$tmp/carry.json" "$tmp/carry.txt" <<'PY'
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+blocks = []
+for l in open(sys.argv[2]).read().splitlines():
+    if re.match(r"cycle \d+: ", l): blocks.append(l)
+    elif blocks and l.startswith("  "): blocks[-1] += "\n" + l  # the cycle's plan
+    elif blocks: break  # the TABLE at the end
+assert len(d["frames"]) == len(blocks) + 1, (len(d["frames"]), len(blocks))
+plan, checked, turned = None, 0, False
+for k, block in enumerate(blocks, 1):
+    assert d["frames"][k]["line"] == block, (k, d["frames"][k]["line"], block)
+    m = re.search(r"carry: ([^(]*)\(", block)
+    if m:
+        plan = []
+        for cmd in m.group(1).split(";"):
+            w = cmd.split()
+            if w and w[0] == "push": plan.append((float(w[1]), float(w[2]), 0.0))
+            elif w and w[0] == "turn": plan.append((0.0, 0.0, float(w[1])))
+    f = d["frames"][k]
+    if "carry" not in f or d["frames"][k]["phase"] != "push": continue
+    poses = f["carry"]["poses"]
+    steps = [(b[0] - a[0], b[1] - a[1], b[2] - a[2]) for a, b in zip(poses[1:], poses[2:])]
+    assert plan and len(steps) < len(plan), (k, poses, plan)
+    want = plan[len(plan) - len(steps):]
+    assert all(abs(x - y) < 0.02 for s, t in zip(steps, want) for x, y in zip(s, t)), (k, steps, want)
+    checked += 1
+    turned = turned or any(s[2] != 0 for s in steps)
+assert checked >= 3 and turned, (checked, turned)
 PY
 
 # A large TABLE: the page grows with the run, not the TABLE's area.

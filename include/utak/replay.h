@@ -44,7 +44,8 @@
  *                      fovea; 'u'/'U' known without being seen)
  *     model            Utak's believed point, the last accommodation, and the
  *                      nodes of the tree with rings and confidences (worldmodel.h);
- *                      left out when the same as in the frame before
+ *                      left out when the same as in the frame before; a node the
+ *                      same as one of the frame before is its index in that list
  *     screen           {x0, y0, w, h, cells}: the screen as step 12 saw it (codes
  *                      '.' space, '?' unknown, '#' verge or wall, 'o' object, 'h'
  *                      the held object, 'x' space and 'z' unknown that the planner
@@ -54,9 +55,11 @@
  *                      none) and the waypoint being walked to
  *     carry            for a carried object: {footprint: rings about the pose's
  *                      point, poses: [[x, y, theta degrees], ...]} in the model
- *                      frame. The push planner carries without turning (theta 0),
- *                      at each waypoint still ahead; a planner that turns what it
- *                      carries fills in the same list.
+ *                      frame: the object now, then after each command still
+ *                      ahead. The push planner's (task (v)) go without turning
+ *                      (theta 0), one at each waypoint; the carry planner's (tasks
+ *                      (vi)-(ix), carrytask.h) follow its pushes and its turns
+ *                      about Utak's point (theta summed).
  *   PLAN         {cycle, step ("7", "9" or "13"), planner, x0, y0, w, h (the grid
  *                 planned on, model squares), ok, goal, exploring, vertices [[i, j,
  *                 kind]], edges [[v0, v1, i, j, steps]] (the chain from cell (i, j)
