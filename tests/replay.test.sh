@@ -47,6 +47,60 @@ for bad in ("<script src", "<link", "@import", "url(http", "fetch(", "XMLHttpReq
     assert bad not in page, bad
 PY
 
+# The world model of every frame against the one utak dumps for that cycle (-v
+# --dump model): each node's rings, vertex by vertex, however the page wrote them
+# (whole, as the index of the same node a frame before, or as the changes to it).
+# The page leaves out the floor's holes that are objects' outlines: its rings must
+# be the dump's in order, some skipped, an object's all of them.
+"$UTAK" -v --dump model --html "$tmp/dump.html" worlds/room.w "push square ne-corner" >"$tmp/dump.txt"
+sh tests/replay-data.sh "$tmp/dump.html" >"$tmp/dump.json"
+python3 - "$tmp/dump.json" "$tmp/dump.txt" <<'PY'
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+dumps, node, ring = [], None, None
+for l in open(sys.argv[2]):
+    if l.startswith("world model: "): dumps.append({})
+    elif m := re.match(r"\s*node \d+ (\S+) ", l):
+        node = [] if m.group(1) == "$org" else dumps[-1].setdefault(m.group(1), [])
+    elif m := re.match(r"\s*(boundary|hole) \d+ vertices:", l):
+        ring = {"hole": m.group(1) == "hole", "v": [], "beyond": ""}
+        node.append(ring)
+    elif m := re.match(r"\s*\((\S+), (\S+)\) conf \S+, segment conf (\S+) beyond (\w)", l):
+        ring["v"].append([float(m.group(1)), float(m.group(2)), float(m.group(3))])
+        ring["beyond"] += m.group(4)  # o(ccupied), u(nknown), f(loor)
+assert len(dumps) == len(d["frames"]), (len(dumps), len(d["frames"]))
+before, nodes, spliced = [], [], 0
+def same_ring(a, b):
+    return a["hole"] == b["hole"] and len(a["v"]) == len(b["v"]) and a["beyond"] == b["beyond"] and all(
+        abs(p[0] - q[0]) < 0.006 and abs(p[1] - q[1]) < 0.006 and abs(p[2] - q[2]) < 0.051 for p, q in zip(a["v"], b["v"]))
+for k, f in enumerate(d["frames"]):
+    if "model" in f:
+        nodes = []
+        for n in f["model"]["nodes"]:
+            if isinstance(n, int): n = before[n]
+            elif "like" in n:
+                spliced += 1
+                like = before[n["like"]]
+                for r in n["rings"]:
+                    if "from" in r:
+                        o, p, q = like["rings"][r["from"][0]], r["from"][1], r["from"][2]
+                        r["v"] = o["v"][:p] + r["v"] + o["v"][len(o["v"]) - q:]
+                        r["beyond"] = o["beyond"][:p] + r["beyond"] + o["beyond"][len(o["beyond"]) - q:]
+            nodes.append(n)
+        before = nodes
+    assert sorted(n["name"] for n in nodes) == sorted(dumps[k]), (k, [n["name"] for n in nodes], list(dumps[k]))
+    for n in nodes:
+        want, i = dumps[k][n["name"]], 0
+        for r in n["rings"]:
+            while i < len(want) and not same_ring(r, want[i]):
+                assert n["kind"] == "floor", (k, n["name"], "a ring differs")
+                i += 1
+            assert i < len(want), (k, n["name"], "a ring not in the dump")
+            i += 1
+        assert n["kind"] == "floor" or i == len(want), (k, n["name"], "rings missing")
+assert spliced > 20, spliced
+PY
+
 # A carry that turns (task (ix)): each cycle's trace line is all utak printed for it,
 # the structured plan's lines too; a frame holding the object has its planned poses,
 # and from pose to pose they are the commands of the plan printed last (a push moves

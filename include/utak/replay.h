@@ -45,7 +45,12 @@
  *     model            Utak's believed point, the last accommodation, and the
  *                      nodes of the tree with rings and confidences (worldmodel.h);
  *                      left out when the same as in the frame before; a node the
- *                      same as one of the frame before is its index in that list
+ *                      same as one of the frame before is its index in that list;
+ *                      one that changed, when shorter so, is its changes to the
+ *                      node of the same object there: "like": its index, and each
+ *                      ring that both have "from": [k, p, q]: the first p and the
+ *                      last q vertices (and beyond codes) are those of ring k of
+ *                      node "like", "v" and "beyond" the ones between
  *     screen           {x0, y0, w, h, cells}: the screen as step 12 saw it (codes
  *                      '.' space, '?' unknown, '#' verge or wall, 'o' object, 'h'
  *                      the held object, 'x' space and 'z' unknown that the planner
@@ -72,9 +77,10 @@
  *                 character, a run of n > 1 the same written as the character and n
  *
  * SIZE. The TABLE is written once, by runs, and after that only where an object
- * moved; the belief map only where it changed; a screen only when it differs from
- * the frame before. So a page grows with the run (about 2 to 4 kB a cycle) and the
- * TABLE's area costs only its runs.
+ * moved; the belief map only where it changed; a model node by the vertices that
+ * changed (the floor's outline grows with what Utak has seen, a few vertices a
+ * cycle); a screen only when it differs from the frame before. So a page grows with
+ * the run (about 2 to 6 kB a cycle) and the TABLE's area costs only its runs.
  *
  * MEMORY: the frames as text, a byte per evidence square of the world model
  * (WORLDMODEL_SIDE^2) and each object's polygon at the last frame. */
