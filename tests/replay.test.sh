@@ -3,8 +3,10 @@
 #
 # Without a browser: the page's data is JSON with one frame per cycle printed plus
 # the start, each frame's trace line the one utak printed for that cycle; the page
-# names no external resource; a TABLE of 4096 x 4096 costs a page of the same order
-# as a small one (its size grows with the run, not the TABLE's area); in a carry
+# names no external resource; every frame's world model, however the page wrote it,
+# is the one `-v --dump model` printed for that cycle; a TABLE of 4096 x 4096 costs
+# a page of the same order as a small one (its size grows with the run, not the
+# TABLE's area); in a carry
 # that turns (worlds/lshape-turn.w), every trace line whole, plan lines too, and the
 # held object's planned poses are the printed plan's pushes and turns; an --act run
 # has a frame per command; a page that cannot be written is exit status 2 and one
