@@ -26,6 +26,7 @@
 
 #include "utak/base/eye.h"
 #include "utak/base/util.h"
+#include "utak/mind/carrytask.h"
 #include "utak/mind/screen.h"
 #include "utak/mind/worldmodel.h"
 
@@ -60,7 +61,8 @@ static void text_reserve(Text *t, int more)
 static void text_add(Text *t, const char *s, int n)
 {
 	text_reserve(t, n);
-	memcpy(t->s + t->len, s, (size_t)n);
+	if (n > 0) /* s may be an empty Text's NULL */
+		memcpy(t->s + t->len, s, (size_t)n);
 	t->len += n;
 	t->s[t->len] = 0;
 }
@@ -164,6 +166,33 @@ static void text_run(Text *t, char c, int64_t n)
 
 /* ---- the recording ---------------------------------------------------------------- */
 
+/* A node of the world model as written (node_text): the whole of it, and its rings'
+ * vertices one by one, so that the next frame can write a ring that changed only in
+ * part as a splice of this one (replay.h, model). */
+typedef struct NodeText {
+	Text s;      /* the node as JSON */
+	Text head;   /* s up to its rings */
+	int kind, ident;
+	Text verts;  /* the written rings' vertices' texts, one after another */
+	int *start;  /* vertex v's text is verts[start[v] .. start[v + 1]) */
+	int start_cap;
+	int *first;  /* ring k's vertices are first[k] .. first[k + 1] - 1 */
+	int first_cap, rings;
+	Text beyond; /* a character per vertex (replay.h, model) */
+	Text hole;   /* a character per ring: 't' a hole, 'f' not */
+} NodeText;
+
+static void node_text_free(NodeText *nt)
+{
+	text_free(&nt->s);
+	text_free(&nt->head);
+	text_free(&nt->verts);
+	text_free(&nt->beyond);
+	text_free(&nt->hole);
+	free(nt->start);
+	free(nt->first);
+}
+
 struct Replay {
 	Text head;   /* the fields known at the start */
 	Text frames; /* the frames so far, each ending with ",\n" */
@@ -177,9 +206,9 @@ struct Replay {
 	bool scanned;
 	Polygon *shapes; /* each object's polygon */
 	int32_t object_count;
-	Text last_model, last_screen, part;
+	Text last_model, last_screen, part, part2;
 	/* The world model's nodes as text, this frame's and the last's. */
-	Text *nodes_now, *nodes_before;
+	NodeText *nodes_now, *nodes_before;
 	int nodes_now_cap, nodes_before_cap, nodes_before_count;
 	/* The decision of the cycle being recorded (replay_decided). */
 	char decided[96];
@@ -286,10 +315,11 @@ void replay_free(Replay *r)
 	text_free(&r->last_model);
 	text_free(&r->last_screen);
 	text_free(&r->part);
+	text_free(&r->part2);
 	for (int i = 0; i < r->nodes_now_cap; i++)
-		text_free(&r->nodes_now[i]);
+		node_text_free(&r->nodes_now[i]);
 	for (int i = 0; i < r->nodes_before_cap; i++)
-		text_free(&r->nodes_before[i]);
+		node_text_free(&r->nodes_before[i]);
 	free(r->nodes_now);
 	free(r->nodes_before);
 	free(r->belief);
@@ -479,11 +509,19 @@ static const char *node_kind(NodeKind k)
 	                             : "org";
 }
 
-/* node_text(t, m, node): one node of the tree with its rings (worldmodel.h). A
- * node's confidence to 2 decimals, a segment's to 1: it is drawn, not read. $floor's
- * holes that are objects' outlines are left out: the objects' rings are the same. */
-static void node_text(Text *t, const WorldModel *m, const ModelNode *node)
+/* node_text(nt, m, node): one node of the tree with its rings (worldmodel.h), into
+ * nt. A node's confidence to 2 decimals, a segment's to 1: it is drawn, not read.
+ * $floor's holes that are objects' outlines are left out: the objects' rings are
+ * the same. */
+static void node_text(NodeText *nt, const WorldModel *m, const ModelNode *node)
 {
+	Text *t = &nt->head;
+	text_clear(t);
+	text_clear(&nt->s);
+	text_clear(&nt->verts);
+	text_clear(&nt->beyond);
+	text_clear(&nt->hole);
+	nt->kind = (int)node->kind, nt->ident = (int)node->ident, nt->rings = 0;
 	text_puts(t, "{\"kind\": ");
 	text_string(t, node_kind(node->kind));
 	text_puts(t, ", \"name\": ");
@@ -500,29 +538,88 @@ static void node_text(Text *t, const WorldModel *m, const ModelNode *node)
 	text_num(t, node->rect.hi.x);
 	text_putc(t, ',');
 	text_num(t, node->rect.hi.y);
-	text_puts(t, "], \"rings\": [");
-	bool first = true;
+	text_puts(t, "]");
+	int nv = 0;
 	for (int32_t k = 0; k < node->ring_count; k++) {
 		const ModelRing *ring = &m->ring[node->first_ring + k];
 		if (node->kind == NODE_FLOOR &&
 		    worldmodel_ring_outlines_object(m, node->first_ring + k))
 			continue;
-		text_printf(t, "%s{\"hole\": %s, \"v\": [", first ? "" : ", ",
-		            ring->hole ? "true" : "false");
-		first = false;
+		nt->first = util_grow(nt->first, &nt->first_cap, nt->rings + 2, sizeof *nt->first);
+		nt->first[nt->rings++] = nv;
+		text_putc(&nt->hole, ring->hole ? 't' : 'f');
 		for (int32_t i = 0; i < ring->count; i++) {
 			const ModelVertex *v = &m->vertex[ring->first + i];
-			text_printf(t, "%s[", i ? "," : "");
-			text_num(t, v->p.x);
-			text_putc(t, ',');
-			text_num(t, v->p.y);
-			text_printf(t, ",%.1f]", v->seg_conf);
+			nt->start = util_grow(nt->start, &nt->start_cap, nv + 2, sizeof *nt->start);
+			nt->start[nv++] = nt->verts.len;
+			text_putc(&nt->verts, '[');
+			text_num(&nt->verts, v->p.x);
+			text_putc(&nt->verts, ',');
+			text_num(&nt->verts, v->p.y);
+			text_printf(&nt->verts, ",%.1f]", v->seg_conf);
+			uint8_t b = v->beyond;
+			text_putc(&nt->beyond, b == BELIEF_OCCUPIED ? 'o' : b == BELIEF_UNKNOWN ? 'u' : 'f');
+		}
+	}
+	nt->first = util_grow(nt->first, &nt->first_cap, nt->rings + 2, sizeof *nt->first);
+	nt->first[nt->rings] = nv;
+	nt->start = util_grow(nt->start, &nt->start_cap, nv + 2, sizeof *nt->start);
+	nt->start[nv] = nt->verts.len;
+	/* The whole node: its head, then each ring in full. */
+	text_add(&nt->s, nt->head.s, nt->head.len);
+	text_puts(&nt->s, ", \"rings\": [");
+	for (int k = 0; k < nt->rings; k++) {
+		int a = nt->first[k], b = nt->first[k + 1];
+		text_printf(&nt->s, "%s{\"hole\": %s, \"v\": [", k ? ", " : "",
+		            nt->hole.s[k] == 't' ? "true" : "false");
+		for (int v = a; v < b; v++) {
+			if (v > a)
+				text_putc(&nt->s, ',');
+			text_add(&nt->s, nt->verts.s + nt->start[v], nt->start[v + 1] - nt->start[v]);
+		}
+		text_puts(&nt->s, "], \"beyond\": \"");
+		text_add(&nt->s, nt->beyond.s + a, b - a);
+		text_puts(&nt->s, "\"}");
+	}
+	text_puts(&nt->s, "]}");
+}
+
+/* same_vertex(x, v, y, w): vertex v of node x is written as vertex w of node y. */
+static bool same_vertex(const NodeText *x, int v, const NodeText *y, int w)
+{
+	int n = x->start[v + 1] - x->start[v];
+	return n == y->start[w + 1] - y->start[w] && x->beyond.s[v] == y->beyond.s[w] &&
+	       memcmp(x->verts.s + x->start[v], y->verts.s + y->start[w], (size_t)n) == 0;
+}
+
+/* node_splice(t, nt, like, j): node nt written against node j of the frame before
+ * (like, the same object): "like": j, and each ring k that both have as "from": [k,
+ * p, q], its first p and last q vertices being like's ring k's, the rest in "v" and
+ * "beyond" (replay.h, model). Exploring, the floor's outline grows by a few vertices
+ * a cycle: this keeps its cost to what changed. */
+static void node_splice(Text *t, const NodeText *nt, const NodeText *like, int j)
+{
+	text_add(t, nt->head.s, nt->head.len);
+	text_printf(t, ", \"like\": %d, \"rings\": [", j);
+	for (int k = 0; k < nt->rings; k++) {
+		int a = nt->first[k], b = nt->first[k + 1], p = 0, q = 0;
+		text_printf(t, "%s{\"hole\": %s, ", k ? ", " : "", nt->hole.s[k] == 't' ? "true" : "false");
+		if (k < like->rings) {
+			int la = like->first[k], lb = like->first[k + 1];
+			while (a + p < b && la + p < lb && same_vertex(nt, a + p, like, la + p))
+				p++;
+			while (a + p + q < b && la + p + q < lb && same_vertex(nt, b - 1 - q, like, lb - 1 - q))
+				q++;
+			text_printf(t, "\"from\": [%d, %d, %d], ", k, p, q);
+		}
+		text_puts(t, "\"v\": [");
+		for (int v = a + p; v < b - q; v++) {
+			if (v > a + p)
+				text_putc(t, ',');
+			text_add(t, nt->verts.s + nt->start[v], nt->start[v + 1] - nt->start[v]);
 		}
 		text_puts(t, "], \"beyond\": \"");
-		for (int32_t i = 0; i < ring->count; i++) {
-			uint8_t b = m->vertex[ring->first + i].beyond;
-			text_putc(t, b == BELIEF_OCCUPIED ? 'o' : b == BELIEF_UNKNOWN ? 'u' : 'f');
-		}
+		text_add(t, nt->beyond.s + a + p, b - q - (a + p));
 		text_puts(t, "\"}");
 	}
 	text_puts(t, "]}");
@@ -558,34 +655,46 @@ static void record_model(Replay *r, Text *t, const WorldModel *m)
 				memset(r->nodes_now + old_cap, 0,
 				       sizeof *r->nodes_now * (size_t)(r->nodes_now_cap - old_cap));
 			}
-			Text *nt = &r->nodes_now[count++];
-			text_clear(nt);
-			node_text(nt, m, &m->node[n]);
+			node_text(&r->nodes_now[count++], m, &m->node[n]);
 		}
 	bool same = r->frame_count > 0 && count == r->nodes_before_count &&
 	            strcmp(head->s, r->last_model.s) == 0;
 	for (int i = 0; same && i < count; i++)
-		same = strcmp(r->nodes_now[i].s, r->nodes_before[i].s) == 0;
+		same = strcmp(r->nodes_now[i].s.s, r->nodes_before[i].s.s) == 0;
 	if (!same) {
 		text_puts(t, ",\n \"model\": ");
 		text_add(t, head->s, head->len);
 		for (int i = 0; i < count; i++) {
-			int before = -1;
-			for (int j = 0; j < r->nodes_before_count && before < 0; j++)
-				if (strcmp(r->nodes_now[i].s, r->nodes_before[j].s) == 0)
+			const NodeText *now = &r->nodes_now[i];
+			int before = -1, like = -1;
+			for (int j = 0; j < r->nodes_before_count && before < 0; j++) {
+				const NodeText *b = &r->nodes_before[j];
+				if (strcmp(now->s.s, b->s.s) == 0)
 					before = j;
+				else if (like < 0 && b->kind == now->kind && b->ident == now->ident)
+					like = j;
+			}
 			text_puts(t, i ? ",\n   " : "\n   ");
-			if (before >= 0)
+			if (before >= 0) {
 				text_printf(t, "%d", before);
+				continue;
+			}
+			/* The same object as one of the frame before: its changes, when shorter. */
+			Text *spliced = &r->part2;
+			text_clear(spliced);
+			if (like >= 0)
+				node_splice(spliced, now, &r->nodes_before[like], like);
+			if (like >= 0 && spliced->len < now->s.len)
+				text_add(t, spliced->s, spliced->len);
 			else
-				text_add(t, r->nodes_now[i].s, r->nodes_now[i].len);
+				text_add(t, now->s.s, now->s.len);
 		}
 		text_puts(t, "]}");
 	}
 	text_clear(&r->last_model);
 	text_add(&r->last_model, head->s, head->len);
 	/* This frame's nodes are the next frame's "before": swap the lists. */
-	Text *swap = r->nodes_before;
+	NodeText *swap = r->nodes_before;
 	int swap_cap = r->nodes_before_cap;
 	r->nodes_before = r->nodes_now, r->nodes_before_cap = r->nodes_now_cap;
 	r->nodes_now = swap, r->nodes_now_cap = swap_cap;
@@ -630,12 +739,35 @@ static void screen_text(Text *t, const Controller *c)
 	text_puts(t, "\"}");
 }
 
-/* carry_text(t, c): the planned poses of a carried object (replay.h, carry): the
- * push planner's, at Utak's believed point and each waypoint still ahead, without
+/* carry_text(t, c): the planned poses of a carried object (replay.h, carry). For
+ * the tasks (vi)-(ix), the carry planner's (carrytask.h): its own outline of the held
+ * object about Utak's believed point, then the pose after each command still ahead,
+ * a turn turning the object about Utak's point (paper 3.6). Otherwise the push
+ * planner's, at Utak's believed point and each waypoint still ahead, without
  * turning; the footprint is the held node's rings about Utak's point. */
 static void carry_text(Text *t, const Controller *c)
 {
 	const WorldModel *m = &c->model;
+	const CarryTask *ct = c->carry;
+	if (ct && c->phase == PHASE_PUSH && ct->have_carry && ct->held.count > 2) {
+		text_puts(t, ",\n \"carry\": {\"footprint\": [[");
+		for (int32_t i = 0; i < ct->held.count; i++) {
+			if (i)
+				text_putc(t, ',');
+			text_point(t, vec2_sub(ct->held.v[i], m->utak));
+		}
+		text_puts(t, "]], \"poses\": [");
+		text_pose(t, m->utak, 0);
+		double theta = 0;
+		for (int i = ct->next; i < ct->count; i++) {
+			if (ct->cmd[i].kind == MOTOR_TURN)
+				theta += ct->cmd[i].deg;
+			text_putc(t, ',');
+			text_pose(t, ct->expect[i], theta);
+		}
+		text_puts(t, "]}");
+		return;
+	}
 	if (c->phase != PHASE_PUSH || !c->have_plan || c->route.count == 0)
 		return;
 	int32_t held = -1;

@@ -295,7 +295,9 @@ static void draw_plan(FILE *f, const Canvas *cv, const Controller *c)
 static void draw_paths(FILE *f, const Canvas *cv, const World *w, const Controller *c,
                        const Vec2 *trail, int n)
 {
-	/* The path taken, an arrow at each halt giving the direction. */
+	/* The path taken, an arrow at each turn and at the end giving the direction: a
+	 * halt on a straight line (ten moves of one square west) is no corner of the
+	 * polyline, so that its arrows mark where the path bends, not crowd it. */
 	fputs("<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"7\" refY=\"5\" "
 	      "markerWidth=\"7\" markerHeight=\"7\" orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 Z\" "
 	      "fill=\"" SVG_TRAIL "\"/></marker></defs>\n",
@@ -303,8 +305,18 @@ static void draw_paths(FILE *f, const Canvas *cv, const World *w, const Controll
 	fputs("<polyline id=\"trail\" fill=\"none\" " SVG_STYLE_TRAIL
 	      " marker-mid=\"url(#arrow)\" marker-end=\"url(#arrow)\" points=\"",
 	      f);
-	for (int i = 0; i < n; i++)
+	Vec2 last = trail[0];
+	for (int i = 0; i < n; i++) {
+		if (i > 0 && trail[i].x == last.x && trail[i].y == last.y)
+			continue; /* a command that moved him nowhere */
+		if (i > 0 && i + 1 < n) {
+			Vec2 a = vec2_sub(trail[i], last), b = vec2_sub(trail[i + 1], trail[i]);
+			if (fabs(a.x * b.y - a.y * b.x) < 1e-9 && a.x * b.x + a.y * b.y > 0)
+				continue; /* straight on */
+		}
 		fprintf(f, "%s%.1f,%.1f", i ? " " : "", px(cv, trail[i].x), py(cv, trail[i].y));
+		last = trail[i];
+	}
 	fputs("\"/>\n", f);
 	/* The route he planned last, on top. */
 	if (c->route.count > 1) {

@@ -3,13 +3,18 @@
 #
 # Without a browser: the page's data is JSON with one frame per cycle printed plus
 # the start, each frame's trace line the one utak printed for that cycle; the page
-# names no external resource; a TABLE of 4096 x 4096 costs a page of the same order
-# as a small one (its size grows with the run, not the TABLE's area); an --act run
+# names no external resource; every frame's world model, however the page wrote it,
+# is the one `-v --dump model` printed for that cycle; a TABLE of 4096 x 4096 costs
+# a page of the same order as a small one (its size grows with the run, not the
+# TABLE's area); in a carry
+# that turns (worlds/lshape-turn.w), every trace line whole, plan lines too, and the
+# held object's planned poses are the printed plan's pushes and turns; an --act run
 # has a frame per command; a page that cannot be written is exit status 2 and one
 # line "utak: FILE: reason".
 # In a browser (tests/browser/replay.mjs, headless Chromium driven by
 # playwright-core): the page of the paper's task (v) in worlds/room.w loads with no
-# console error and no request, steps cycle by cycle, plays, and its TABLE differs
+# console error and no request, steps cycle by cycle (each with its trace line and
+# the objects believed then, as the data has them), plays, and its TABLE differs
 # between the first and last frame where Utak started and ended. Without chromium or
 # the node module this part is skipped (exit 77), saying so, except in CI (CI set),
 # where it fails: .ci/run installs both (make browser-deps).
@@ -42,6 +47,97 @@ assert any("carry" in f for f in d["frames"]), "no carried poses in a push"
 # Self-contained: no external script, style sheet, font, image or fetch.
 for bad in ("<script src", "<link", "@import", "url(http", "fetch(", "XMLHttpRequest", "src=\"http"):
     assert bad not in page, bad
+PY
+
+# The world model of every frame against the one utak dumps for that cycle (-v
+# --dump model): each node's rings, vertex by vertex, however the page wrote them
+# (whole, as the index of the same node a frame before, or as the changes to it).
+# The page leaves out the floor's holes that are objects' outlines: its rings must
+# be the dump's in order, some skipped, an object's all of them.
+"$UTAK" -v --dump model --html "$tmp/dump.html" worlds/room.w "push square ne-corner" >"$tmp/dump.txt"
+sh tests/replay-data.sh "$tmp/dump.html" >"$tmp/dump.json"
+python3 - "$tmp/dump.json" "$tmp/dump.txt" <<'PY'
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+dumps, node, ring = [], None, None
+for l in open(sys.argv[2]):
+    if l.startswith("world model: "): dumps.append({})
+    elif m := re.match(r"\s*node \d+ (\S+) ", l):
+        node = [] if m.group(1) == "$org" else dumps[-1].setdefault(m.group(1), [])
+    elif m := re.match(r"\s*(boundary|hole) \d+ vertices:", l):
+        ring = {"hole": m.group(1) == "hole", "v": [], "beyond": ""}
+        node.append(ring)
+    elif m := re.match(r"\s*\((\S+), (\S+)\) conf \S+, segment conf (\S+) beyond (\w)", l):
+        ring["v"].append([float(m.group(1)), float(m.group(2)), float(m.group(3))])
+        ring["beyond"] += m.group(4)  # o(ccupied), u(nknown), f(loor)
+assert len(dumps) == len(d["frames"]), (len(dumps), len(d["frames"]))
+before, nodes, spliced = [], [], 0
+def same_ring(a, b):
+    return a["hole"] == b["hole"] and len(a["v"]) == len(b["v"]) and a["beyond"] == b["beyond"] and all(
+        abs(p[0] - q[0]) < 0.006 and abs(p[1] - q[1]) < 0.006 and abs(p[2] - q[2]) < 0.051 for p, q in zip(a["v"], b["v"]))
+for k, f in enumerate(d["frames"]):
+    if "model" in f:
+        nodes = []
+        for n in f["model"]["nodes"]:
+            if isinstance(n, int): n = before[n]
+            elif "like" in n:
+                spliced += 1
+                like = before[n["like"]]
+                for r in n["rings"]:
+                    if "from" in r:
+                        o, p, q = like["rings"][r["from"][0]], r["from"][1], r["from"][2]
+                        r["v"] = o["v"][:p] + r["v"] + o["v"][len(o["v"]) - q:]
+                        r["beyond"] = o["beyond"][:p] + r["beyond"] + o["beyond"][len(o["beyond"]) - q:]
+            nodes.append(n)
+        before = nodes
+    assert sorted(n["name"] for n in nodes) == sorted(dumps[k]), (k, [n["name"] for n in nodes], list(dumps[k]))
+    for n in nodes:
+        want, i = dumps[k][n["name"]], 0
+        for r in n["rings"]:
+            while i < len(want) and not same_ring(r, want[i]):
+                assert n["kind"] == "floor", (k, n["name"], "a ring differs")
+                i += 1
+            assert i < len(want), (k, n["name"], "a ring not in the dump")
+            i += 1
+        assert n["kind"] == "floor" or i == len(want), (k, n["name"], "rings missing")
+assert spliced > 20, spliced
+PY
+
+# A carry that turns (task (ix)): each cycle's trace line is all utak printed for it,
+# the structured plan's lines too; a frame holding the object has its planned poses,
+# and from pose to pose they are the commands of the plan printed last (a push moves
+# the pose by its vector, a turn turns it about Utak's point by its degrees).
+"$UTAK" --html "$tmp/carry.html" worlds/lshape-turn.w "push lshape next-room" >"$tmp/carry.txt"
+sh tests/replay-data.sh "$tmp/carry.html" >"$tmp/carry.json"
+python3 - "$tmp/carry.json" "$tmp/carry.txt" <<'PY'
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+blocks = []
+for l in open(sys.argv[2]).read().splitlines():
+    if re.match(r"cycle \d+: ", l): blocks.append(l)
+    elif blocks and l.startswith("  "): blocks[-1] += "\n" + l  # the cycle's plan
+    elif blocks: break  # the TABLE at the end
+assert len(d["frames"]) == len(blocks) + 1, (len(d["frames"]), len(blocks))
+plan, checked, turned = None, 0, False
+for k, block in enumerate(blocks, 1):
+    assert d["frames"][k]["line"] == block, (k, d["frames"][k]["line"], block)
+    m = re.search(r"carry: ([^(]*)\(", block)
+    if m:
+        plan = []
+        for cmd in m.group(1).split(";"):
+            w = cmd.split()
+            if w and w[0] == "push": plan.append((float(w[1]), float(w[2]), 0.0))
+            elif w and w[0] == "turn": plan.append((0.0, 0.0, float(w[1])))
+    f = d["frames"][k]
+    if "carry" not in f or d["frames"][k]["phase"] != "push": continue
+    poses = f["carry"]["poses"]
+    steps = [(b[0] - a[0], b[1] - a[1], b[2] - a[2]) for a, b in zip(poses[1:], poses[2:])]
+    assert plan and len(steps) < len(plan), (k, poses, plan)
+    want = plan[len(plan) - len(steps):]
+    assert all(abs(x - y) < 0.02 for s, t in zip(steps, want) for x, y in zip(s, t)), (k, steps, want)
+    checked += 1
+    turned = turned or any(s[2] != 0 for s in steps)
+assert checked >= 3 and turned, (checked, turned)
 PY
 
 # A large TABLE: the page grows with the run, not the TABLE's area.

@@ -44,7 +44,13 @@
  *                      fovea; 'u'/'U' known without being seen)
  *     model            Utak's believed point, the last accommodation, and the
  *                      nodes of the tree with rings and confidences (worldmodel.h);
- *                      left out when the same as in the frame before
+ *                      left out when the same as in the frame before; a node the
+ *                      same as one of the frame before is its index in that list;
+ *                      one that changed, when shorter so, is its changes to the
+ *                      node of the same object there: "like": its index, and each
+ *                      ring that both have "from": [k, p, q]: the first p and the
+ *                      last q vertices (and beyond codes) are those of ring k of
+ *                      node "like", "v" and "beyond" the ones between
  *     screen           {x0, y0, w, h, cells}: the screen as step 12 saw it (codes
  *                      '.' space, '?' unknown, '#' verge or wall, 'o' object, 'h'
  *                      the held object, 'x' space and 'z' unknown that the planner
@@ -54,9 +60,11 @@
  *                      none) and the waypoint being walked to
  *     carry            for a carried object: {footprint: rings about the pose's
  *                      point, poses: [[x, y, theta degrees], ...]} in the model
- *                      frame. The push planner carries without turning (theta 0),
- *                      at each waypoint still ahead; a planner that turns what it
- *                      carries fills in the same list.
+ *                      frame: the object now, then after each command still
+ *                      ahead. The push planner's (task (v)) go without turning
+ *                      (theta 0), one at each waypoint; the carry planner's (tasks
+ *                      (vi)-(ix), carrytask.h) follow its pushes and its turns
+ *                      about Utak's point (theta summed).
  *   PLAN         {cycle, step ("7", "9" or "13"), planner, x0, y0, w, h (the grid
  *                 planned on, model squares), ok, goal, exploring, vertices [[i, j,
  *                 kind]], edges [[v0, v1, i, j, steps]] (the chain from cell (i, j)
@@ -69,9 +77,10 @@
  *                 character, a run of n > 1 the same written as the character and n
  *
  * SIZE. The TABLE is written once, by runs, and after that only where an object
- * moved; the belief map only where it changed; a screen only when it differs from
- * the frame before. So a page grows with the run (about 2 to 4 kB a cycle) and the
- * TABLE's area costs only its runs.
+ * moved; the belief map only where it changed; a model node by the vertices that
+ * changed (the floor's outline grows with what Utak has seen, a few vertices a
+ * cycle); a screen only when it differs from the frame before. So a page grows with
+ * the run (about 2 to 6 kB a cycle) and the TABLE's area costs only its runs.
  *
  * MEMORY: the frames as text, a byte per evidence square of the world model
  * (WORLDMODEL_SIDE^2) and each object's polygon at the last frame. */

@@ -7,7 +7,8 @@
 // printed (its "cycle N: ..." lines are the oracle for the page's trace lines).
 // Checks: the page loads and runs with no console error and no request beyond the
 // file itself; it has one frame per cycle printed, plus the start; stepping with the
-// arrow keys shows each cycle's own trace line; Home and End and the slider go where
+// arrow keys shows each cycle's own trace line and its world model's objects (the
+// data's own, read apart from the viewer); Home and End and the slider go where
 // they say; play advances and pause stops; and screenshots of the TABLE at the first
 // and the last frame differ around the square where Utak started and the square where
 // he ended. Prints "[PASS] name" / "[FAIL] name: why" per check; exits 1 on a failure.
@@ -18,6 +19,24 @@ import { join, resolve } from "node:path";
 const [page_path, trace_path, shots] = process.argv.slice(2);
 const executablePath = process.env.CHROMIUM || "/usr/bin/chromium";
 const trace = readFileSync(trace_path, "utf8").split("\n").filter((l) => /^cycle \d+: /.test(l));
+
+// The believed objects at each frame, read from the page's data here, apart from the
+// viewer: a node the same as one of the frame before is written as its index in that
+// frame's list (replay.h, model), and a frame without a model keeps the last one.
+const html = readFileSync(page_path, "utf8");
+const data = JSON.parse(html.slice(html.indexOf(">", html.indexOf('<script id="utak-replay-data"')) + 1,
+                                   html.indexOf("</script>", html.indexOf('<script id="utak-replay-data"'))));
+const believed = [];
+{
+	let before = [], nodes = [];
+	for (const fr of data.frames) {
+		if (fr.model) {
+			nodes = fr.model.nodes.map((n) => (typeof n === "number" ? before[n] : n));
+			before = nodes;
+		}
+		believed.push(nodes.filter((n) => n && n.kind === "object").map((n) => `${n.name} ${n.conf.toFixed(2)}`));
+	}
+}
 
 let failed = 0;
 function check(name, ok, why) {
@@ -55,14 +74,19 @@ try {
 
 	// Step through every cycle with the right arrow: each shows its own trace line.
 	const start_line = await page.textContent("#trace-line");
-	let wrong = [];
+	let wrong = [], unseen = [];
 	for (let k = 1; k <= trace.length; k++) {
 		await page.keyboard.press("ArrowRight");
 		const line = await page.textContent("#trace-line");
 		if (line !== trace[k - 1]) wrong.push(`cycle ${k}: "${line}"`);
+		const said = await page.textContent("#i-model"), n = believed[k].length;
+		if (!said.includes(`; ${n} object${n === 1 ? "" : "s"}`) || believed[k].some((o) => !said.includes(o)))
+			unseen.push(`cycle ${k}: want ${believed[k].join(", ") || "none"}, the page says "${said.split("\n")[1]}"`);
 	}
 	check("the right arrow steps cycle by cycle, each with its trace line", wrong.length === 0,
 	      wrong.slice(0, 3).join("; "));
+	check("each cycle's world model shows every object believed then, with its confidence", unseen.length === 0,
+	      unseen.slice(0, 3).join("; "));
 	await page.keyboard.press("ArrowRight"); // past the end: stays
 	check("the right arrow stops at the last cycle",
 	      (await page.textContent("#trace-line")) === trace[trace.length - 1], "moved past the end");

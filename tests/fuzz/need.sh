@@ -24,7 +24,10 @@ if [ "$(id -u)" != 0 ]; then
 fi
 echo "need.sh: installing:$missing"
 export DEBIAN_FRONTEND=noninteractive
-apt-get update -qq && apt-get install -y -qq --no-install-recommends $missing >/dev/null || {
+# Another apt-get (unattended upgrades on a fresh machine, a second job) may hold
+# dpkg's lock: wait for it up to ten minutes rather than fail at once.
+lock="-o DPkg::Lock::Timeout=600"
+apt-get $lock update -qq && apt-get $lock install -y -qq --no-install-recommends $missing >/dev/null || {
 	echo "need.sh: apt-get could not install:$missing" >&2
 	exit 1
 }
