@@ -85,7 +85,7 @@ typedef struct Pathgraph {
 	int32_t *cell_ref;                /* w * h: -1 off the skeleton, v < vertex_count for a
 	                                   * cell of vertex v, vertex_count + k for cells[k] */
 	int32_t *cell_edge;               /* cell_count: the edge each entry of cells belongs to */
-	struct PathgraphScratch *scratch; /* the queries' working space (pathgraph.c) */
+	struct PathgraphScratch *scratch; /* the queries' working space (pathfind.c; pathgraph_work.h) */
 } Pathgraph;
 
 /* A query's options. */
