@@ -106,16 +106,4 @@ Shape shape_read(const int32_t *x, const int32_t *y, int32_t n, double scale, Sh
 /* shape_of_squares(x, y, n): shape_read at the fovea's scale; SHAPE_NONE when n is 0. */
 Shape shape_of_squares(const int32_t *x, const int32_t *y, int32_t n);
 
-/* shape_classify(mask, w, h): THE OLD RULE, which the judge used until issue 13 gave
- * it its own (body/judgeshape.h); neither the judge nor the controller calls it
- * now, only tests/unit/test_shape.c (a candidate for removal): the
- * shape of the squares mask[y * w + x] != 0 by how full their axis-aligned
- * rectangle is (SHAPE_AXIS_FILL; a square up to SHAPE_AXIS_ASPECT), an L-shape when
- * the empty squares form one block at a corner, a triangle when 1/4 to 3/4 full
- * with at most three empty pieces. It does not read slanted shapes. The controller
- * does not use it. */
-#define SHAPE_AXIS_FILL 0.85
-#define SHAPE_AXIS_ASPECT 1.3
-Shape shape_classify(const uint8_t *mask, int32_t w, int32_t h);
-
 #endif
