@@ -816,7 +816,7 @@ static void table_changes(Replay *r, Text *t, const World *w, const Table *tab)
 	}
 	if (!any)
 		return;
-	/* A square belongs to a polygon that meets its interior (READING.md), so the
+	/* A square belongs to a polygon that meets its interior (utak(5), the digital representation), so the
 	 * squares the box meets, and one more for rounding, hold every change. */
 	int32_t x0 = (int32_t)floor(lx) - 1, y0 = (int32_t)floor(ly) - 1;
 	int32_t x1 = (int32_t)ceil(hx) + 1, y1 = (int32_t)ceil(hy) + 1;

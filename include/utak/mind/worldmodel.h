@@ -4,7 +4,7 @@
  *
  * FRAME. Utak's own Cartesian frame at the first impression: x to his right, y
  * ahead, which is "north" for the tasks (paper 2.3; his heading never changes in
- * this simulation, READING.md); one unit is one square; the origin is the
+ * this simulation, utak(5)); one unit is one square; the origin is the
  * lower-left corner of the square he stood on at the first impression. Model
  * square (x, y) is [x, x+1] x [y, y+1]. Every coordinate below is in this frame,
  * the "$floor frame", unless said otherwise.

@@ -4,7 +4,7 @@
  * neighbours at cost 1 and to its 4 diagonal neighbours at cost sqrt 2. A diagonal
  * step is allowed only when BOTH orthogonally adjacent cells are free (no cutting
  * past an occupied corner: the Moving AI convention, see
- * ../shared/data/movingai/README.md). The search is A* (Hart, Nilsson and Raphael
+ * movingai.com and tests/data/README.md). The search is A* (Hart, Nilsson and Raphael
  * 1968), the paper's reference [8], with the exact octile heuristic.
  *
  * Usage:
