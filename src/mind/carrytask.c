@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/rooms.h"
@@ -35,8 +36,8 @@
 #include "utak/plan/pathgraph.h"
 #include "utak/plan/skeleton.h"
 
-/* A line of sight is sampled this often (squares): finer than the thinnest wall. */
-#define CT_SIGHT_STEP 0.25
+/* A long push is cut into parts that are whole multiples of 1/CT_PART_GRAIN. */
+#define CT_PART_GRAIN 64.0
 /* Open floor for a re-grasp: every square within the object's reach plus this many
  * is free, so that Utak can walk round it to any side. */
 #define CT_OPEN_MARGIN 2
@@ -249,20 +250,6 @@ static void ct_goal_grid(const Controller *c, const Grid *space, bool open, doub
 		}
 }
 
-/* ct_sight_blocked(known, a, b): a straight line from a to b (screen units) meets a
- * square of the fixed space that is not free. */
-static bool ct_sight_blocked(const Grid *fixed, Vec2 a, Vec2 b)
-{
-	double len = hypot(b.x - a.x, b.y - a.y);
-	int32_t steps = (int32_t)ceil(len / CT_SIGHT_STEP);
-	for (int32_t t = 1; t < steps; t++) {
-		Vec2 p = vec2_add(a, vec2_scale(vec2_sub(b, a), (double)t / steps));
-		if (!grid_free_at(fixed, (int32_t)floor(p.x), (int32_t)floor(p.y)))
-			return true;
-	}
-	return false;
-}
-
 /* ct_mark_doorway(rm, d, region): the squares of door d's passage blocked in region:
  * from the run across it, along the way through, while both ends of the run meet
  * the wall's faces; and one square more each way. A slanted door: the squares
@@ -329,6 +316,13 @@ static void ct_roommap_build(const Controller *c, int32_t k, bool objects_fixed,
 	rooms_find(&r->rooms, &r->pathgraph);
 }
 
+/* ct_box_has(b, x, y, grow): cell (x, y) lies in box b (x0, y0, x1, y1, inclusive)
+ * grown by grow cells on every side. */
+static bool ct_box_has(const int32_t b[4], int32_t x, int32_t y, int32_t grow)
+{
+	return x >= b[0] - grow && x <= b[2] + grow && y >= b[1] - grow && y <= b[3] + grow;
+}
+
 /* ct_region_fix(c, rm): the goal region from this screen, fixed in the model's frame
  * (carrytask.h). Returns its squares. */
 static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
@@ -342,42 +336,66 @@ static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
 	int32_t oi, oj, count = 0;
 	if (!goals_cell_of(s, ct->object_start, &oi, &oj))
 		return 0;
+	CarryRooms cr;
+	carryroom_merge(rm, &cr);
+	int32_t room = carryroom_at(&cr, rm, oi, oj);
+	if (room < 0) {
+		carryroom_free(&cr);
+		return 0;
+	}
 	if (c->task.kind == TASK_PUSH_AROUND_CORNER) {
-		Vec2 from = screen_from_model(s, ct->object_start);
+		/* The other leg of the L-shaped corridor the object started in, past
+		 * the bend and a square more (what the eye misplaces); from the bend,
+		 * either leg past it. */
+		/* Only a room seen whole is judged: a corridor seen in part (its far
+		 * leg hidden, a wall not yet seen) may look like any shape. */
+		bool whole = true;
+		for (int32_t at = 0; at < s->w * s->h && whole; at++)
+			if (carryroom_at(&cr, rm, at % s->w, at / s->w) == room)
+				for (int q = 0; q < 4 && whole; q++)
+					whole = screen_label(s, at % s->w + (q == 0) - (q == 1), at / s->w + (q == 2) - (q == 3)) !=
+						SCREEN_UNKNOWN;
+		CarryBend b;
+		if (!whole || !carryroom_bend(&cr, rm, room, &b)) {
+			carryroom_free(&cr);
+			return 0;
+		}
+		int from = ct_box_has(b.bend, oi, oj, 0) ? -1 : ct_box_has(b.leg[0], oi, oj, 0) ? 0
+								: ct_box_has(b.leg[1], oi, oj, 0) ? 1 : -1;
 		for (int32_t j = 0; j < s->h; j++)
 			for (int32_t i = 0; i < s->w; i++) {
-				if (s->label[j * s->w + i] != SCREEN_SPACE)
-					continue;
-				bool hidden = ct_sight_blocked(&rm->known, from, vec2(i + 0.5, j + 0.5));
-				for (int corner = 0; corner < 4 && hidden; corner++)
-					hidden = ct_sight_blocked(&rm->known, from, vec2(i + (corner & 1), j + (corner >> 1)));
-				if (hidden) {
+				bool leg = from < 0 ? ct_box_has(b.leg[0], i, j, 0) || ct_box_has(b.leg[1], i, j, 0)
+						    : ct_box_has(b.leg[1 - from], i, j, 0);
+				if (s->label[j * s->w + i] == SCREEN_SPACE && carryroom_at(&cr, rm, i, j) == room && leg &&
+				    !ct_box_has(b.bend, i, j, 1))
 					ct->region.cells[j * s->w + i] = GRID_FREE;
-					count++;
-				}
 			}
-		return count;
-	}
-	int32_t room = rooms_at(&rm->rooms, oi, oj);
-	if (room < 0)
-		return 0;
-	int32_t doors[64];
-	int32_t nd = rooms_doors_of(&rm->rooms, room, doors, 64);
-	nd = nd < 64 ? nd : 64;
-	for (int32_t at = 0; at < s->w * s->h; at++) {
-		if (s->label[at] != SCREEN_SPACE)
-			continue;
-		int32_t here = rm->rooms.room[at];
-		bool next = false;
-		for (int32_t q = 0; q < nd && !next; q++) {
-			const RoomsDoor *d = &rm->rooms.doors[doors[q]];
-			next = here != room && (here == d->room_a || here == d->room_b);
+		snprintf(ct->corridor, sizeof ct->corridor,
+			 "an L-shaped corridor, legs %d and %d wide, its bend (%d, %d) to (%d, %d)",
+			 (int)(b.leg[0][2] - b.leg[0][0] + 1), (int)(b.leg[1][3] - b.leg[1][1] + 1),
+			 (int)(s->x0 + b.bend[0]), (int)(s->y0 + b.bend[1]), (int)(s->x0 + b.bend[2]),
+			 (int)(s->y0 + b.bend[3]));
+	} else {
+		/* The rooms that share a door with the object's, by the verdict's
+		 * rule (carryroom.h), less every door's doorway. */
+		for (int32_t at = 0; at < s->w * s->h; at++) {
+			if (s->label[at] != SCREEN_SPACE)
+				continue;
+			int32_t here = carryroom_at(&cr, rm, at % s->w, at / s->w);
+			bool next = false;
+			for (int32_t q = 0; q < rm->rooms.door_count && !next && here != room; q++) {
+				const RoomsDoor *d = &rm->rooms.doors[q];
+				int32_t a = cr.merged[d->room_a], bb = cr.merged[d->room_b];
+				next = cr.door[q] && ((a == room && bb == here) || (bb == room && a == here));
+			}
+			if (next)
+				ct->region.cells[at] = GRID_FREE;
 		}
-		if (next)
-			ct->region.cells[at] = GRID_FREE;
+		for (int32_t q = 0; q < rm->rooms.door_count; q++)
+			if (cr.door[q])
+				ct_mark_doorway(rm, &rm->rooms.doors[q], &ct->region);
 	}
-	for (int32_t q = 0; q < rm->rooms.door_count; q++)
-		ct_mark_doorway(rm, &rm->rooms.doors[q], &ct->region);
+	carryroom_free(&cr);
 	for (int32_t at = 0; at < s->w * s->h; at++)
 		count += ct->region.cells[at] == GRID_FREE;
 	return count;
@@ -425,11 +443,14 @@ static bool ct_survey_point(Controller *c, const int32_t *dist, const RoomMap *r
 	if (c->task.kind != TASK_PUSH_AROUND_CORNER) {
 		int32_t oi, oj;
 		goals_cell_of(s, ct->object_start, &oi, &oj);
-		int32_t room = rooms_at(&rm->rooms, oi, oj), doors[64];
-		int32_t nd = room >= 0 ? rooms_doors_of(&rm->rooms, room, doors, 64) : 0;
+		CarryRooms cr;
+		carryroom_merge(rm, &cr);
+		int32_t room = carryroom_at(&cr, rm, oi, oj);
 		double best = INFINITY;
-		for (int32_t q = 0; q < nd && q < 64; q++) {
-			const RoomsDoor *d = &rm->rooms.doors[doors[q]];
+		for (int32_t q = 0; q < rm->rooms.door_count && room >= 0; q++) {
+			const RoomsDoor *d = &rm->rooms.doors[q];
+			if (!cr.door[q] || (cr.merged[d->room_a] != room && cr.merged[d->room_b] != room))
+				continue;
 			double far = hypot(d->x - oi, d->y - oj);
 			if (far < best && dist[d->y * s->w + d->x] >= 0) {
 				best = far;
@@ -438,6 +459,7 @@ static bool ct_survey_point(Controller *c, const int32_t *dist, const RoomMap *r
 					 (int)(s->x0 + d->x), (int)(s->y0 + d->y), (int)d->width);
 			}
 		}
+		carryroom_free(&cr);
 		return ct->have_survey = best < INFINITY;
 	}
 	int32_t best = -1;
@@ -679,7 +701,9 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 			ct->stage = CARRY_STAGE_SURVEY;
 			out->found = true;
 			out->goal = ct->survey_at;
-			snprintf(ct->plan, sizeof ct->plan, "\n  plan: survey %s", ct->survey_what);
+			snprintf(ct->plan, sizeof ct->plan, "\n  plan: survey %s%s%s", ct->survey_what,
+				 c->task.kind == TASK_PUSH_AROUND_CORNER ? ", in " : "",
+				 c->task.kind == TASK_PUSH_AROUND_CORNER ? ct->corridor : "");
 			ct->plan_new = true;
 			return true;
 		}
@@ -688,7 +712,7 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		out->exploring = out->found = goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal);
 		if (!out->found)
 			snprintf(out->why, sizeof out->why, "%s",
-				 c->task.kind == TASK_PUSH_AROUND_CORNER ? "no corner to push round here: nothing out of sight of the object, and nothing left unseen"
+				 c->task.kind == TASK_PUSH_AROUND_CORNER ? "the task does not apply: the object's room is no L-shaped corridor, and nothing is left unseen"
 									 : "no door out of the object's room, and nothing left unseen");
 		return true;
 	}
@@ -841,10 +865,15 @@ bool carrytask_decide(Controller *c, MotorCommand *cmd)
 		double len = hypot(next->dx, next->dy);
 		if (len > CONTROLLER_MAX_LEG) {
 			/* A long leg in parts, so that what is seen on the way can change
-			 * the plan: every part lies on the checked straight push. */
+			 * the plan: every part lies on the checked straight push (within
+			 * 1/CT_PART_GRAIN of it). The parts are whole multiples of
+			 * 1/CT_PART_GRAIN, exact in binary, so that they add up to the leg
+			 * exactly: a square pushed by 1.35 + 1.35 + 1.35 + 0.95 ends a
+			 * rounding error past the grid line and, by the TABLE's rule, meets
+			 * a row of squares more, too many for a door just as wide as it. */
 			double f = CONTROLLER_MAX_LEG / len;
-			cmd->dx = next->dx * f;
-			cmd->dy = next->dy * f;
+			cmd->dx = round(next->dx * f * CT_PART_GRAIN) / CT_PART_GRAIN;
+			cmd->dy = round(next->dy * f * CT_PART_GRAIN) / CT_PART_GRAIN;
 			next->dx -= cmd->dx;
 			next->dy -= cmd->dy;
 			return true;

@@ -92,6 +92,7 @@ typedef struct CarryTask {
 	Vec2 survey_at;		/* the survey's goal, model frame */
 	bool have_survey;
 	char survey_what[64];	/* "the door at (x, y)", "the corridor beyond" */
+	char corridor[96];	/* around a corner: the L-shaped corridor the model shows */
 	Vec2 grasp_at;		/* the chosen grasp, model frame */
 	bool have_grasp;
 	bool to_open_floor;	/* the carry goes to open floor, for a re-grasp */
