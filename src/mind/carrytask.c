@@ -36,8 +36,6 @@
 #include "utak/plan/pathgraph.h"
 #include "utak/plan/skeleton.h"
 
-/* A long push is cut into parts that are whole multiples of 1/CT_PART_GRAIN. */
-#define CT_PART_GRAIN 64.0
 /* Open floor for a re-grasp: every square within the object's reach plus this many
  * is free, so that Utak can walk round it to any side. */
 #define CT_OPEN_MARGIN 2
@@ -861,24 +859,9 @@ bool carrytask_decide(Controller *c, MotorCommand *cmd)
 	MotorCommand *next = &ct->cmd[ct->next];
 	*cmd = *next;
 	ct->issued_from = c->model.utak;
-	if (next->kind == MOTOR_PUSH) {
-		double len = hypot(next->dx, next->dy);
-		if (len > CONTROLLER_MAX_LEG) {
-			/* A long leg in parts, so that what is seen on the way can change
-			 * the plan: every part lies on the checked straight push (within
-			 * 1/CT_PART_GRAIN of it). The parts are whole multiples of
-			 * 1/CT_PART_GRAIN, exact in binary, so that they add up to the leg
-			 * exactly: a square pushed by 1.35 + 1.35 + 1.35 + 0.95 ends a
-			 * rounding error past the grid line and, by the TABLE's rule, meets
-			 * a row of squares more, too many for a door just as wide as it. */
-			double f = CONTROLLER_MAX_LEG / len;
-			cmd->dx = round(next->dx * f * CT_PART_GRAIN) / CT_PART_GRAIN;
-			cmd->dy = round(next->dy * f * CT_PART_GRAIN) / CT_PART_GRAIN;
-			next->dx -= cmd->dx;
-			next->dy -= cmd->dy;
-			return true;
-		}
-	}
+	/* A long leg in parts (carry.h says why they are whole 64ths). */
+	if (!carry_command_part(next, CONTROLLER_MAX_LEG, cmd))
+		return true;
 	ct->next++;
 	return true;
 }

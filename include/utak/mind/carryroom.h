@@ -20,11 +20,19 @@
  *
  * THE BEND (push around-corner), the judge's rule with a tolerance for the eye: a
  * merged room is an L-shaped corridor when, within the bounding box of its free
- * cells (trimmed: an edge line of the box holding fewer than half the room's cells
- * of the line inside it is dropped, a wall the eye misplaced outwards), the cells not in it are one rectangle holding a corner of the box, give or
+ * cells (or that box trimmed by up to CARRYROOM_TRIM edge lines a side, each holding
+ * fewer than half the room's cells of the line inside it: a wall the eye misplaced
+ * outwards; the trimmed room cells count as mismatched), the cells not in it are one rectangle holding a corner of the box, give or
  * take at most CARRYROOM_BEND_SLACK cells per cell of the box's half perimeter (a
  * wall seen from afar is misplaced by a square or so), and each leg is at most
- * CARRYROOM_LEG_WIDTH wide and at least CARRYROOM_LEG_LENGTH times as long as wide.
+ * CARRYROOM_LEG_WIDTH + CARRYROOM_EYE_SLACK wide (its width the median, over its
+ * lines beyond the bend, of the room's cells across it) and at least
+ * CARRYROOM_LEG_LENGTH times as long as wide (by the box). The EYE SLACK is a
+ * square: a wall seen from afar, and then kept, may lie a square off, and a leg 12
+ * wide (the judge's limit) is read 13 (corridor-north.w's far leg). So a corridor
+ * exactly 13 wide is one to Utak and not to the judge: the one place where his
+ * belief may be a false success; on a model that is exact the rule is the judge's
+ * otherwise (test_carryroom.c).
  * The legs and the bend are the judge's (judgerooms.h: leg A the columns beside
  * the missing rectangle, full height; leg B the rows beside it, full width; the
  * bend their intersection); of the four corners the one whose best rectangle has
@@ -42,6 +50,8 @@
 #define CARRYROOM_LEG_WIDTH 12	 /* judgerooms.h's JUDGE_LEG_WIDTH */
 #define CARRYROOM_LEG_LENGTH 1.5 /* judgerooms.h's JUDGE_LEG_LENGTH */
 #define CARRYROOM_BEND_SLACK 0.5 /* mismatched cells per cell of half perimeter */
+#define CARRYROOM_TRIM 2	 /* edge lines a side the box may lose */
+#define CARRYROOM_EYE_SLACK 1	 /* squares a leg may read wider than the judge's limit */
 
 typedef struct CarryRooms {
 	int32_t count;	 /* rooms.h's rooms */
