@@ -706,12 +706,34 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 			return true;
 		}
 		/* Not yet: look further, at the unseen, or else at what was seen only
-		 * coarsely: a wall seen from afar may seem an object standing free. */
-		out->exploring = out->found = goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal);
+		 * coarsely: a wall seen from afar may seem an object standing free.
+		 * Going back to a place looked from before, with nothing new seen
+		 * since, CARRYTASK_LOOK_IDLE times (a frontier no place in reach
+		 * shows, visited in turn) is as if nothing were left unseen. */
+		int32_t known = worldmodel_known_squares(&c->model);
+		if (known > ct->look_seen)
+			ct->look_idle = 0;
+		ct->look_seen = known;
+		out->exploring = out->found = ct->look_idle <= CARRYTASK_LOOK_IDLE &&
+					      (goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal));
+		if (out->found && c->cycle != ct->look_cycle) {
+			/* A goal looked for before, with nothing new seen since: idle. */
+			bool again = false;
+			for (int q = 0; q < CARRYTASK_LOOK_RING && !again; q++)
+				again = q < ct->look_count && goals_distance(ct->look_goal[q], out->goal) < 0.5;
+			ct->look_idle += again; /* (it was set to 0 above when something new was seen) */
+			ct->look_goal[ct->look_next++ % CARRYTASK_LOOK_RING] = out->goal;
+			ct->look_count = ct->look_count < CARRYTASK_LOOK_RING ? ct->look_count + 1 : CARRYTASK_LOOK_RING;
+			ct->look_cycle = c->cycle;
+		}
 		if (!out->found)
-			snprintf(out->why, sizeof out->why, "%s",
-				 c->task.kind == TASK_PUSH_AROUND_CORNER ? "the task does not apply: the object's room is no L-shaped corridor, and nothing is left unseen"
-									 : "no door out of the object's room, and nothing left unseen");
+			snprintf(out->why, sizeof out->why, "%s, and %s",
+				 c->task.kind == TASK_PUSH_AROUND_CORNER
+					 ? "the task does not apply: the object's room is no L-shaped corridor"
+					 : "no door out of the object's room",
+				 ct->look_idle > CARRYTASK_LOOK_IDLE ? "looking further has shown nothing new"
+								     : c->task.kind == TASK_PUSH_AROUND_CORNER ? "nothing is left unseen"
+														: "nothing left unseen");
 		return true;
 	}
 	/* FETCH without a grasp: choose it for the whole carry. */

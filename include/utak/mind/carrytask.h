@@ -70,6 +70,13 @@
 #define CARRYTASK_MAX_GRASPS 40
 /* Releases and re-grasps allowed in one task. */
 #define CARRYTASK_MAX_REGRASPS 2
+/* Looking for the place beyond stops when a goal among the last CARRYTASK_LOOK_RING
+ * is chosen again, with no square seen since that was not seen before, more than
+ * CARRYTASK_LOOK_IDLE times (the unseen that is left cannot be seen from anywhere he
+ * can reach, and he walks between two places): the task then ends as when nothing
+ * is left unseen. */
+#define CARRYTASK_LOOK_IDLE 12
+#define CARRYTASK_LOOK_RING 8
 /* The plan's text for the trace. */
 #define CARRYTASK_PLAN_TEXT 1536
 
@@ -93,6 +100,11 @@ typedef struct CarryTask {
 	bool have_survey;
 	char survey_what[64];	/* "the door at (x, y)", "the corridor beyond" */
 	char corridor[96];	/* around a corner: the L-shaped corridor the model shows */
+	int32_t look_seen;	/* squares the model knew at the last look */
+	int look_idle;		/* goals chosen again with nothing new seen */
+	int look_cycle;		/* the cycle of the last look */
+	Vec2 look_goal[CARRYTASK_LOOK_RING];	/* the last goals looked for */
+	int look_count, look_next;	/* goals in the ring; where the next goes */
 	Vec2 grasp_at;		/* the chosen grasp, model frame */
 	bool have_grasp;
 	bool to_open_floor;	/* the carry goes to open floor, for a re-grasp */
