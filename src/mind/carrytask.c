@@ -16,8 +16,8 @@
  * MEMORY: a CarryTask of about 6 KB and its goal region (one byte a screen cell);
  * each plan's working space is carry.h's, freed when the plan is made.
  * COMPLEXITY: a plan costs carry.h's search; choosing the grasp up to
- * CARRYTASK_MAX_GRASPS of them; the goal region O(w h) for rooms, O(w h L) for a
- * corner (L the length of a line of sight). */
+ * CARRYTASK_MAX_GRASPS of them; the goal region O(w h) plus carryroom.h's rooms and
+ * bend. */
 #include "utak/mind/carrytask.h"
 
 #include <math.h>
