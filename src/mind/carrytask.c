@@ -894,10 +894,13 @@ void carrytask_perceive(Controller *c, const MotorCommand *cmd)
 	if (cmd->kind == MOTOR_PUSH) {
 		ct->held = ct_moved(&ct->held, vec2_sub(c->model.utak, ct->issued_from));
 	} else if (cmd->kind == MOTOR_TURN) {
+		/* Turned about the point he turned at; then moved with him by whatever
+		 * the model corrected his position by: the object is held rigidly. */
 		double cs, sn;
 		geom_cos_sin(cmd->deg, &cs, &sn);
+		Vec2 by = vec2_sub(c->model.utak, ct->issued_from);
 		for (int32_t i = 0; i < ct->held.count; i++)
-			ct->held.v[i] = geom_rotate(ct->held.v[i], c->model.utak, cs, sn);
+			ct->held.v[i] = vec2_add(geom_rotate(ct->held.v[i], ct->issued_from, cs, sn), by);
 	}
 	if (!ct->have_carry)
 		return;
