@@ -16,8 +16,8 @@
  * MEMORY: a CarryTask of about 6 KB and its goal region (one byte a screen cell);
  * each plan's working space is carry.h's, freed when the plan is made.
  * COMPLEXITY: a plan costs carry.h's search; choosing the grasp up to
- * CARRYTASK_MAX_GRASPS of them; the goal region O(w h) for rooms, O(w h L) for a
- * corner (L the length of a line of sight). */
+ * CARRYTASK_MAX_GRASPS of them; the goal region O(w h) plus carryroom.h's rooms and
+ * bend. */
 #include "utak/mind/carrytask.h"
 
 #include <math.h>
@@ -27,6 +27,7 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/rooms.h"
@@ -35,8 +36,6 @@
 #include "utak/plan/pathgraph.h"
 #include "utak/plan/skeleton.h"
 
-/* A line of sight is sampled this often (squares): finer than the thinnest wall. */
-#define CT_SIGHT_STEP 0.25
 /* Open floor for a re-grasp: every square within the object's reach plus this many
  * is free, so that Utak can walk round it to any side. */
 #define CT_OPEN_MARGIN 2
@@ -249,20 +248,6 @@ static void ct_goal_grid(const Controller *c, const Grid *space, bool open, doub
 		}
 }
 
-/* ct_sight_blocked(known, a, b): a straight line from a to b (screen units) meets a
- * square of the fixed space that is not free. */
-static bool ct_sight_blocked(const Grid *fixed, Vec2 a, Vec2 b)
-{
-	double len = hypot(b.x - a.x, b.y - a.y);
-	int32_t steps = (int32_t)ceil(len / CT_SIGHT_STEP);
-	for (int32_t t = 1; t < steps; t++) {
-		Vec2 p = vec2_add(a, vec2_scale(vec2_sub(b, a), (double)t / steps));
-		if (!grid_free_at(fixed, (int32_t)floor(p.x), (int32_t)floor(p.y)))
-			return true;
-	}
-	return false;
-}
-
 /* ct_mark_doorway(rm, d, region): the squares of door d's passage blocked in region:
  * from the run across it, along the way through, while both ends of the run meet
  * the wall's faces; and one square more each way. A slanted door: the squares
@@ -329,6 +314,13 @@ static void ct_roommap_build(const Controller *c, int32_t k, bool objects_fixed,
 	rooms_find(&r->rooms, &r->pathgraph);
 }
 
+/* ct_box_has(b, x, y, grow): cell (x, y) lies in box b (x0, y0, x1, y1, inclusive)
+ * grown by grow cells on every side. */
+static bool ct_box_has(const int32_t b[4], int32_t x, int32_t y, int32_t grow)
+{
+	return x >= b[0] - grow && x <= b[2] + grow && y >= b[1] - grow && y <= b[3] + grow;
+}
+
 /* ct_region_fix(c, rm): the goal region from this screen, fixed in the model's frame
  * (carrytask.h). Returns its squares. */
 static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
@@ -342,42 +334,66 @@ static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
 	int32_t oi, oj, count = 0;
 	if (!goals_cell_of(s, ct->object_start, &oi, &oj))
 		return 0;
+	CarryRooms cr;
+	carryroom_merge(rm, &cr);
+	int32_t room = carryroom_at(&cr, rm, oi, oj);
+	if (room < 0) {
+		carryroom_free(&cr);
+		return 0;
+	}
 	if (c->task.kind == TASK_PUSH_AROUND_CORNER) {
-		Vec2 from = screen_from_model(s, ct->object_start);
+		/* The other leg of the L-shaped corridor the object started in, past
+		 * the bend and a square more (what the eye misplaces); from the bend,
+		 * either leg past it. */
+		/* Only a room seen whole is judged: a corridor seen in part (its far
+		 * leg hidden, a wall not yet seen) may look like any shape. */
+		bool whole = true;
+		for (int32_t at = 0; at < s->w * s->h && whole; at++)
+			if (carryroom_at(&cr, rm, at % s->w, at / s->w) == room)
+				for (int q = 0; q < 4 && whole; q++)
+					whole = screen_label(s, at % s->w + (q == 0) - (q == 1), at / s->w + (q == 2) - (q == 3)) !=
+						SCREEN_UNKNOWN;
+		CarryBend b;
+		if (!whole || !carryroom_bend(&cr, rm, room, &b)) {
+			carryroom_free(&cr);
+			return 0;
+		}
+		int from = ct_box_has(b.bend, oi, oj, 0) ? -1 : ct_box_has(b.leg[0], oi, oj, 0) ? 0
+								: ct_box_has(b.leg[1], oi, oj, 0) ? 1 : -1;
 		for (int32_t j = 0; j < s->h; j++)
 			for (int32_t i = 0; i < s->w; i++) {
-				if (s->label[j * s->w + i] != SCREEN_SPACE)
-					continue;
-				bool hidden = ct_sight_blocked(&rm->known, from, vec2(i + 0.5, j + 0.5));
-				for (int corner = 0; corner < 4 && hidden; corner++)
-					hidden = ct_sight_blocked(&rm->known, from, vec2(i + (corner & 1), j + (corner >> 1)));
-				if (hidden) {
+				bool leg = from < 0 ? ct_box_has(b.leg[0], i, j, 0) || ct_box_has(b.leg[1], i, j, 0)
+						    : ct_box_has(b.leg[1 - from], i, j, 0);
+				if (s->label[j * s->w + i] == SCREEN_SPACE && carryroom_at(&cr, rm, i, j) == room && leg &&
+				    !ct_box_has(b.bend, i, j, 1))
 					ct->region.cells[j * s->w + i] = GRID_FREE;
-					count++;
-				}
 			}
-		return count;
-	}
-	int32_t room = rooms_at(&rm->rooms, oi, oj);
-	if (room < 0)
-		return 0;
-	int32_t doors[64];
-	int32_t nd = rooms_doors_of(&rm->rooms, room, doors, 64);
-	nd = nd < 64 ? nd : 64;
-	for (int32_t at = 0; at < s->w * s->h; at++) {
-		if (s->label[at] != SCREEN_SPACE)
-			continue;
-		int32_t here = rm->rooms.room[at];
-		bool next = false;
-		for (int32_t q = 0; q < nd && !next; q++) {
-			const RoomsDoor *d = &rm->rooms.doors[doors[q]];
-			next = here != room && (here == d->room_a || here == d->room_b);
+		snprintf(ct->corridor, sizeof ct->corridor,
+			 "an L-shaped corridor, legs %d and %d wide, its bend (%d, %d) to (%d, %d)",
+			 (int)(b.leg[0][2] - b.leg[0][0] + 1), (int)(b.leg[1][3] - b.leg[1][1] + 1),
+			 (int)(s->x0 + b.bend[0]), (int)(s->y0 + b.bend[1]), (int)(s->x0 + b.bend[2]),
+			 (int)(s->y0 + b.bend[3]));
+	} else {
+		/* The rooms that share a door with the object's, by the verdict's
+		 * rule (carryroom.h), less every door's doorway. */
+		for (int32_t at = 0; at < s->w * s->h; at++) {
+			if (s->label[at] != SCREEN_SPACE)
+				continue;
+			int32_t here = carryroom_at(&cr, rm, at % s->w, at / s->w);
+			bool next = false;
+			for (int32_t q = 0; q < rm->rooms.door_count && !next && here != room; q++) {
+				const RoomsDoor *d = &rm->rooms.doors[q];
+				int32_t a = cr.merged[d->room_a], bb = cr.merged[d->room_b];
+				next = cr.door[q] && ((a == room && bb == here) || (bb == room && a == here));
+			}
+			if (next)
+				ct->region.cells[at] = GRID_FREE;
 		}
-		if (next)
-			ct->region.cells[at] = GRID_FREE;
+		for (int32_t q = 0; q < rm->rooms.door_count; q++)
+			if (cr.door[q])
+				ct_mark_doorway(rm, &rm->rooms.doors[q], &ct->region);
 	}
-	for (int32_t q = 0; q < rm->rooms.door_count; q++)
-		ct_mark_doorway(rm, &rm->rooms.doors[q], &ct->region);
+	carryroom_free(&cr);
 	for (int32_t at = 0; at < s->w * s->h; at++)
 		count += ct->region.cells[at] == GRID_FREE;
 	return count;
@@ -425,11 +441,14 @@ static bool ct_survey_point(Controller *c, const int32_t *dist, const RoomMap *r
 	if (c->task.kind != TASK_PUSH_AROUND_CORNER) {
 		int32_t oi, oj;
 		goals_cell_of(s, ct->object_start, &oi, &oj);
-		int32_t room = rooms_at(&rm->rooms, oi, oj), doors[64];
-		int32_t nd = room >= 0 ? rooms_doors_of(&rm->rooms, room, doors, 64) : 0;
+		CarryRooms cr;
+		carryroom_merge(rm, &cr);
+		int32_t room = carryroom_at(&cr, rm, oi, oj);
 		double best = INFINITY;
-		for (int32_t q = 0; q < nd && q < 64; q++) {
-			const RoomsDoor *d = &rm->rooms.doors[doors[q]];
+		for (int32_t q = 0; q < rm->rooms.door_count && room >= 0; q++) {
+			const RoomsDoor *d = &rm->rooms.doors[q];
+			if (!cr.door[q] || (cr.merged[d->room_a] != room && cr.merged[d->room_b] != room))
+				continue;
 			double far = hypot(d->x - oi, d->y - oj);
 			if (far < best && dist[d->y * s->w + d->x] >= 0) {
 				best = far;
@@ -438,6 +457,7 @@ static bool ct_survey_point(Controller *c, const int32_t *dist, const RoomMap *r
 					 (int)(s->x0 + d->x), (int)(s->y0 + d->y), (int)d->width);
 			}
 		}
+		carryroom_free(&cr);
 		return ct->have_survey = best < INFINITY;
 	}
 	int32_t best = -1;
@@ -679,17 +699,41 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 			ct->stage = CARRY_STAGE_SURVEY;
 			out->found = true;
 			out->goal = ct->survey_at;
-			snprintf(ct->plan, sizeof ct->plan, "\n  plan: survey %s", ct->survey_what);
+			snprintf(ct->plan, sizeof ct->plan, "\n  plan: survey %s%s%s", ct->survey_what,
+				 c->task.kind == TASK_PUSH_AROUND_CORNER ? ", in " : "",
+				 c->task.kind == TASK_PUSH_AROUND_CORNER ? ct->corridor : "");
 			ct->plan_new = true;
 			return true;
 		}
 		/* Not yet: look further, at the unseen, or else at what was seen only
-		 * coarsely: a wall seen from afar may seem an object standing free. */
-		out->exploring = out->found = goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal);
+		 * coarsely: a wall seen from afar may seem an object standing free.
+		 * Going back to a place looked from before, with nothing new seen
+		 * since, CARRYTASK_LOOK_IDLE times (a frontier no place in reach
+		 * shows, visited in turn) is as if nothing were left unseen. */
+		int32_t known = worldmodel_known_squares(&c->model);
+		if (known > ct->look_seen)
+			ct->look_idle = 0;
+		ct->look_seen = known;
+		out->exploring = out->found = ct->look_idle <= CARRYTASK_LOOK_IDLE &&
+					      (goals_frontier(c, dist, &out->goal) || goals_inspect(c, dist, &out->goal));
+		if (out->found && c->cycle != ct->look_cycle) {
+			/* A goal looked for before, with nothing new seen since: idle. */
+			bool again = false;
+			for (int q = 0; q < CARRYTASK_LOOK_RING && !again; q++)
+				again = q < ct->look_count && goals_distance(ct->look_goal[q], out->goal) < 0.5;
+			ct->look_idle += again; /* (it was set to 0 above when something new was seen) */
+			ct->look_goal[ct->look_next++ % CARRYTASK_LOOK_RING] = out->goal;
+			ct->look_count = ct->look_count < CARRYTASK_LOOK_RING ? ct->look_count + 1 : CARRYTASK_LOOK_RING;
+			ct->look_cycle = c->cycle;
+		}
 		if (!out->found)
-			snprintf(out->why, sizeof out->why, "%s",
-				 c->task.kind == TASK_PUSH_AROUND_CORNER ? "no corner to push round here: nothing out of sight of the object, and nothing left unseen"
-									 : "no door out of the object's room, and nothing left unseen");
+			snprintf(out->why, sizeof out->why, "%s, and %s",
+				 c->task.kind == TASK_PUSH_AROUND_CORNER
+					 ? "the task does not apply: the object's room is no L-shaped corridor"
+					 : "no door out of the object's room",
+				 ct->look_idle > CARRYTASK_LOOK_IDLE ? "looking further has shown nothing new"
+								     : c->task.kind == TASK_PUSH_AROUND_CORNER ? "nothing is left unseen"
+														: "nothing left unseen");
 		return true;
 	}
 	/* FETCH without a grasp: choose it for the whole carry. */
@@ -837,19 +881,9 @@ bool carrytask_decide(Controller *c, MotorCommand *cmd)
 	MotorCommand *next = &ct->cmd[ct->next];
 	*cmd = *next;
 	ct->issued_from = c->model.utak;
-	if (next->kind == MOTOR_PUSH) {
-		double len = hypot(next->dx, next->dy);
-		if (len > CONTROLLER_MAX_LEG) {
-			/* A long leg in parts, so that what is seen on the way can change
-			 * the plan: every part lies on the checked straight push. */
-			double f = CONTROLLER_MAX_LEG / len;
-			cmd->dx = next->dx * f;
-			cmd->dy = next->dy * f;
-			next->dx -= cmd->dx;
-			next->dy -= cmd->dy;
-			return true;
-		}
-	}
+	/* A long leg in parts (carry.h says why they are whole 64ths). */
+	if (!carry_command_part(next, CONTROLLER_MAX_LEG, cmd))
+		return true;
 	ct->next++;
 	return true;
 }
@@ -860,10 +894,13 @@ void carrytask_perceive(Controller *c, const MotorCommand *cmd)
 	if (cmd->kind == MOTOR_PUSH) {
 		ct->held = ct_moved(&ct->held, vec2_sub(c->model.utak, ct->issued_from));
 	} else if (cmd->kind == MOTOR_TURN) {
+		/* Turned about the point he turned at; then moved with him by whatever
+		 * the model corrected his position by: the object is held rigidly. */
 		double cs, sn;
 		geom_cos_sin(cmd->deg, &cs, &sn);
+		Vec2 by = vec2_sub(c->model.utak, ct->issued_from);
 		for (int32_t i = 0; i < ct->held.count; i++)
-			ct->held.v[i] = geom_rotate(ct->held.v[i], c->model.utak, cs, sn);
+			ct->held.v[i] = vec2_add(geom_rotate(ct->held.v[i], ct->issued_from, cs, sn), by);
 	}
 	if (!ct->have_carry)
 		return;

@@ -235,6 +235,20 @@ bool carry_pose_inside(const CarryObject *obj, const Grid *region, Vec2 at, doub
 	return sink.inside;
 }
 
+bool carry_command_part(MotorCommand *leg, double most, MotorCommand *part)
+{
+	*part = *leg;
+	double len = hypot(leg->dx, leg->dy);
+	if (leg->kind != MOTOR_PUSH || len <= most)
+		return true;
+	double f = most / len;
+	part->dx = round(leg->dx * f * CARRY_PART_GRAIN) / CARRY_PART_GRAIN;
+	part->dy = round(leg->dy * f * CARRY_PART_GRAIN) / CARRY_PART_GRAIN;
+	leg->dx -= part->dx;
+	leg->dy -= part->dy;
+	return false;
+}
+
 void carry_plan_print(const CarryPlan *plan, FILE *f)
 {
 	for (int i = 0; i + 1 < plan->count; i++) {

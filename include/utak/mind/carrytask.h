@@ -7,7 +7,9 @@
  *
  * THE STEPS, as the trace prints them ("plan: ..."):
  *   look      the object, and the place it is to go, are not yet both seen: explore
- *             the nearest frontier of the unseen;
+ *             the nearest frontier of the unseen (or what was seen only coarsely);
+ *             when nothing is left, or the goals chosen keep coming back with
+ *             nothing new seen (CARRYTASK_LOOK_IDLE), the task fails with why;
  *   survey    go to the door (the nearest square of the place beyond, for a corner)
  *             and look at it from close by, where the fovea places walls to the
  *             square; then the GOAL REGION (the squares the object must lie wholly
@@ -26,16 +28,17 @@
  * An impossible carry (no grasp, not even after a re-grasp) ends the task with the
  * planner's reason in words.
  *
- * THE GOAL REGION (the judge's meaning, doc/verdicts.md, on Utak's model):
- *   next room, through the door: the squares seen as floor in the rooms (rooms.h)
- *     that share a door with the room of the object's centre, less each door's
+ * THE GOAL REGION (the judge's meaning, doc/verdicts.md and judgerooms.h, on Utak's model: carryroom.h):
+ *   next room, through the door: the squares seen as floor in the rooms that share
+ *     a door with the room of the object's centre, rooms and doors by the verdict's
+ *     rule (a door only where the space widens to twice it and 2 squares more on
+ *     both sides; rooms.h's other doors join their rooms), less each door's
  *     doorway (the squares between the wall's two faces, and a square more on each
  *     side for what the eye misplaces);
- *   around the corner: the squares seen as floor whose centre and corners cannot
- *     be seen, along a straight line through the fixed space, from where the
- *     object's centre was: in an L-shaped corridor they lie in the far leg, past
- *     the bend (the bend and the near leg are visible from anywhere in the near
- *     leg, which with the bend is one rectangle).
+ *   around the corner: the object's room must be an L-shaped corridor, seen whole
+ *     (no square of it beside the unseen); the region is its other leg past the
+ *     bend and a square more (either leg past the bend when it started in the
+ *     bend). No such corridor, and nothing left to see: the task does not apply.
  *
  * FRAMES: points and polygons here are in the world model's $floor frame unless
  * named screen; the model's axes are Utak's, so a plan's pushes are motor commands
@@ -70,6 +73,13 @@
 #define CARRYTASK_MAX_GRASPS 40
 /* Releases and re-grasps allowed in one task. */
 #define CARRYTASK_MAX_REGRASPS 2
+/* Looking for the place beyond stops when a goal among the last CARRYTASK_LOOK_RING
+ * is chosen again, with no square seen since that was not seen before, more than
+ * CARRYTASK_LOOK_IDLE times (the unseen that is left cannot be seen from anywhere he
+ * can reach, and he walks between two places): the task then ends as when nothing
+ * is left unseen. */
+#define CARRYTASK_LOOK_IDLE 12
+#define CARRYTASK_LOOK_RING 8
 /* The plan's text for the trace. */
 #define CARRYTASK_PLAN_TEXT 1536
 
@@ -92,6 +102,12 @@ typedef struct CarryTask {
 	Vec2 survey_at;		/* the survey's goal, model frame */
 	bool have_survey;
 	char survey_what[64];	/* "the door at (x, y)", "the corridor beyond" */
+	char corridor[96];	/* around a corner: the L-shaped corridor the model shows */
+	int32_t look_seen;	/* squares the model knew at the last look */
+	int look_idle;		/* goals chosen again with nothing new seen */
+	int look_cycle;		/* the cycle of the last look */
+	Vec2 look_goal[CARRYTASK_LOOK_RING];	/* the last goals looked for */
+	int look_count, look_next;	/* goals in the ring; where the next goes */
 	Vec2 grasp_at;		/* the chosen grasp, model frame */
 	bool have_grasp;
 	bool to_open_floor;	/* the carry goes to open floor, for a re-grasp */

@@ -299,6 +299,19 @@ bool carry_pose_free(const CarryPlanner *cp, const CarryObject *obj, Vec2 at, do
  * it, by the TABLE's rule (the goal test of a CarryGoal, off the lattice). */
 bool carry_pose_inside(const CarryObject *obj, const Grid *region, Vec2 at, double deg);
 
+/* carry_command_part(leg, most, part): the next command to give of a plan's command
+ * leg, as the action cycle gives them: a push longer than most squares is cut, so
+ * that what is seen on the way can change the plan; part gets the first piece and
+ * leg keeps the rest. The pieces are whole multiples of 1/CARRY_PART_GRAIN in each
+ * axis (rounded from most/|leg| of the leg: within 1/128 of the straight push the
+ * planner checked), exact in binary, so that they add up to the leg EXACTLY: the
+ * plan's poses are on the lattice, and a square pushed by 1.35 + 1.35 + 1.35 + 0.95
+ * ends a rounding error past a grid line, where by the TABLE's rule it meets a row of
+ * squares more: one too many for a door just as wide as it. A turn, or a push of at
+ * most most squares, is given whole. Returns true when leg is used up. */
+#define CARRY_PART_GRAIN 64.0
+bool carry_command_part(MotorCommand *leg, double most, MotorCommand *part);
+
 /* carry_plan_print(plan, f): one line per command, "push DX DY" or "turn DEG",
  * then "carry: P pushes (L squares), T turns (D degrees)". */
 void carry_plan_print(const CarryPlan *plan, FILE *f);
