@@ -44,8 +44,32 @@ static double side(const Polygon *q, int32_t i)
 	return hypot(d.x, d.y);
 }
 
+/* min_width(p): the polygon's least width, its extent across the narrowest
+ * direction. That direction is normal to an edge of the convex hull, and no edge's
+ * normal gives less than the least width, so the least over every edge is exact. */
+static double min_width(const Polygon *p)
+{
+	double best = INFINITY;
+	for (int32_t i = 0; i < p->count; i++) {
+		Vec2 e = vec2_sub(p->v[(i + 1) % p->count], p->v[i]);
+		double len = hypot(e.x, e.y);
+		if (len < 1e-12)
+			continue;
+		double lo = INFINITY, hi = -INFINITY;
+		for (int32_t j = 0; j < p->count; j++) {
+			double d = vec2_cross(e, vec2_sub(p->v[j], p->v[i])) / len;
+			lo = d < lo ? d : lo;
+			hi = d > hi ? d : hi;
+		}
+		best = hi - lo < best ? hi - lo : best;
+	}
+	return best;
+}
+
 Shape judge_shape_name(const Polygon *p)
 {
+	if (min_width(p) < JUDGE_SHAPE_MIN_WIDTH - 1e-9)
+		return SHAPE_NONE; /* too small for the TABLE's squares to show its corners */
 	Polygon q;
 	merge(p, &q);
 	if (q.count == 3)

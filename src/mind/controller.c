@@ -71,7 +71,9 @@ static bool make_plan(Controller *c, char *why, size_t size)
 	if (c->task.kind == TASK_GO_ROUND && c->round_count == 0 && !gr.exploring && c->phase == PHASE_TRAVEL) {
 		/* Beside the object is where going round starts: lay out the loop now. */
 		int32_t k = objects_find_target(c);
-		if (k >= 0 && !objects_read(c, k).guessed) { /* a guess is looked at first */
+		/* A guess is looked at first; and what the eye takes for an object is
+		 * felt first: a wall it did not see meet the verge looks the same. */
+		if (k >= 0 && !objects_read(c, k).guessed && objects_felt(c, k)) {
 			round_lay_out(c, k);
 			gr.goal = c->round[0];
 		}
@@ -209,21 +211,40 @@ static void arrive(Controller *c)
 			c->phase = PHASE_DONE;
 		return;
 	case TASK_GO_SHAPE:
-		if (objects_touching_target(c))
-			c->phase = PHASE_DONE;
-		else
+		if (objects_touching_target(c)) {
+			char doubt[160];
+			if (objects_doubt(c, objects_find_target(c), doubt, sizeof doubt)) {
+				c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
+				snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
+					 task_shape_name(c->task.shape), doubt);
+			} else
+				c->phase = PHASE_DONE;
+		} else
 			remember(c, c->goal); /* touch says the object is not here after all */
 		return;
 	case TASK_GO_ROUND:
 		if (round_stale(c)) {
 			c->round_count = 0; /* round the wrong thing: find the object again */
+		} else if (c->round_count == 0) {
+			remember(c, c->goal); /* beside it, and not felt from here: another side */
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
 			int32_t k = objects_find_target(c);
 			bool confirmed = k >= 0 && objects_read(c, k).confirmed;
-			if (confirmed && fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS)
-				c->phase = PHASE_DONE;
+			char doubt[160];
+			if (confirmed && fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS) {
+				if (objects_doubtful(c, k) && c->round_loops == 0 && goals_more_to_see(c)) {
+					/* Round one he would doubt: look further for one beyond doubt. */
+					c->round_loops++;
+					c->round_count = 0;
+				} else if (objects_doubt(c, k, doubt, sizeof doubt)) {
+					c->phase = PHASE_FAILED;
+					snprintf(c->why, sizeof c->why, "Utak doubts he went round the %s: %s",
+						 task_shape_name(c->task.shape), doubt);
+				} else
+					c->phase = PHASE_DONE;
+			}
 			else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
 				/* Round a hypothesis, or an object no longer there: look again
 				 * (objects.h), and go round what is found. */
@@ -250,8 +271,11 @@ static void arrive(Controller *c)
 			c->seat_axis = c->seat_pushes = 0;
 		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
-		else if (objects_touching_target(c))
-			c->phase = PHASE_GRASP;
+		else if (objects_touching_target(c)) {
+			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
+			if (!objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt))
+				c->doubt[0] = '\0';
+		}
 		else
 			remember(c, c->goal);
 	}
@@ -364,6 +388,7 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	regions_find(&c->regions, imp);		 /* step 11 */
 	worldmodel_accommodate(&c->model, cmd, imp);
 	path_push(&c->trail, c->model.utak);
+	objects_feel(c);
 	int32_t seen = worldmodel_known_squares(&c->model);
 	int n = snprintf(c->note, sizeof c->note, "model: %+d squares seen", (int)(seen - c->seen_before));
 	c->seen_before = seen;

@@ -451,6 +451,148 @@ bool goals_next_room(const Controller *c, const Grid *g, const int32_t *dist, co
 	return true;
 }
 
+static bool unexamined(Controller *c, int32_t k, bool nearer, const int32_t *dist, Vec2 *goal);
+
+bool goals_more_to_see(Controller *c)
+{
+	const Grid *g = &c->space;
+	if (g->w == 0 || c->screen.w != g->w || c->screen.h != g->h)
+		return false;
+	int32_t ui, uj;
+	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
+	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
+	goals_reach(g, ui, uj, dist);
+	Vec2 p;
+	int32_t k = objects_find_target(c);
+	bool more = goals_frontier(c, dist, &p) || (k >= 0 && unexamined(c, k, false, dist, &p));
+	free(dist);
+	return more;
+}
+
+/* THE NEXT ROOM, as the judge counts rooms (judge.h, judgerooms.h): a door is a
+ * narrowing between two spaces that each widen well beyond it, to at least
+ * GOALS_ROOM_RATIO times its clearance and GOALS_ROOM_MARGIN more. rooms.c cuts
+ * the space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; a
+ * cell it gives another room may be, to the judge, in the same room, and Utak
+ * claimed the next room there. So the rooms rooms.c finds are grouped across every
+ * door that fails the judge's test, each side's width read as the clearance at
+ * its room's centre, the door's as the skeleton's clearance at its cell; and
+ * "in the next room" means in another group and past the door line: farther from
+ * each such door's cell than half its width and GOALS_DOORWAY squares (the judge
+ * counts the doorway, the passage between the faces of the narrowing, in no
+ * room). A room seen only in part reads narrower than it is: the door then waits
+ * until Utak has looked through it (the frontier beyond it is explored first). */
+static bool judge_door(const RoomMap *rm, const RoomsDoor *d)
+{
+	double c = skeleton_clearance(&rm->skeleton, d->x, d->y);
+	for (int side = 0; side < 2; side++) {
+		double p = rm->rooms.rooms[side ? d->room_b : d->room_a].clearance;
+		if (p < GOALS_ROOM_RATIO * c || p < c + GOALS_ROOM_MARGIN)
+			return false;
+	}
+	return true;
+}
+
+static int32_t group_root(int32_t *up, int32_t r)
+{
+	while (up[r] != r)
+		r = up[r] = up[up[r]];
+	return r;
+}
+
+/* room_groups(rm): for each room of rm, its group's root (caller frees). */
+static int32_t *room_groups(const RoomMap *rm)
+{
+	int32_t n = rm->rooms.room_count;
+	int32_t *up = util_alloc((size_t)(n > 0 ? n : 1), sizeof *up);
+	for (int32_t r = 0; r < n; r++)
+		up[r] = r;
+	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
+		const RoomsDoor *door = &rm->rooms.doors[d];
+		if (!judge_door(rm, door)) {
+			int32_t a = group_root(up, door->room_a), b = group_root(up, door->room_b);
+			up[a > b ? a : b] = a < b ? a : b;
+		}
+	}
+	for (int32_t r = 0; r < n; r++)
+		up[r] = group_root(up, r);
+	return up;
+}
+
+/* next_room(c, g, dist, rm, si, sj, ui, uj, out): the goal of "go next-room". */
+static void next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
+		      int32_t sj, int32_t ui, int32_t uj, GoalResult *out)
+{
+	const Screen *s = &c->screen;
+	int32_t start_room = rooms_at(&rm->rooms, si, sj), here_room = rooms_at(&rm->rooms, ui, uj);
+	if (start_room < 0)
+		return;
+	int32_t *group = room_groups(rm), sg = group[start_room];
+	bool past = here_room >= 0 && group[here_room] != sg;
+	double best_d = INFINITY;
+	int32_t best = -1;
+	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
+		const RoomsDoor *door = &rm->rooms.doors[d];
+		int32_t ga = group[door->room_a], gb = group[door->room_b];
+		if (ga == gb || (ga != sg && gb != sg))
+			continue; /* inside a group, or not a door of the starting room */
+		if (hypot(ui - door->x, uj - door->y) <= door->width / 2.0 + GOALS_DOORWAY)
+			past = false;
+		const RoomsRoom *room = &rm->rooms.rooms[ga == sg ? door->room_b : door->room_a];
+		int32_t other = ga == sg ? gb : ga;
+		for (int32_t k = 0; k < g->w * g->h; k++) {
+			int32_t i = k % g->w, j = k / g->w, r = rooms_at(&rm->rooms, i, j);
+			if (dist[k] < 0 || r < 0 || group[r] != other)
+				continue;
+			double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
+			if (dd < best_d) {
+				best_d = dd;
+				best = k;
+			}
+		}
+	}
+	free(group);
+	if (past) { /* already through a door and past its doorway: here will do */
+		out->found = true;
+		out->goal = goals_centre(s->x0 + ui, s->y0 + uj);
+	} else if (best >= 0) {
+		out->found = true;
+		out->goal = goals_centre(s->x0 + best % g->w, s->y0 + best / g->w);
+	}
+}
+
+/* unexamined(c, k, nearer, dist, goal): the reachable cell nearest a square not yet
+ * seen in the fovea of an object never seen whole (objects.h, examined) other than
+ * node k, nearer the start than k (centroid to start) when `nearer`, the nearest
+ * Utak of those; false when there is none. Each such square is looked at once: not
+ * when a goal reached lies within GOALS_LOOK + 1 of it (an object walled in shows
+ * no more from a second look, and the looks would take every cycle). */
+static bool unexamined(Controller *c, int32_t k, bool nearer, const int32_t *dist, Vec2 *goal)
+{
+	double d = nearer ? goals_distance(objects_read(c, k).centroid, c->start) : INFINITY, best = INFINITY;
+	for (int32_t j = 0; j < c->model.node_count; j++) {
+		if (j == k || c->model.node[j].kind != NODE_OBJECT)
+			continue;
+		ObjectReading q = objects_read(c, j);
+		int32_t x, y;
+		Vec2 near;
+		if (q.examined || goals_distance(q.centroid, c->start) >= d || !objects_unconfirmed_square(c, j, &x, &y) ||
+		    !goals_near(c, goals_centre(x, y), dist, &near) || goals_distance(near, goals_centre(x, y)) > GOALS_LOOK)
+			continue;
+		bool looked = false;
+		for (int v = 0; v < c->visited_count && !looked; v++)
+			looked = goals_distance(goals_centre(x, y), c->visited[v]) <= GOALS_LOOK + 1;
+		if (looked)
+			continue;
+		double dd = goals_distance(near, c->model.utak);
+		if (dd < best) {
+			best = dd;
+			*goal = near;
+		}
+	}
+	return best < INFINITY;
+}
+
 /* ---- the goal of the current phase ---------------------------------------------- */
 
 /* goals_choose(c, out): the goal of the current phase on the current screen and
@@ -479,12 +621,7 @@ void goals_choose(Controller *c, GoalResult *out)
 				 task_corner_name(c->task.corner));
 		break;
 	case TASK_GO_NEXT_ROOM:
-		if (start_room >= 0 && here_room >= 0 && here_room != start_room) {
-			out->found = true; /* already through a door: here will do */
-			out->goal = goals_centre(s->x0 + ui, s->y0 + uj);
-			break;
-		}
-		out->found = goals_next_room(c, g, dist, &rm, start_room, &out->goal);
+		next_room(c, g, dist, &rm, si, sj, ui, uj, out);
 		if (!out->found) {
 			out->exploring = out->found = goals_frontier(c, dist, &out->goal);
 			if (!out->found)
@@ -502,6 +639,12 @@ void goals_choose(Controller *c, GoalResult *out)
 		if (!pushing) {
 			int32_t k = objects_find_target(c), ux, uy;
 			bool push_task = c->task.kind != TASK_GO_SHAPE && c->task.kind != TASK_GO_ROUND;
+			/* Another object nearer the start, not yet seen whole, may be the
+			 * task's (objects_doubt): a closer look at it first. */
+			if (k >= 0 && unexamined(c, k, true, dist, &out->goal)) {
+				out->exploring = out->found = true;
+				break;
+			}
 			/* A hypothesis is looked at closer first: beside the part of it the
 			 * fovea has not yet seen. */
 			if (k >= 0 && objects_unconfirmed_square(c, k, &ux, &uy) &&

@@ -4,10 +4,14 @@
 #include "utak/mind/objects.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+
+static const char *doubt_own(const ObjectReading *o);
+static bool listed(const int32_t *list, int n, int32_t ident);
 
 /* Scale (shape.h) of each resolution: the side of its cells. */
 static double objects_scale(int res)
@@ -19,7 +23,7 @@ ObjectReading objects_read(Controller *c, int32_t k)
 {
 	const WorldModel *m = &c->model;
 	const ModelNode *n = &m->node[k];
-	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}};
+	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false};
 	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
 	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
 	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
@@ -81,13 +85,24 @@ ObjectReading objects_read(Controller *c, int32_t k)
 	o.shape = o.reading.shape;
 	o.guessed = c->memo[hit].guessed;
 	o.confidence = o.confirmed ? 1 : (o.squares ? (double)o.foveal / o.squares : 0) * (o.guessed ? 0.5 : 1);
+	/* Once seen whole in the fovea, an object stays examined: a later look from
+	 * afar overwrites its squares' evidence with coarser, and the looks closer at
+	 * it before a task is claimed (goals.c) would otherwise begin again. */
+	bool known = false;
+	for (int i = 0; i < c->examined_count && !known; i++)
+		known = c->examined[i] == (int32_t)n->ident;
+	if (!known && o.squares > 0 && o.foveal == o.squares && c->examined_count < CONTROLLER_EXAMINED)
+		c->examined[c->examined_count++] = (int32_t)n->ident, known = true;
+	o.examined = known;
 	return o;
 }
 
 int32_t objects_find_target(Controller *c)
 {
 	const WorldModel *m = &c->model;
-	int32_t best = -1, chosen = -1, best_named = -1;
+	int32_t best = -1, chosen = -1, best_named = -1, best_sure = -1;
+	double sure_d = INFINITY;
+	bool chosen_doubtful = false;
 	double best_d = INFINITY, named_d = INFINITY, chosen_d = INFINITY, chosen_near = OBJECTS_SAME;
 	bool chosen_confirmed = false;
 	for (int32_t k = 0; k < m->node_count; k++) {
@@ -103,11 +118,16 @@ int32_t objects_find_target(Controller *c)
 			chosen = k;
 			chosen_d = d;
 			chosen_confirmed = o.confirmed;
+			chosen_doubtful = o.confirmed && doubt_own(&o);
 			chosen_near = m->node[k].ident == c->target ? -1 : moved;
 		}
 		if (o.shape == c->task.shape && d < best_d) {
 			best_d = d;
 			best = k;
+		}
+		if (o.shape == c->task.shape && o.confirmed && !doubt_own(&o) && d < sure_d) {
+			sure_d = d;
+			best_sure = k;
 		}
 		if (o.shape == c->task.shape && !o.guessed && d < named_d) {
 			named_d = d;
@@ -122,10 +142,44 @@ int32_t objects_find_target(Controller *c)
 	}
 	if (chosen >= 0 && (best < 0 || chosen_d <= best_d + OBJECTS_SWITCH))
 		best = chosen;
+	/* One the fovea has shown to be of the shape beyond doubt goes before one it
+	 * has shown to be doubtful (objects_doubt): the doubtful may be no such shape. */
+	if (best_sure >= 0 && (best < 0 || (best == chosen ? chosen_doubtful : objects_doubtful(c, best))))
+		best = best_sure;
 	c->target = best >= 0 ? m->node[best].ident : 0;
 	if (best >= 0)
 		c->target_at = objects_read(c, best).centroid;
 	return best;
+}
+
+static bool listed(const int32_t *list, int n, int32_t ident)
+{
+	for (int i = 0; i < n; i++)
+		if (list[i] == ident)
+			return true;
+	return false;
+}
+
+void objects_feel(Controller *c)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	for (int i = 0; i < TOUCH_CELLS; i++) {
+		char colour = c->impression.touch[i];
+		int32_t k = worldmodel_node_at(&c->model, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]);
+		if (k < 0 || c->model.node[k].kind != NODE_OBJECT || colour < 'A' || colour > 'Z')
+			continue;
+		int32_t ident = (int32_t)c->model.node[k].ident;
+		if (colour == 'B' && !listed(c->walls, c->walls_count, ident) && c->walls_count < CONTROLLER_EXAMINED)
+			c->walls[c->walls_count++] = ident;
+		if (colour != 'B' && !listed(c->felt, c->felt_count, ident) && c->felt_count < CONTROLLER_EXAMINED)
+			c->felt[c->felt_count++] = ident;
+	}
+}
+
+bool objects_felt(const Controller *c, int32_t k)
+{
+	return listed(c->felt, c->felt_count, (int32_t)c->model.node[k].ident);
 }
 
 bool objects_touching(const Controller *c, int32_t k)
@@ -151,6 +205,60 @@ bool objects_touching_target(Controller *c)
 		return false;
 	ObjectReading o = objects_read(c, k);
 	return o.confirmed && o.shape == c->task.shape;
+}
+
+/* doubt_own(o, shape): objects_doubt's measures on one reading (NULL: none). */
+static const char *doubt_own(const ObjectReading *o)
+{
+	if (o->squares <= OBJECTS_CRUMB)
+		return "crumb";
+	if (o->shape == SHAPE_SQUARE && o->reading.aspect > SHAPE_SQUARE_ASPECT)
+		return "gap";
+	if (o->shape == SHAPE_BRICK && o->reading.aspect < SHAPE_BRICK_ASPECT)
+		return "gap";
+	return NULL;
+}
+
+bool objects_doubtful(Controller *c, int32_t k)
+{
+	ObjectReading o = objects_read(c, k);
+	return o.confirmed && doubt_own(&o);
+}
+
+bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
+{
+	ObjectReading o = objects_read(c, k);
+	const char *shape = task_shape_name(c->task.shape);
+	/* Another of the shape nearer the start, not sure or not yet seen whole,
+	 * may be the one the task means. */
+	double d = goals_distance(o.centroid, c->start);
+	for (int32_t j = 0; j < c->model.node_count; j++) {
+		if (j == k || c->model.node[j].kind != NODE_OBJECT)
+			continue;
+		ObjectReading q = objects_read(c, j);
+		if (goals_distance(q.centroid, c->start) >= d)
+			continue;
+		const Box *r = &c->model.node[j].rect;
+		bool unnamed_crumb = q.shape == SHAPE_NONE && q.squares <= OBJECTS_CRUMB &&
+				     r->hi.x - r->lo.x >= 3 && r->hi.y - r->lo.y >= 3;
+		if (!q.examined || unnamed_crumb || (q.shape == c->task.shape && doubt_own(&q))) {
+			snprintf(why, size, "what may be another %s lies nearer the start, at (%.1f, %.1f)", shape,
+				 q.centroid.x, q.centroid.y);
+			return true;
+		}
+	}
+	if (o.squares <= OBJECTS_CRUMB)
+		snprintf(why, size, "the %s covers only %d squares, as a crumb too small to name covers as many",
+			 shape, (int)o.squares);
+	else if (o.shape == SHAPE_SQUARE && o.reading.aspect > SHAPE_SQUARE_ASPECT)
+		snprintf(why, size, "the %s reads %.2f times as long as wide, over a square's %.1f", shape,
+			 o.reading.aspect, SHAPE_SQUARE_ASPECT);
+	else if (o.shape == SHAPE_BRICK && o.reading.aspect < SHAPE_BRICK_ASPECT)
+		snprintf(why, size, "the %s reads %.2f times as long as wide, under a brick's %.1f", shape,
+			 o.reading.aspect, SHAPE_BRICK_ASPECT);
+	else
+		return false;
+	return true;
 }
 
 bool objects_unconfirmed_square(const Controller *c, int32_t k, int32_t *x, int32_t *y)

@@ -278,7 +278,11 @@ void push_seat_finish(Controller *c)
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
 	} else if (short_by > CONTROLLER_CORNER_SLACK)
 		goals_corner_failed(c, short_by);
-	else
+	else if (c->doubt[0]) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why, "Utak doubts the object he pushed into the %s is the %s: %s",
+			 task_corner_name(c->task.corner), task_shape_name(c->task.shape), c->doubt);
+	} else
 		c->phase = PHASE_RELEASE;
 }
 

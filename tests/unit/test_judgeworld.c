@@ -44,24 +44,47 @@ TEST_CASE(judge_shapes_at_every_5_degrees)
 		Vec2 triangle[] = {{0, 0}, {z, 0}, {0.3 * z, z}};
 		Vec2 rhombus[] = {{0, 0}, {z, 0}, {1.5 * z, z}, {0.5 * z, z}};
 		Vec2 tee[] = {{0, 0}, {3 * z, 0}, {3 * z, z}, {2 * z, z}, {2 * z, 2 * z}, {z, 2 * z}, {z, z}, {0, z}};
+		/* Each figure's least width, by hand: the square's, brick's and
+		 * between's z; the L's 2z (its short leg's length); the triangle's the
+		 * altitude on its longest side, z^2 / (z sqrt(0.49 + 1)). Narrower than
+		 * JUDGE_SHAPE_MIN_WIDTH, a figure is unnamed. */
+		bool wide = z >= JUDGE_SHAPE_MIN_WIDTH, l_wide = 2 * z >= JUDGE_SHAPE_MIN_WIDTH;
+		bool t_wide = z / sqrt(1.49) >= JUDGE_SHAPE_MIN_WIDTH;
 		for (int deg = 0; deg < 360; deg += 5)
 			for (int extra = 0; extra < 2; extra++) {
 				Polygon p;
 				p = turned(square, 4, deg, extra);
-				TEST_CHECK(judge_shape_name(&p) == SHAPE_SQUARE);
+				TEST_CHECK(judge_shape_name(&p) == (wide ? SHAPE_SQUARE : SHAPE_NONE));
 				p = turned(brick, 4, deg, extra);
-				TEST_CHECK(judge_shape_name(&p) == SHAPE_BRICK);
+				TEST_CHECK(judge_shape_name(&p) == (wide ? SHAPE_BRICK : SHAPE_NONE));
 				p = turned(between, 4, deg, extra);
 				TEST_CHECK(judge_shape_name(&p) == SHAPE_NONE);
 				p = turned(lshape, 6, deg, extra);
-				TEST_CHECK(judge_shape_name(&p) == SHAPE_LSHAPE);
+				TEST_CHECK(judge_shape_name(&p) == (l_wide ? SHAPE_LSHAPE : SHAPE_NONE));
 				p = turned(triangle, 3, deg, extra);
-				TEST_CHECK(judge_shape_name(&p) == SHAPE_TRIANGLE);
+				TEST_CHECK(judge_shape_name(&p) == (t_wide ? SHAPE_TRIANGLE : SHAPE_NONE));
 				p = turned(rhombus, 4, deg, extra);
 				TEST_CHECK(judge_shape_name(&p) == SHAPE_NONE);
 				p = turned(tee, 8, deg, extra);
 				TEST_CHECK(judge_shape_name(&p) == SHAPE_NONE);
 			}
+	}
+}
+
+TEST_CASE(judge_shapes_too_small_to_name)
+{
+	/* A crumb 1.9 squares wide covers a 3 x 3 block of the TABLE, as a 3 x 3
+	 * square does: unnamed. From 2 squares wide, named, at every angle. */
+	for (int deg = 0; deg < 360; deg += 5) {
+		Vec2 crumb[] = {{0, 0}, {1.9, 0}, {1.9, 1.9}, {0, 1.9}};
+		Vec2 least[] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+		Vec2 thin[] = {{0, 0}, {6, 0}, {6, 1.5}, {0, 1.5}};
+		Polygon p = turned(crumb, 4, deg, 0);
+		TEST_CHECK(judge_shape_name(&p) == SHAPE_NONE);
+		p = turned(least, 4, deg, 0);
+		TEST_CHECK(judge_shape_name(&p) == SHAPE_SQUARE);
+		p = turned(thin, 4, deg, 0);
+		TEST_CHECK(judge_shape_name(&p) == SHAPE_NONE);
 	}
 }
 
@@ -168,6 +191,7 @@ int main(void)
 {
 	(void)act;	/* the fixture's motor helper: not needed here */
 	TEST_RUN(judge_shapes_at_every_5_degrees);
+	TEST_RUN(judge_shapes_too_small_to_name);
 	TEST_RUN(judge_centroid_is_the_area_centroid);
 	TEST_RUN(judge_rooms_a_doorway);
 	TEST_RUN(judge_rooms_a_big_room_with_piers_is_one);

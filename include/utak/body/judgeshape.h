@@ -5,6 +5,12 @@
  *
  * THE RULE (orientation-free: every measure is invariant under rotation and
  * translation):
+ *   0. Size: a polygon less than JUDGE_SHAPE_MIN_WIDTH squares wide (its extent
+ *      across its narrowest direction) is unnamed: the TABLE represents it by
+ *      squares that as many other shapes cover, so no eye could name it, and the
+ *      controller names nothing that small either (shape.h, SHAPE_MIN_SIDE; a
+ *      crumb of 1.2 x 1.9 squares covering a 3 x 3 block was "the square" nearest
+ *      the start and the real square beyond it was not).
  *   1. Merge: drop a vertex closer than JUDGE_SHAPE_MERGE squares to the previous
  *      kept one, and a vertex whose turn is under JUDGE_SHAPE_STRAIGHT degrees
  *      (collinear), until none is left to drop.
@@ -19,6 +25,7 @@
 #include "utak/base/geom.h"
 #include "utak/base/task.h"
 
+#define JUDGE_SHAPE_MIN_WIDTH 2.0	/* squares: narrower is too small to name */
 #define JUDGE_SHAPE_MERGE 0.05		/* squares: near-duplicate vertices */
 #define JUDGE_SHAPE_STRAIGHT 3.0	/* degrees: a turn smaller is no corner */
 #define JUDGE_SHAPE_RIGHT 10.0		/* degrees from 90 (or 270) still right */

@@ -74,6 +74,9 @@ typedef enum ControllerPhase {
 	PHASE_FAILED,	/* the task cannot be done, for the reason in `why` */
 } ControllerPhase;
 
+/* Objects remembered as once seen whole in the fovea (objects.h), at most. */
+#define CONTROLLER_EXAMINED 256
+
 typedef struct Controller {
 	Task task;
 	bool has_task;		/* false for --act runs: perception only */
@@ -94,6 +97,13 @@ typedef struct Controller {
 	Vec2 start;		/* Utak's believed point when the task began, model frame */
 	int32_t target;		/* the task's object: its model ident, 0 none */
 	Vec2 target_at;		/* ... and its centroid when last seen, model frame */
+	char doubt[160];	/* why the object grasped may not be the task's (objects_doubt), or empty */
+	int32_t examined[CONTROLLER_EXAMINED]; /* idents of objects once seen whole in the fovea */
+	int examined_count;
+	int32_t felt[CONTROLLER_EXAMINED];  /* idents touch has shown to be objects (a letter not B) */
+	int felt_count;
+	int32_t walls[CONTROLLER_EXAMINED]; /* idents touch has shown to be wall (B): no objects */
+	int walls_count;
 	bool exploring;		/* the goal is a frontier of the unseen, not the task's */
 	bool surveying;		/* a push into a corner: going to look at the corner first */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown

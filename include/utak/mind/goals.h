@@ -94,4 +94,16 @@ typedef struct GoalResult {
 /* goals_choose(c, out): the goal of the current phase on c's screen and space. */
 void goals_choose(Controller *c, GoalResult *out);
 
+/* goals_more_to_see(c): something reachable is still unseen (goals_frontier), or an
+ * object never seen whole in the fovea is left to look at closer, once, on the
+ * current screen and space. */
+bool goals_more_to_see(Controller *c);
+
+/* "go next-room" (goals.c): a door as the judge counts one, the space on each side
+ * at least this many times its clearance and this much more; "in the next room"
+ * is GOALS_DOORWAY squares beyond a door's half width. */
+#define GOALS_ROOM_RATIO 2.0
+#define GOALS_ROOM_MARGIN 2.0
+#define GOALS_DOORWAY 2.0
+
 #endif

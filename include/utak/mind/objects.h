@@ -32,6 +32,7 @@
 #define UTAK_OBJECTS_H
 
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 
 #include "utak/mind/controller.h"
@@ -55,6 +56,7 @@ typedef struct ObjectReading {
 	bool guessed;     /* the shape is a guess: the squares read as if seen in the fovea */
 	double confidence; /* 1 confirmed; below, the share seen in the fovea, halved for a guess */
 	ShapeReading reading;
+	bool examined;     /* every square once seen in the fovea (now or before) */
 } ObjectReading;
 
 /* objects_read(c, k): what object node k is, by shape (cached). */
@@ -64,6 +66,14 @@ ObjectReading objects_read(Controller *c, int32_t k);
  * is named (as a hypothesis or confirmed) the task's shape. Sets c->target. */
 int32_t objects_find_target(Controller *c);
 
+/* objects_feel(c): after each impression, the object nodes in the touch cells
+ * remembered by what touch felt there: a letter other than B, an object; B, wall
+ * (paper 3.4.2: a set the eye takes for an object may be a wall it did not see
+ * meet the verge). Utak goes round an object only once he has felt it
+ * (objects_felt; controller.c); c->walls keeps what touch found to be wall. */
+void objects_feel(Controller *c);
+bool objects_felt(const Controller *c, int32_t k);
+
 /* objects_touching(c, k): touch shows an object's colour in a square of node k (any
  * object when k < 0). */
 bool objects_touching(const Controller *c, int32_t k);
@@ -71,6 +81,36 @@ bool objects_touching(const Controller *c, int32_t k);
 /* objects_touching_target(c): Utak touches the task's object, confirmed as the
  * task's shape; a target confirmed as another shape is dropped (c->target = 0). */
 bool objects_touching_target(Controller *c);
+
+/* objects_doubt(c, k, why, size): whether the judge could name object node k, seen
+ * whole in the fovea as the task's shape, otherwise (why says how). The eye knows
+ * an object by the squares it covers, and the same squares are covered by objects
+ * of other names: Utak claims a task on an object only when they are not.
+ *   A CRUMB: a set of at most OBJECTS_CRUMB squares is covered as well by an
+ *   object under two squares wide, which has no shape name (judgeshape.h,
+ *   JUDGE_SHAPE_MIN_WIDTH; its corners fall inside the squares); and a square
+ *   just two wide may cover as few as 4, too few to name (shape.h).
+ *   NEARER THE START: the task's object is the one of its shape nearest the
+ *   start; another object nearer may be it when its squares were never all seen
+ *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
+ *   squares or more each way (a square two wide or more, unless its sides lie on
+ *   the grid's lines, does). A crumb named another shape is taken at its name.
+ *   THE GAP: a square is at most SHAPE_SQUARE_ASPECT long for its width, a brick at
+ *   least SHAPE_BRICK_ASPECT; read between the two (shape.h names it the nearer),
+ *   the object may be neither.
+ * What it cannot tell, and no eye can at this scale: a polygon of more corners
+ * whose cut corners fall within the squares of a rectangle's (a hexagon with
+ * corners cut by under a square reads as the rectangle). */
+/* The most squares a rectangle under two squares wide and at most 1.2 times as
+ * long covers (measured: 1.99 x 2.39 at every 5 degrees and eighth-square
+ * offsets, 14; a 1.99 square covers at most 12). */
+#define OBJECTS_CRUMB 14
+bool objects_doubt(Controller *c, int32_t k, char *why, size_t size);
+/* objects_doubtful(c, k): node k is seen whole and doubtful by its own measures
+ * (a crumb, or in the gap): one of the shape beyond doubt goes before it as the
+ * task's object (objects_find_target), and after a loop round it Utak looks once
+ * more for one (controller.c). */
+bool objects_doubtful(Controller *c, int32_t k);
 
 /* objects_unconfirmed_square(c, k, &x, &y): a square of node k not yet seen in the
  * fovea, the nearest Utak; false when there is none. */
