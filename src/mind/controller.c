@@ -33,6 +33,7 @@
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
+#include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
 #include "utak/mind/tug.h"
@@ -185,12 +186,28 @@ static void remember(Controller *c, Vec2 p)
 		c->visited[c->visited_count++] = p;
 }
 
+/* corner_room_doubt(c): whether the model can tell that Utak's point is in the room
+ * he started in (roomdoubt.h), on this cycle's screen (goals_corner_shortfall built
+ * it). */
+static RoomDoubt corner_room_doubt(Controller *c)
+{
+	int32_t ui, uj;
+	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
+	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
+	goals_reach(&c->screen.free, ui, uj, dist);
+	Vec2 look;
+	RoomDoubt d = roomdoubt_check(c, dist, c->model.utak, &look);
+	free(dist);
+	return d;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
 	c->have_plan = false;
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
+		c->room_look = false;
 		return;
 	}
 	int64_t short_by;
@@ -207,8 +224,9 @@ static void arrive(Controller *c)
 	case TASK_GO_CORNER:
 		if ((short_by = goals_corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
 			goals_corner_failed(c, short_by);
-		else
+		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK)
 			c->phase = PHASE_DONE;
+		/* else not sure of the room: the next goal is a look at the wall between */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

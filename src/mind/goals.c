@@ -20,6 +20,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
+#include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
 
@@ -616,6 +617,18 @@ void goals_choose(Controller *c, GoalResult *out)
 	switch (c->surveying ? TASK_GO_CORNER : c->task.kind) {
 	case TASK_GO_CORNER:
 		out->found = goals_corner(c, g, dist, &rm, start_room, &out->goal);
+		/* A corner only of a room the model can tell is the start's: else a look
+		 * first at the wall between, at fine resolution (roomdoubt.h). */
+		int32_t li, lj;
+		if (c->room_look && goals_cell_of(s, c->room_look_at, &li, &lj) && dist[lj * g->w + li] >= 0) {
+			out->goal = c->room_look_at; /* kept: the map may flip as he moves */
+			out->exploring = out->found = true;
+		} else if (out->found && !c->surveying &&
+			   roomdoubt_check(c, dist, out->goal, &c->room_look_at) == ROOMDOUBT_LOOK) {
+			out->goal = c->room_look_at;
+			out->exploring = c->room_look = true;
+		} else
+			c->room_look = false;
 		if (!out->found)
 			snprintf(out->why, sizeof out->why, "no reachable space toward the %s",
 				 task_corner_name(c->task.corner));

@@ -106,6 +106,8 @@ typedef struct Controller {
 	int walls_count;
 	bool exploring;		/* the goal is a frontier of the unseen, not the task's */
 	bool surveying;		/* a push into a corner: going to look at the corner first */
+	bool room_look;		/* going to look at a wall that may part two rooms (roomdoubt.h) */
+	Vec2 room_look_at;	/* ... from there, kept until reached */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];

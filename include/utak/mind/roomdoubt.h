@@ -1,0 +1,43 @@
+/* roomdoubt.h - whether Utak's model can tell which room a point lies in, and where
+ * to look when it cannot (paper 3.3: a hypothesis of low confidence is confirmed or
+ * dropped when seen closer; 3.4.2: an occupied set the eye has not resolved may be
+ * the verge). CONTROLLER SIDE: it reads the world model and its screen.
+ *
+ * WHY. A wall seen only by the outer zones of the retina (2 x 2 or 4 x 4 squares a
+ * cell) is misread: a cell half on the wall shares its level over all its squares,
+ * so a wall two squares thick can read as floor where a cell straddles it, and a
+ * block of wall cut off so can read as a small object, which counts as space for
+ * rooms. Two rooms then join through a gap that is not there, and Utak, believing
+ * himself in the corner of the room he started in, stands in the next room's.
+ *
+ * THE RULE. The DOUBTFUL squares are those seen only coarsely (never in the fovea)
+ * that are either occupied, object or not, or floor beside (8-neighbour) an
+ * occupied square: what a coarse cell across a wall's face would misplace. The
+ * PESSIMISTIC room map takes every doubtful square for wall, and merges rooms by the
+ * verdict's door rule (carryroom.h). When the start and a point p are in the same
+ * room there, they are in one room whatever the doubtful squares turn out to be
+ * (coarse evidence only ever moves a wall's face by the cell it shares), and Utak
+ * may claim. Otherwise the model cannot tell, and Utak goes to look, from within
+ * GOALS_LOOK, at the doubtful square that parts the two rooms (beside both) nearest
+ * him and not yet looked at (no visited point within GOALS_LOOK + 1): the fovea
+ * then reads it at one square a cell, and it is no longer doubtful. */
+#ifndef UTAK_ROOMDOUBT_H
+#define UTAK_ROOMDOUBT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "utak/mind/controller.h"
+
+typedef enum RoomDoubt {
+	ROOMDOUBT_NONE, /* the model tells: p is, or is not, in the start's room */
+	ROOMDOUBT_LOOK, /* it cannot tell: look from *goal */
+	ROOMDOUBT_STUCK /* it cannot tell, and there is nothing left to look at */
+} RoomDoubt;
+
+/* roomdoubt_check(c, dist, p, goal): whether the model can tell that point p lies in
+ * the start's room (the rule above) on c->screen; dist the steps from Utak over the
+ * free space (goals_reach). COMPLEXITY: O(w h) a room map of the screen. */
+RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2 *goal);
+
+#endif

@@ -1,0 +1,104 @@
+/* roomdoubt.c - whether the model can tell which room a point lies in, and where to
+ * look when it cannot (paper 3.3, 3.4.2; the rule is in roomdoubt.h).
+ * CONTROLLER SIDE: the world model's evidence and the screen.
+ *
+ * ALGORITHM. The screen's fixed space less the doubtful squares makes a room map
+ * (goals_roommap_build's steps on that grid), merged by the verdict's door rule
+ * (carryroom_merge); the start's and p's merged rooms are compared; if they differ,
+ * every doubtful square with a free 8-neighbour in each of the two rooms is a
+ * candidate, and the one whose nearest reachable cell (goals_near) is nearest Utak,
+ * not yet looked at, is looked at.
+ * MEMORY: a grid and a room map of the screen, freed before returning.
+ * COMPLEXITY: O(w h) for the map, O(w h) for the candidates, O(w h) for each
+ * goals_near over at most the candidates kept (the nearest first). */
+#include "utak/mind/roomdoubt.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "utak/base/util.h"
+#include "utak/mind/goals.h"
+
+/* doubtful(m, x, y): the square is seen only coarsely and occupied, or floor beside
+ * an occupied square (roomdoubt.h). */
+static bool doubtful(const WorldModel *m, int32_t x, int32_t y)
+{
+	Evidence e = worldmodel_evidence(m, x, y);
+	if (e.res == WORLDMODEL_UNSEEN || e.res >= WORLDMODEL_RES_FOVEA)
+		return false;
+	Belief b = worldmodel_belief(m, x, y);
+	if (b == BELIEF_OCCUPIED)
+		return true;
+	if (b != BELIEF_FLOOR)
+		return false;
+	/* A cell of side k straddling a wall's face reads floor over up to k - 1
+	 * squares of it beyond the face: 1 seen at 2 x 2, 3 seen at 4 x 4. */
+	int reach = e.res == WORLDMODEL_RES_INTERMEDIATE ? 1 : 3;
+	for (int dy = -reach; dy <= reach; dy++)
+		for (int dx = -reach; dx <= reach; dx++)
+			if ((dx || dy) && worldmodel_belief(m, x + dx, y + dy) == BELIEF_OCCUPIED)
+				return true;
+	return false;
+}
+
+RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	int32_t si, sj, pi, pj;
+	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, p, &pi, &pj))
+		return ROOMDOUBT_NONE;
+	RoomMap rm;
+	grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
+	int64_t n = (int64_t)s->w * s->h;
+	bool *doubt = util_alloc((size_t)n, sizeof *doubt);
+	for (int64_t k = 0; k < n; k++) {
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
+		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(m, s->x0 + i, s->y0 + j);
+		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE && !doubt[k])
+			rm.known.cells[k] = GRID_FREE;
+	}
+	skeleton_init(&rm.skeleton);
+	pathgraph_init(&rm.pathgraph);
+	rooms_init(&rm.rooms);
+	skeleton_compute(&rm.skeleton, &rm.known);
+	pathgraph_build(&rm.pathgraph, &rm.skeleton, &rm.known);
+	rooms_find(&rm.rooms, &rm.pathgraph);
+	int32_t a = rooms_at(&rm.rooms, si, sj), b = rooms_at(&rm.rooms, pi, pj);
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	if (a != b && a >= 0 && b >= 0) {
+		/* The doubtful squares between the two rooms: look at the one nearest
+		 * Utak that no goal reached has looked at already. */
+		verdict = ROOMDOUBT_STUCK;
+		double best = INFINITY;
+		for (int64_t k = 0; k < n; k++) {
+			if (!doubt[k])
+				continue;
+			int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
+			bool by_a = false, by_b = false;
+			for (int dy = -1; dy <= 1; dy++)
+				for (int dx = -1; dx <= 1; dx++) {
+					int32_t r = rooms_at(&rm.rooms, i + dx, j + dy);
+					by_a |= r == a;
+					by_b |= r == b;
+				}
+			Vec2 sq = goals_centre(s->x0 + i, s->y0 + j), near;
+			if (!by_a || !by_b || goals_distance(sq, m->utak) - GOALS_LOOK >= best)
+				continue;
+			bool looked = false;
+			for (int v = 0; v < c->visited_count && !looked; v++)
+				looked = goals_distance(sq, c->visited[v]) <= GOALS_LOOK + 1;
+			if (looked || !goals_near(c, sq, dist, &near) || goals_distance(near, sq) > GOALS_LOOK)
+				continue;
+			double d = goals_distance(near, m->utak);
+			if (d < best) {
+				best = d;
+				*goal = near;
+				verdict = ROOMDOUBT_LOOK;
+			}
+		}
+	}
+	goals_roommap_free(&rm);
+	free(doubt);
+	return verdict;
+}
