@@ -45,7 +45,10 @@ static bool cr_wide(double peak, double c)
 	return peak >= CARRYROOM_RATIO * c && peak >= c + CARRYROOM_MARGIN;
 }
 
-void carryroom_merge(const RoomMap *rm, CarryRooms *out)
+/* cr_merge(rm, open, out): carryroom_merge; with open (per rooms.h room: it touches
+ * the unknown), a narrowing that fails the rule joins its two sides only when
+ * neither side, as merged so far, is open (carryroom_merge_seen). */
+static void cr_merge(const RoomMap *rm, bool *open, CarryRooms *out)
 {
 	const Rooms *r = &rm->rooms;
 	int32_t n = r->room_count, nd = r->door_count;
@@ -53,6 +56,8 @@ void carryroom_merge(const RoomMap *rm, CarryRooms *out)
 	out->merged = util_alloc((size_t)(n > 0 ? n : 1), sizeof *out->merged);
 	out->peak = util_alloc((size_t)(n > 0 ? n : 1), sizeof *out->peak);
 	out->door = util_alloc((size_t)(nd > 0 ? nd : 1), sizeof *out->door);
+	out->undecided = util_alloc((size_t)(nd > 0 ? nd : 1), sizeof *out->undecided);
+	memset(out->undecided, 0, (size_t)(nd > 0 ? nd : 1) * sizeof *out->undecided);
 	for (int32_t k = 0; k < n; k++) {
 		out->merged[k] = k;
 		out->peak[k] = 0;
@@ -80,24 +85,58 @@ void carryroom_merge(const RoomMap *rm, CarryRooms *out)
 		out->door[q] = a != b && cr_wide(out->peak[a], key[q]) && cr_wide(out->peak[b], key[q]);
 		if (out->door[q] || a == b)
 			continue;
+		if (open && (open[a] || open[b])) {
+			out->door[q] = out->undecided[q] = true; /* kept apart until both are seen whole */
+			continue;
+		}
 		int32_t lo = a < b ? a : b, hi = a < b ? b : a;
 		out->merged[hi] = lo;
 		out->peak[lo] = fmax(out->peak[lo], out->peak[hi]);
+		if (open)
+			open[lo] = open[lo] || open[hi];
 	}
 	/* A door weighed before its rooms were merged with others may now join one
 	 * room to itself: no door. */
 	for (int32_t k = 0; k < n; k++)
 		out->merged[k] = cr_find(out->merged, k);
-	for (int32_t q = 0; q < nd; q++)
+	for (int32_t q = 0; q < nd; q++) {
 		out->door[q] = out->door[q] && out->merged[r->doors[q].room_a] != out->merged[r->doors[q].room_b];
+		out->undecided[q] = out->undecided[q] && out->door[q];
+	}
 	free(key);
 	free(order);
+}
+
+void carryroom_merge(const RoomMap *rm, CarryRooms *out)
+{
+	cr_merge(rm, NULL, out);
+}
+
+void carryroom_merge_seen(const RoomMap *rm, const Screen *s, CarryRooms *out)
+{
+	const Rooms *r = &rm->rooms;
+	int32_t n = r->room_count;
+	bool *open = util_alloc((size_t)(n > 0 ? n : 1), sizeof *open);
+	memset(open, 0, (size_t)(n > 0 ? n : 1) * sizeof *open);
+	for (int32_t j = 0; j < r->h; j++)
+		for (int32_t i = 0; i < r->w; i++) {
+			int32_t k = r->room[j * r->w + i];
+			if (k < 0 || k >= n || open[k])
+				continue;
+			for (int d = 0; d < 4 && !open[k]; d++) {
+				int32_t x = i + (d == 0) - (d == 1), y = j + (d == 2) - (d == 3);
+				open[k] = x >= 0 && y >= 0 && x < s->w && y < s->h && s->label[y * s->w + x] == SCREEN_UNKNOWN;
+			}
+		}
+	cr_merge(rm, open, out);
+	free(open);
 }
 
 void carryroom_free(CarryRooms *cr)
 {
 	free(cr->merged);
 	free(cr->door);
+	free(cr->undecided);
 	free(cr->peak);
 	*cr = (CarryRooms){0};
 }

@@ -201,6 +201,20 @@ static RoomDoubt corner_room_doubt(Controller *c)
 	return d;
 }
 
+/* corner_room_beyond(c): whether the start's room may go on past a door seen in
+ * part, toward a better corner (roomdoubt_beyond); if so, c->room_look_at is where
+ * to look from. */
+static bool corner_room_beyond(Controller *c)
+{
+	int32_t ui, uj;
+	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
+	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
+	goals_reach(&c->screen.free, ui, uj, dist);
+	bool look = roomdoubt_beyond(c, dist, &c->room_look_at) == ROOMDOUBT_LOOK;
+	free(dist);
+	return look;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -224,6 +238,8 @@ static void arrive(Controller *c)
 	case TASK_GO_CORNER:
 		if ((short_by = goals_corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
 			goals_corner_failed(c, short_by);
+		else if (corner_room_beyond(c))
+			c->room_look = true; /* the next goal: a look past the undecided door */
 		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK)
 			c->phase = PHASE_DONE;
 		/* else not sure of the room: the next goal is a look at the wall between */

@@ -20,6 +20,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
@@ -85,31 +86,42 @@ int64_t goals_corner_score(Corner k, int32_t x, int32_t y)
 
 /* goals_room_corner_best(c, rm, room): the best corner score of any floor seen in the
  * room (INT64_MIN when none): the corner a subject is measured against, as the
- * judge measures it (judge.h). */
+ * judge measures it (judge.h). The room is rooms.c's room merged across every
+ * narrowing the verdict does not count as a door, once both its sides are seen
+ * whole (carryroom_merge_seen), as the judge's rooms are: a wall stub or a bay cuts
+ * no room in two for a corner. */
 int64_t goals_room_corner_best(const Controller *c, const RoomMap *rm, int32_t room)
 {
 	const Screen *s = &c->screen;
 	int64_t best = INT64_MIN;
+	CarryRooms cr;
+	carryroom_merge_seen(rm, &c->screen, &cr);
+	int32_t merged = room >= 0 && room < cr.count ? cr.merged[room] : -1;
 	for (int32_t at = 0; at < s->w * s->h; at++)
-		if (s->label[at] == SCREEN_SPACE && rooms_at(&rm->rooms, at % s->w, at / s->w) == room) {
+		if (s->label[at] == SCREEN_SPACE && merged >= 0 && carryroom_at(&cr, rm, at % s->w, at / s->w) == merged) {
 			int64_t v = goals_corner_score(c->task.corner, s->x0 + at % s->w, s->y0 + at / s->w);
 			best = v > best ? v : best;
 		}
+	carryroom_free(&cr);
 	return best;
 }
 
-/* goals_corner(c, g, dist, room): the reachable cell of `room` extreme toward the
- * task's corner (any room when room < 0). */
+/* goals_corner(c, g, dist, room): the reachable cell of `room` (merged by the
+ * verdict's door rule, as in goals_room_corner_best) extreme toward the task's
+ * corner (any room when room < 0). */
 bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm,
 			int32_t room, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
 	int64_t best_score = INT64_MIN;
 	int32_t best = -1;
+	CarryRooms cr;
+	carryroom_merge_seen(rm, &c->screen, &cr);
+	int32_t merged = room >= 0 && room < cr.count ? cr.merged[room] : -1;
 	for (int32_t j = 0; j < g->h; j++)
 		for (int32_t i = 0; i < g->w; i++) {
 			int32_t k = j * g->w + i;
-			if (dist[k] < 0 || (room >= 0 && rooms_at(&rm->rooms, i, j) != room))
+			if (dist[k] < 0 || (room >= 0 && carryroom_at(&cr, rm, i, j) != merged))
 				continue;
 			/* Only space seen to be floor: the unknown beyond a verge glimpsed in the
 			 * periphery would draw Utak off after corners that are not there. */
@@ -121,6 +133,7 @@ bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const
 				best = k;
 			}
 		}
+	carryroom_free(&cr);
 	if (best < 0)
 		return false;
 	*goal = goals_centre(s->x0 + best % g->w, s->y0 + best / g->w);

@@ -4,7 +4,7 @@
  *
  * ALGORITHM. The screen's fixed space less the doubtful squares makes a room map
  * (goals_roommap_build's steps on that grid), merged by the verdict's door rule
- * (carryroom_merge); the start's and p's merged rooms are compared; if they differ,
+ * where both sides are seen whole (carryroom_merge_seen); the start's and p's merged rooms are compared; if they differ,
  * every doubtful square with a free 8-neighbour in each of the two rooms is a
  * candidate, and the one whose nearest reachable cell (goals_near) is nearest Utak,
  * not yet looked at, is looked at.
@@ -17,6 +17,7 @@
 #include <stdlib.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/goals.h"
 
 /* doubtful(m, x, y): the square is seen only coarsely and occupied, or floor beside
@@ -64,7 +65,9 @@ RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2
 	skeleton_compute(&rm.skeleton, &rm.known);
 	pathgraph_build(&rm.pathgraph, &rm.skeleton, &rm.known);
 	rooms_find(&rm.rooms, &rm.pathgraph);
-	int32_t a = rooms_at(&rm.rooms, si, sj), b = rooms_at(&rm.rooms, pi, pj);
+	CarryRooms cr;
+	carryroom_merge_seen(&rm, s, &cr);
+	int32_t a = carryroom_at(&cr, &rm, si, sj), b = carryroom_at(&cr, &rm, pi, pj);
 	RoomDoubt verdict = ROOMDOUBT_NONE;
 	if (a != b && a >= 0 && b >= 0) {
 		/* The doubtful squares between the two rooms: look at the one nearest
@@ -78,7 +81,7 @@ RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2
 			bool by_a = false, by_b = false;
 			for (int dy = -1; dy <= 1; dy++)
 				for (int dx = -1; dx <= 1; dx++) {
-					int32_t r = rooms_at(&rm.rooms, i + dx, j + dy);
+					int32_t r = carryroom_at(&cr, &rm, i + dx, j + dy);
 					by_a |= r == a;
 					by_b |= r == b;
 				}
@@ -98,7 +101,65 @@ RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2
 			}
 		}
 	}
+	carryroom_free(&cr);
 	goals_roommap_free(&rm);
 	free(doubt);
+	return verdict;
+}
+
+RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj;
+	if (!goals_cell_of(s, c->start, &si, &sj))
+		return ROOMDOUBT_NONE;
+	RoomMap rm;
+	goals_roommap_build(&rm, s);
+	CarryRooms cr;
+	carryroom_merge_seen(&rm, s, &cr);
+	int32_t a = carryroom_at(&cr, &rm, si, sj);
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	int64_t here = a >= 0 ? goals_room_corner_best(c, &rm, rooms_at(&rm.rooms, si, sj)) : INT64_MAX;
+	double best = INFINITY;
+	for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count; q++) {
+		const RoomsDoor *d = &rm.rooms.doors[q];
+		int32_t ra = cr.merged[d->room_a], rb = cr.merged[d->room_b];
+		if (!cr.undecided[q] || (ra != a && rb != a))
+			continue;
+		int32_t other = ra == a ? rb : ra;
+		/* Only a side that may hold a better corner: a cell of it, or a square
+		 * never seen beside it, scores above the best of the start's room. */
+		bool better = false;
+		for (int32_t k = 0; k < s->w * s->h && !better; k++) {
+			if (carryroom_at(&cr, &rm, k % s->w, k / s->w) != other)
+				continue;
+			for (int dd = 0; dd < 5 && !better; dd++) {
+				int32_t x = k % s->w + (dd == 1) - (dd == 2), y = k / s->w + (dd == 3) - (dd == 4);
+				if (x < 0 || y < 0 || x >= s->w || y >= s->h)
+					continue;
+				int32_t at = y * s->w + x;
+				if (dd > 0 && s->label[at] != SCREEN_UNKNOWN)
+					continue;
+				better = goals_corner_score(c->task.corner, s->x0 + x, s->y0 + y) > here;
+			}
+		}
+		if (!better)
+			continue;
+		const RoomsRoom *r = &rm.rooms.rooms[ra == a ? d->room_b : d->room_a];
+		Vec2 centre = goals_centre(s->x0 + r->x, s->y0 + r->y), near;
+		if (!goals_near(c, centre, dist, &near))
+			continue;
+		bool looked = false;
+		for (int v = 0; v < c->visited_count && !looked; v++)
+			looked = goals_distance(near, c->visited[v]) <= GOALS_LOOK + 1;
+		double dd = goals_distance(near, c->model.utak);
+		if (!looked && dd < best) {
+			best = dd;
+			*goal = near;
+			verdict = ROOMDOUBT_LOOK;
+		}
+	}
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
 	return verdict;
 }

@@ -57,12 +57,22 @@ typedef struct CarryRooms {
 	int32_t count;	 /* rooms.h's rooms */
 	int32_t *merged; /* per rooms.h room: its merged room (the least index in it) */
 	bool *door;	 /* per rooms.h door: still a door by the verdict's rule */
+	bool *undecided; /* per rooms.h door: kept a door only because a side is seen in part
+			    (carryroom_merge_seen) */
 	double *peak;	 /* per merged room (indexed by its name): its largest clearance */
 } CarryRooms;
 
 /* carryroom_merge(rm, out): the rooms of rm by the verdict's rule (above).
  * COMPLEXITY: O(w h + doors log doors). */
 void carryroom_merge(const RoomMap *rm, CarryRooms *out);
+/* carryroom_merge_seen(rm, s, out): as carryroom_merge, but a narrowing that fails
+ * the rule joins its two sides only when both, as merged so far, are seen whole (no
+ * cell beside a square of s never seen); else it stays a door, undecided. A room
+ * seen in part reads narrower than it is and may yet widen into a room of its own:
+ * merged too soon, it would make the next room's corner look like the starting
+ * room's. Used for the corner of Utak's starting room (goals.c, roomdoubt.c).
+ * COMPLEXITY: O(w h + doors log doors). */
+void carryroom_merge_seen(const RoomMap *rm, const Screen *s, CarryRooms *out);
 void carryroom_free(CarryRooms *cr);
 /* carryroom_at(cr, rm, x, y): the merged room of cell (x, y), -1 blocked or off. */
 int32_t carryroom_at(const CarryRooms *cr, const RoomMap *rm, int32_t x, int32_t y);

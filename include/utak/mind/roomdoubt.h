@@ -40,4 +40,15 @@ typedef enum RoomDoubt {
  * free space (goals_reach). COMPLEXITY: O(w h) a room map of the screen. */
 RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2 *goal);
 
+/* roomdoubt_beyond(c, dist, goal): at a corner Utak would claim, whether the start's
+ * room may go on past a narrowing that is a door only because a side of it is seen
+ * in part (carryroom_merge_seen), into space that may hold a better corner (a cell
+ * of that side, or a square never seen beside it, scores above the best of the
+ * start's room). If so, *goal is where to look from: the reachable cell nearest
+ * that side's centre, not yet looked from. The verdict's rooms join across any
+ * narrowing that is no door (a wall stub, a bay): without the look, Utak would
+ * claim the corner of half a room. COMPLEXITY: O(w h) a room map of the screen,
+ * O(w h) for each undecided door. */
+RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal);
+
 #endif
