@@ -315,6 +315,58 @@ static void arrive(Controller *c)
 	}
 }
 
+/* swept_confident(c, from, to): every square Utak's body (a unit square about his
+ * point) passes over on the straight move from `from` to `to`, other than the one he
+ * stands on, is believed floor with the confidence CONTROLLER_LEG_CONF and nothing
+ * seen in it (p at most CONTROLLER_LEG_P), is free on the plan's space (not bumped
+ * into) and not under an object of the model. */
+static bool swept_confident(const Controller *c, Vec2 from, Vec2 to)
+{
+	int32_t ux = (int32_t)floor(from.x), uy = (int32_t)floor(from.y);
+	double len = goals_distance(from, to);
+	int steps = (int)ceil(len / 0.25) + 1;
+	/* Squares merely touched at an edge are not entered; CONTROLLER_LEG_MARGIN more
+	 * on every side are close to the move. */
+	const double half = 0.5 - 1e-6 + CONTROLLER_LEG_MARGIN;
+	for (int s = 0; s <= steps; s++) {
+		Vec2 p = vec2_add(from, vec2_scale(vec2_sub(to, from), (double)s / steps));
+		for (int32_t y = (int32_t)floor(p.y - half); y <= (int32_t)floor(p.y + half); y++)
+			for (int32_t x = (int32_t)floor(p.x - half); x <= (int32_t)floor(p.x + half); x++) {
+				if (x == ux && y == uy)
+					continue;
+				Evidence e = worldmodel_evidence(&c->model, x, y);
+				int32_t i, j;
+				if (e.res == WORLDMODEL_UNSEEN || e.p > CONTROLLER_LEG_P || e.conf < CONTROLLER_LEG_CONF ||
+				    worldmodel_node_at(&c->model, x, y) >= 0 || !goals_cell_of(&c->screen, vec2(x + 0.5, y + 0.5), &i, &j) ||
+				    c->space.cells[j * c->space.w + i] != GRID_FREE)
+					return false;
+			}
+	}
+	return true;
+}
+
+/* confident_reach(c, d, len): how far along the leg d (of length len) toward the
+ * next waypoint Utak may walk in one move (paper 3.1 step 9: "the degrees of
+ * confidence associated with those parts of the world model close to the planned
+ * actions"): the whole leg when it is at most CONTROLLER_LONG_LEG and swept over
+ * confidently free floor; else the longest whole number of squares up to
+ * CONTROLLER_LONG_LEG, ending on a square's centre, that is; 0 when not even
+ * CONTROLLER_MAX_LEG + 1 is (the short leg of old then stands). */
+static double confident_reach(const Controller *c, Vec2 d, double len)
+{
+	if (len <= CONTROLLER_MAX_LEG)
+		return 0;
+	if (len <= CONTROLLER_LONG_LEG && swept_confident(c, c->model.utak, vec2_add(c->model.utak, d)))
+		return len;
+	for (double r = floor(fmin(len, CONTROLLER_LONG_LEG)); r > CONTROLLER_MAX_LEG; r -= 1) {
+		Vec2 to = goals_centre((int32_t)floor(c->model.utak.x + d.x * r / len),
+				       (int32_t)floor(c->model.utak.y + d.y * r / len));
+		if (goals_distance(to, c->model.utak) > CONTROLLER_MAX_LEG && swept_confident(c, c->model.utak, to))
+			return r;
+	}
+	return 0;
+}
+
 bool controller_decide(Controller *c, MotorCommand *cmd)
 {
 	*cmd = (MotorCommand){0};
@@ -381,7 +433,14 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			c->next++;
 		Vec2 d = vec2_sub(c->route.pts[c->next], c->model.utak);
 		double len = hypot(d.x, d.y);
-		if (len > CONTROLLER_MAX_LEG) {
+		double reach = c->phase == PHASE_TRAVEL ? confident_reach(c, d, len) : 0;
+		if (reach >= len) {
+			/* The whole way to the waypoint is confidently free. */
+		} else if (reach > CONTROLLER_MAX_LEG) {
+			d = vec2_sub(goals_centre((int32_t)floor(c->model.utak.x + d.x * reach / len),
+						  (int32_t)floor(c->model.utak.y + d.y * reach / len)),
+				     c->model.utak);
+		} else if (len > CONTROLLER_MAX_LEG) {
 			/* A shorter leg ends on a square's centre, like every waypoint, so
 			 * that moves are whole squares: shapes then keep their digital form
 			 * as they move, and the eye's next impression is predictable. */

@@ -29,6 +29,20 @@
  * sees on the way (the fovea reaches 4 squares ahead) can change the plan before
  * he walks into it. */
 #define CONTROLLER_MAX_LEG 4.0
+/* A longer move, at most this many squares, where every square it sweeps is believed
+ * floor seen wholly empty (p at most CONTROLLER_LEG_P) with at least the confidence
+ * one look at a wholly empty peripheral cell gives (paper 3.1 step 9): across open
+ * floor seen, what Utak sees on the way adds nothing the plan needs, and the eye's
+ * field (16 squares ahead) still overlaps the last impression enough to place him
+ * (paper 3.5). A cell with anything in it (a crumb the coarse eye shows as a grey
+ * level) stops the long move there. Travelling only; pushes keep the short leg. */
+#define CONTROLLER_LONG_LEG 12.0
+#define CONTROLLER_LEG_P 0.01
+#define CONTROLLER_LEG_CONF 0.29
+/* ... and so is every square within this many of the squares it sweeps: near
+ * walls and objects Utak keeps to the short leg and looks at them on the way (the
+ * fovea's half width is 4). */
+#define CONTROLLER_LEG_MARGIN 3
 /* Utak has arrived at a point when his believed point is this close to it. */
 #define CONTROLLER_ARRIVED 0.25
 /* A corner is reached this many squares short of the best floor seen in the room
