@@ -484,56 +484,17 @@ bool goals_more_to_see(Controller *c)
 }
 
 /* THE NEXT ROOM, as the judge counts rooms (judge.h, judgerooms.h): a door is a
- * narrowing between two spaces that each widen well beyond it, to at least
- * GOALS_ROOM_RATIO times its clearance and GOALS_ROOM_MARGIN more. rooms.c cuts
- * the space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; a
- * cell it gives another room may be, to the judge, in the same room, and Utak
- * claimed the next room there. So the rooms rooms.c finds are grouped across every
- * door that fails the judge's test, each side's width read as the clearance at
- * its room's centre, the door's as the skeleton's clearance at its cell; and
- * "in the next room" means in another group and past the door line: farther from
- * each such door's cell than half its width and GOALS_DOORWAY squares (the judge
- * counts the doorway, the passage between the faces of the narrowing, in no
- * room). A room seen only in part reads narrower than it is: the door then waits
- * until Utak has looked through it (the frontier beyond it is explored first). */
-static bool judge_door(const RoomMap *rm, const RoomsDoor *d)
-{
-	double c = skeleton_clearance(&rm->skeleton, d->x, d->y);
-	for (int side = 0; side < 2; side++) {
-		double p = rm->rooms.rooms[side ? d->room_b : d->room_a].clearance;
-		if (p < GOALS_ROOM_RATIO * c || p < c + GOALS_ROOM_MARGIN)
-			return false;
-	}
-	return true;
-}
-
-static int32_t group_root(int32_t *up, int32_t r)
-{
-	while (up[r] != r)
-		r = up[r] = up[up[r]];
-	return r;
-}
-
-/* room_groups(rm): for each room of rm, its group's root (caller frees). */
-static int32_t *room_groups(const RoomMap *rm)
-{
-	int32_t n = rm->rooms.room_count;
-	int32_t *up = util_alloc((size_t)(n > 0 ? n : 1), sizeof *up);
-	for (int32_t r = 0; r < n; r++)
-		up[r] = r;
-	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
-		const RoomsDoor *door = &rm->rooms.doors[d];
-		if (!judge_door(rm, door)) {
-			int32_t a = group_root(up, door->room_a), b = group_root(up, door->room_b);
-			up[a > b ? a : b] = a < b ? a : b;
-		}
-	}
-	for (int32_t r = 0; r < n; r++)
-		up[r] = group_root(up, r);
-	return up;
-}
-
-/* next_room(c, g, dist, rm, si, sj, ui, uj, out): the goal of "go next-room". */
+ * narrowing between two spaces that each widen well beyond it. rooms.c cuts the
+ * space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; its rooms
+ * are merged by the verdict's rule restated on the model (carryroom.h, the same
+ * code the carrying tasks use), so a bay or a wall stub is no next room. "In the
+ * next room" means in another merged room (carryroom_merge: a side seen in part,
+ * still narrow, counts as the same room) and past the door line: farther from each
+ * such door's cell than half its width and GOALS_DOORWAY squares (the judge counts
+ * the doorway, the passage between the faces of the narrowing, in no room). The
+ * goal is the centre of the room beyond a door; a door kept only because a side of
+ * it is seen in part (carryroom_merge_seen, undecided) is a place to look from,
+ * once, not to claim. */
 static void next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
 		      int32_t sj, int32_t ui, int32_t uj, GoalResult *out)
 {
@@ -541,37 +502,55 @@ static void next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 	int32_t start_room = rooms_at(&rm->rooms, si, sj), here_room = rooms_at(&rm->rooms, ui, uj);
 	if (start_room < 0)
 		return;
-	int32_t *group = room_groups(rm), sg = group[start_room];
-	bool past = here_room >= 0 && group[here_room] != sg;
-	double best_d = INFINITY;
-	int32_t best = -1;
+	CarryRooms sure, seen;
+	carryroom_merge(rm, &sure);
+	carryroom_merge_seen(rm, s, &seen);
+	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room];
+	bool past = here_room >= 0 && sure.merged[here_room] != sp;
+	double best_d[2] = {INFINITY, INFINITY};
+	int32_t best[2] = {-1, -1};
 	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
 		const RoomsDoor *door = &rm->rooms.doors[d];
-		int32_t ga = group[door->room_a], gb = group[door->room_b];
-		if (ga == gb || (ga != sg && gb != sg))
-			continue; /* inside a group, or not a door of the starting room */
+		int32_t pa = sure.merged[door->room_a], pb = sure.merged[door->room_b];
+		int32_t ga = seen.merged[door->room_a], gb = seen.merged[door->room_b];
+		bool is_sure = pa != pb && (pa == sp || pb == sp), is_seen = ga != gb && (ga == ss || gb == ss);
+		if (!is_sure && !is_seen)
+			continue; /* inside a room, or not a door of the starting room */
 		if (hypot(ui - door->x, uj - door->y) <= door->width / 2.0 + GOALS_DOORWAY)
 			past = false;
-		const RoomsRoom *room = &rm->rooms.rooms[ga == sg ? door->room_b : door->room_a];
-		int32_t other = ga == sg ? gb : ga;
+		if (!is_seen)
+			continue;
+		const RoomsRoom *room = &rm->rooms.rooms[ga == ss ? door->room_b : door->room_a];
+		int32_t other = ga == ss ? gb : ga, kind = is_sure ? 0 : 1;
+		if (kind == 1) { /* a look beyond an undecided door: once */
+			bool looked = false;
+			Vec2 centre = goals_centre(s->x0 + room->x, s->y0 + room->y);
+			for (int v = 0; v < c->visited_count && !looked; v++)
+				looked = goals_distance(centre, c->visited[v]) <= GOALS_LOOK + 1;
+			if (looked)
+				continue;
+		}
 		for (int32_t k = 0; k < g->w * g->h; k++) {
 			int32_t i = k % g->w, j = k / g->w, r = rooms_at(&rm->rooms, i, j);
-			if (dist[k] < 0 || r < 0 || group[r] != other)
+			if (dist[k] < 0 || r < 0 || seen.merged[r] != other)
 				continue;
 			double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
-			if (dd < best_d) {
-				best_d = dd;
-				best = k;
+			if (dd < best_d[kind]) {
+				best_d[kind] = dd;
+				best[kind] = k;
 			}
 		}
 	}
-	free(group);
+	carryroom_free(&sure);
+	carryroom_free(&seen);
+	int32_t pick = best[0] >= 0 ? best[0] : best[1];
 	if (past) { /* already through a door and past its doorway: here will do */
 		out->found = true;
 		out->goal = goals_centre(s->x0 + ui, s->y0 + uj);
-	} else if (best >= 0) {
+	} else if (pick >= 0) {
 		out->found = true;
-		out->goal = goals_centre(s->x0 + best % g->w, s->y0 + best / g->w);
+		out->exploring = best[0] < 0;
+		out->goal = goals_centre(s->x0 + pick % g->w, s->y0 + pick / g->w);
 	}
 }
 
@@ -650,9 +629,13 @@ void goals_choose(Controller *c, GoalResult *out)
 		next_room(c, g, dist, &rm, si, sj, ui, uj, out);
 		if (!out->found) {
 			out->exploring = out->found = goals_frontier(c, dist, &out->goal);
-			if (!out->found)
-				snprintf(out->why, sizeof out->why, "no door out of this room, and nothing left unseen");
 		}
+		/* No door: before saying so, a look at any wall seen only coarsely that
+		 * may part the room in two (roomdoubt_door). */
+		if (!out->found && roomdoubt_door(c, dist, &out->goal) == ROOMDOUBT_LOOK)
+			out->exploring = out->found = true;
+		if (!out->found)
+			snprintf(out->why, sizeof out->why, "no door out of this room, and nothing left unseen");
 		break;
 	default: /* an object's task (going round it first finds it) */
 		if (c->task.kind == TASK_GO_ROUND && c->round_count > 0) {

@@ -42,29 +42,61 @@ static bool doubtful(const WorldModel *m, int32_t x, int32_t y)
 	return false;
 }
 
-RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2 *goal)
+/* pessimistic(c, si, sj, pi, pj, rm): the room map of the screen's fixed space less
+ * the doubtful squares (but for cells (si, sj) and (pi, pj)); returns the doubtful
+ * squares (caller frees both). */
+static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi, int32_t pj, RoomMap *rm)
 {
 	const Screen *s = &c->screen;
-	const WorldModel *m = &c->model;
-	int32_t si, sj, pi, pj;
-	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, p, &pi, &pj))
-		return ROOMDOUBT_NONE;
-	RoomMap rm;
-	grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
+	grid_init(&rm->known, s->w, s->h, GRID_BLOCKED);
 	int64_t n = (int64_t)s->w * s->h;
 	bool *doubt = util_alloc((size_t)n, sizeof *doubt);
 	for (int64_t k = 0; k < n; k++) {
 		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
-		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(m, s->x0 + i, s->y0 + j);
+		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(&c->model, s->x0 + i, s->y0 + j);
 		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE && !doubt[k])
-			rm.known.cells[k] = GRID_FREE;
+			rm->known.cells[k] = GRID_FREE;
 	}
-	skeleton_init(&rm.skeleton);
-	pathgraph_init(&rm.pathgraph);
-	rooms_init(&rm.rooms);
-	skeleton_compute(&rm.skeleton, &rm.known);
-	pathgraph_build(&rm.pathgraph, &rm.skeleton, &rm.known);
-	rooms_find(&rm.rooms, &rm.pathgraph);
+	skeleton_init(&rm->skeleton);
+	pathgraph_init(&rm->pathgraph);
+	rooms_init(&rm->rooms);
+	skeleton_compute(&rm->skeleton, &rm->known);
+	pathgraph_build(&rm->pathgraph, &rm->skeleton, &rm->known);
+	rooms_find(&rm->rooms, &rm->pathgraph);
+	return doubt;
+}
+
+/* look_at(c, dist, sq, best, goal): whether doubtful square sq is to be looked at
+ * from nearer Utak than *best: not looked at already (no goal reached within
+ * GOALS_LOOK + 1), and a reachable cell within GOALS_LOOK of it; *best and *goal
+ * updated if so. */
+static bool look_at(const Controller *c, const int32_t *dist, Vec2 sq, double *best, Vec2 *goal)
+{
+	Vec2 near;
+	if (goals_distance(sq, c->model.utak) - GOALS_LOOK >= *best)
+		return false;
+	for (int v = 0; v < c->visited_count; v++)
+		if (goals_distance(sq, c->visited[v]) <= GOALS_LOOK + 1)
+			return false;
+	if (!goals_near(c, sq, dist, &near) || goals_distance(near, sq) > GOALS_LOOK)
+		return false;
+	double d = goals_distance(near, c->model.utak);
+	if (d >= *best)
+		return false;
+	*best = d;
+	*goal = near;
+	return true;
+}
+
+RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj, pi, pj;
+	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, p, &pi, &pj))
+		return ROOMDOUBT_NONE;
+	RoomMap rm;
+	bool *doubt = pessimistic(c, si, sj, pi, pj, &rm);
+	int64_t n = (int64_t)s->w * s->h;
 	CarryRooms cr;
 	carryroom_merge_seen(&rm, s, &cr);
 	int32_t a = carryroom_at(&cr, &rm, si, sj), b = carryroom_at(&cr, &rm, pi, pj);
@@ -85,23 +117,85 @@ RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2
 					by_a |= r == a;
 					by_b |= r == b;
 				}
-			Vec2 sq = goals_centre(s->x0 + i, s->y0 + j), near;
-			if (!by_a || !by_b || goals_distance(sq, m->utak) - GOALS_LOOK >= best)
-				continue;
-			bool looked = false;
-			for (int v = 0; v < c->visited_count && !looked; v++)
-				looked = goals_distance(sq, c->visited[v]) <= GOALS_LOOK + 1;
-			if (looked || !goals_near(c, sq, dist, &near) || goals_distance(near, sq) > GOALS_LOOK)
-				continue;
-			double d = goals_distance(near, m->utak);
-			if (d < best) {
-				best = d;
-				*goal = near;
+			if (by_a && by_b && look_at(c, dist, goals_centre(s->x0 + i, s->y0 + j), &best, goal))
 				verdict = ROOMDOUBT_LOOK;
-			}
 		}
 	}
 	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	free(doubt);
+	return verdict;
+}
+
+RoomDoubt roomdoubt_door(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj, ui, uj;
+	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, c->model.utak, &ui, &uj))
+		return ROOMDOUBT_NONE;
+	RoomMap rm;
+	bool *doubt = pessimistic(c, si, sj, ui, uj, &rm);
+	int64_t n = (int64_t)s->w * s->h;
+	int32_t a = rooms_at(&rm.rooms, si, sj), nr = rm.rooms.room_count;
+	/* The rooms a narrowing joins to the start's on this map (rooms.h's gentler
+	 * rule: a look costs a few cycles, a door missed the task). */
+	bool *next = util_alloc((size_t)(nr > 0 ? nr : 1), sizeof *next);
+	bool any = false;
+	for (int32_t r = 0; r < nr; r++)
+		next[r] = false;
+	for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count; q++) {
+		int32_t ra = rm.rooms.doors[q].room_a, rb = rm.rooms.doors[q].room_b;
+		if (ra == a || rb == a)
+			next[ra == a ? rb : ra] = any = true;
+	}
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	if (any) {
+		/* The doubtful squares that part them: each 8-connected set of doubtful
+		 * squares beside both the start's room and a next one (a wall seen
+		 * coarsely is thicker than one square), looked at from the start's side,
+		 * nearest Utak first. */
+		int32_t *set = util_alloc((size_t)n, sizeof *set), *queue = util_alloc((size_t)n, sizeof *queue);
+		for (int64_t k = 0; k < n; k++)
+			set[k] = -1;
+		verdict = ROOMDOUBT_STUCK;
+		double best = INFINITY;
+		for (int64_t k0 = 0; k0 < n; k0++) {
+			if (!doubt[k0] || set[k0] >= 0)
+				continue;
+			int64_t head = 0, tail = 0;
+			bool by_a = false, by_b = false;
+			queue[tail++] = (int32_t)k0;
+			set[k0] = (int32_t)k0;
+			while (head < tail) {
+				int32_t k = queue[head++], i = k % s->w, j = k / s->w;
+				for (int dy = -1; dy <= 1; dy++)
+					for (int dx = -1; dx <= 1; dx++) {
+						int32_t x = i + dx, y = j + dy;
+						if (x < 0 || y < 0 || x >= s->w || y >= s->h)
+							continue;
+						int32_t at = y * s->w + x, r = rooms_at(&rm.rooms, x, y);
+						by_a |= r == a;
+						by_b |= r >= 0 && r != a && next[r];
+						if (doubt[at] && set[at] < 0) {
+							set[at] = (int32_t)k0;
+							queue[tail++] = at;
+						}
+					}
+			}
+			for (int64_t h = 0; by_a && by_b && h < tail; h++) {
+				int32_t k = queue[h], i = k % s->w, j = k / s->w;
+				bool beside_a = false;
+				for (int dy = -1; dy <= 1; dy++)
+					for (int dx = -1; dx <= 1; dx++)
+						beside_a |= rooms_at(&rm.rooms, i + dx, j + dy) == a;
+				if (beside_a && look_at(c, dist, goals_centre(s->x0 + i, s->y0 + j), &best, goal))
+					verdict = ROOMDOUBT_LOOK;
+			}
+		}
+		free(set);
+		free(queue);
+	}
+	free(next);
 	goals_roommap_free(&rm);
 	free(doubt);
 	return verdict;
@@ -117,7 +211,7 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 	goals_roommap_build(&rm, s);
 	CarryRooms cr;
 	carryroom_merge_seen(&rm, s, &cr);
-	int32_t a = carryroom_at(&cr, &rm, si, sj);
+	int32_t a = rooms_at(&rm.rooms, si, sj);
 	RoomDoubt verdict = ROOMDOUBT_NONE;
 	int64_t here = a >= 0 ? goals_room_corner_best(c, &rm, rooms_at(&rm.rooms, si, sj)) : INT64_MAX;
 	double best = INFINITY;
@@ -131,7 +225,7 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 		 * never seen beside it, scores above the best of the start's room. */
 		bool better = false;
 		for (int32_t k = 0; k < s->w * s->h && !better; k++) {
-			if (carryroom_at(&cr, &rm, k % s->w, k / s->w) != other)
+			if (rooms_at(&rm.rooms, k % s->w, k / s->w) != other)
 				continue;
 			for (int dd = 0; dd < 5 && !better; dd++) {
 				int32_t x = k % s->w + (dd == 1) - (dd == 2), y = k / s->w + (dd == 3) - (dd == 4);

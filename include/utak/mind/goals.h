@@ -99,11 +99,9 @@ void goals_choose(Controller *c, GoalResult *out);
  * current screen and space. */
 bool goals_more_to_see(Controller *c);
 
-/* "go next-room" (goals.c): a door as the judge counts one, the space on each side
- * at least this many times its clearance and this much more; "in the next room"
- * is GOALS_DOORWAY squares beyond a door's half width. */
-#define GOALS_ROOM_RATIO 2.0
-#define GOALS_ROOM_MARGIN 2.0
+/* "go next-room" (goals.c): a door as the judge counts one (carryroom.h's
+ * restatement of its rule); "in the next room" is GOALS_DOORWAY squares beyond a
+ * door's half width. */
 #define GOALS_DOORWAY 2.0
 
 #endif

@@ -40,6 +40,20 @@ typedef enum RoomDoubt {
  * free space (goals_reach). COMPLEXITY: O(w h) a room map of the screen. */
 RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2 *goal);
 
+/* roomdoubt_door(c, dist, goal): for "go next-room" when the model shows no door out
+ * of the start's room and nothing is left unseen: whether the PESSIMISTIC map (the
+ * rule above, with Utak's own cell kept free) shows a narrowing (a door of
+ * rooms.h: the gentler rule, since a look costs a few cycles and a door missed
+ * the task; the claim still waits for the verdict's rule on the model itself)
+ * between the start's room and another. A wall seen
+ * coarsely can read as floor where a cell straddles it, or as an object (space to
+ * rooms), and two rooms then read as one through a gap that is not there. If so,
+ * Utak looks, from within GOALS_LOOK, at the nearest square not yet looked at of a
+ * set of doubtful squares (8-connected: a wall is thicker than one square) beside
+ * both the start's room and such another, on the start's side; ROOMDOUBT_STUCK
+ * when none is left to look at. COMPLEXITY: O(w h). */
+RoomDoubt roomdoubt_door(const Controller *c, const int32_t *dist, Vec2 *goal);
+
 /* roomdoubt_beyond(c, dist, goal): at a corner Utak would claim, whether the start's
  * room may go on past a narrowing that is a door only because a side of it is seen
  * in part (carryroom_merge_seen), into space that may hold a better corner (a cell
