@@ -127,7 +127,7 @@ browser-deps:
 	@[ -d tests/browser/node_modules/playwright-core ] || \
 	    (cd tests/browser && npm ci --no-audit --no-fund --loglevel=error)
 
-golden: utak
+golden: utak build/gen/.done
 	sh tests/regen.sh ./utak
 
 # Rewrites the sessions shown in README.md (tests/readme.test.sh checks them).
