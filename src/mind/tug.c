@@ -17,11 +17,15 @@ static bool tug_way_free(const Controller *c, int dx, int dy, int n)
 	return true;
 }
 
-/* tug_applies(c): Utak travels looking for an object the model has not found. */
+/* tug_applies(c): Utak travels looking for an object the model has not found,
+ * for a task that lets him move it. Going round is not one: the loop is round the
+ * object where it stood when the task began (the judge's measure, judge.c), and a
+ * loop round the place he drew it to is not that, though the model, which sees the
+ * object only where it is now, would count it. */
 static bool tug_applies(Controller *c)
 {
 	TaskKind k = c->task.kind;
-	if (c->phase != PHASE_TRAVEL || k == TASK_GO_CORNER || k == TASK_GO_NEXT_ROOM)
+	if (c->phase != PHASE_TRAVEL || k == TASK_GO_CORNER || k == TASK_GO_NEXT_ROOM || k == TASK_GO_ROUND)
 		return false;
 	return goals_joined_seen(c) && objects_find_target(c) < 0;
 }

@@ -181,8 +181,9 @@ static double wm_level_count(int level, int n)
 	return k ? (double)sum / k : (double)level * n / EYE_MAX_LEVEL;
 }
 
-/* wm_update(e, q, res, m): one observation of one square (the rules of worldmodel.h). */
-static void wm_update(Evidence *e, double q, int res, WorldModel *m)
+/* wm_update(e, q, res, faint, m): one observation of one square (the rules of
+ * worldmodel.h); faint: the cell's level is not zero though q reads floor. */
+static void wm_update(Evidence *e, double q, int res, bool faint, WorldModel *m)
 {
 	double weight = wm_base(res) * fabs(2 * q - 1);
 	if (e->res < res) {
@@ -199,6 +200,14 @@ static void wm_update(Evidence *e, double q, int res, WorldModel *m)
 		e->conf = (float)(e->conf + (1 - e->conf) * weight * WORLDMODEL_CONF_GROWTH);
 		if (e->seen < 255)
 			e->seen++;
+	} else if (faint && e->p >= 0.5f) {
+		/* A cell that is not zero says something in it is occupied, not which
+		 * squares: it cannot make floor of a square an earlier cell of the same
+		 * resolution, aligned otherwise, read as occupied (paper 3.4.2: only a
+		 * zero cell is floorspace). WHY: a thin wall under coarse cells that
+		 * straddle it reads as floor in every cell, and the last look would
+		 * erase it. A zero cell or a finer one settles the square. */
+		e->conf = (float)(e->conf * WORLDMODEL_CONF_DECAY);
 	} else {
 		e->p = (float)q;
 		e->conf = (float)(weight * WORLDMODEL_CONF_CONTRADICTED);
@@ -266,7 +275,7 @@ static void wm_observe(WorldModel *m, int32_t sx, int32_t sy, const Impression *
 		q = q < 0 ? 0 : q > 1 ? 1 : q;
 		for (int s = 0; s < count; s++)
 			if (sq[s]->res <= res)
-				wm_update(sq[s], q, res, m);
+				wm_update(sq[s], q, res, level > 0, m);
 	}
 }
 

@@ -514,6 +514,39 @@ TEST_CASE(worldmodel_halted_at_coarse_wall)
 	sim_end(&s, &m);
 }
 
+/* A thin wall seen only by peripheral cells is not erased by a look whose cells
+ * straddle it (worldmodel.h, the confidence rules; paper 3.4.2: only a zero cell
+ * is floorspace). A wall two squares thick lies 8 and 9 squares ahead, in one row
+ * of 4 x 4 cells; Utak steps back one square at a time until it lies 11 and 12
+ * ahead, across two rows of cells, each a quarter full, whose level alone reads
+ * every square of them as floor. Every square of the wall's middle, seen only
+ * peripherally, must still be believed occupied, by the TABLE. */
+TEST_CASE(worldmodel_coarse_thin_wall_kept)
+{
+	Sim s;
+	WorldModel m;
+	sim_start(&s, &m, "table 60 60\nwall 10 28 50 28 50 30 10 30\nutak 30.5 20.5 north\n");
+	for (int i = 0; i < 3; i++)
+		sim_step(&s, &m, "move 0 -1");
+	Vec2 err = belief_error(&s, &m);
+	TEST_CHECK(err.x == 0 && err.y == 0);
+	int wall = 0, kept = 0;
+	for (int32_t y = 0; y < s.t.h; y++)
+		for (int32_t x = 20; x <= 40; x++) {
+			if (table_owner(&s.t, x, y) != TABLE_VERGE)
+				continue;
+			Evidence e = worldmodel_evidence(&m, x - s.ux0, y - s.uy0);
+			if (e.res == WORLDMODEL_UNSEEN)
+				continue; /* the table's own verge, out of sight */
+			TEST_CHECK(e.res == WORLDMODEL_RES_PERIPHERAL);
+			wall++;
+			kept += worldmodel_belief(&m, x - s.ux0, y - s.uy0) == BELIEF_OCCUPIED;
+		}
+	TEST_CHECK(wall == 2 * 21);
+	TEST_CHECK(kept == wall);
+	sim_end(&s, &m);
+}
+
 /* A property over random walks (a fixed little generator, so the same walks on
  * every machine): moves of up to 8 squares each way, many of them halting against
  * objects and walls, in every world of this test. After every move the believed
@@ -569,6 +602,7 @@ int main(void)
 	TEST_RUN(worldmodel_push_halted_at_wall);
 	TEST_RUN(worldmodel_noisy_pushes_keep_track);
 	TEST_RUN(worldmodel_halted_at_coarse_wall);
+	TEST_RUN(worldmodel_coarse_thin_wall_kept);
 	TEST_RUN(worldmodel_random_walks_stay_close);
 	return TEST_EXIT();
 }

@@ -35,7 +35,8 @@
  *
  * BELIEF per square: unknown (never seen), occupied (p >= 1/2: a square under a
  * cell at least half occupied), or floor. A coarse cell with only a little in it
- * (a 4 x 4 cell at level 1 or 2) therefore reads as floor until it is seen finer;
+ * (a 4 x 4 cell at level 1 or 2) therefore reads as floor until it is seen finer
+ * (unless an earlier cell of its resolution read the square occupied: below);
  * a planner that must not cut through thin things seen far away can look at
  * worldmodel_evidence (p, res, conf). Utak's own square is floor (he stands on
  * it). The first model's objects need not be the first impression's object
@@ -50,7 +51,12 @@
  * - The same resolution, agreeing (same side of 1/2): p is averaged and the
  *   confidence grows, c += (1 - c) x weight x WORLDMODEL_CONF_GROWTH.
  * - The same resolution, contradicting: p = q and c = weight x
- *   WORLDMODEL_CONF_CONTRADICTED.
+ *   WORLDMODEL_CONF_CONTRADICTED; except that a cell whose level is not zero
+ *   never makes floor of a square believed occupied (it says something in it is
+ *   occupied, not which squares: paper 3.4.2, only a zero cell is floorspace):
+ *   the square stays occupied, its confidence times WORLDMODEL_CONF_DECAY. So a
+ *   thin wall seen only by coarse cells that straddle it is not erased by the
+ *   last look; a zero cell or a finer one settles the square.
  * - A coarser cell whose level disagrees with what the finer knowledge inside it
  *   predicts lowers those squares' confidence by WORLDMODEL_CONF_DECAY; a square
  *   whose confidence falls under WORLDMODEL_CONF_FORGET is re-estimated at the
