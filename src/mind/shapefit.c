@@ -54,6 +54,12 @@
 #define FIT_TRIANGLE_ROUNDS 3
 /* The narrowest side or arm a model may have, squares. */
 #define FIT_MIN_SIDE 0.5
+/* Passes of a descent at one step size before the step is halved anyway. A start
+ * lies within a square or two of its fit, a few passes at FIT_STEP; without a bound
+ * a descent over a set of many squares could creep on by gains of a hair for
+ * minutes (a 141 x 49 generated world, whose coarse walls made a set of hundreds of
+ * squares: 16 minutes of CPU in one run of go round). */
+#define FIT_MAX_PASSES 64
 
 /* shapefit_rect_along(h, n, ux, uy): the rectangle enclosing the hull with sides along the
  * unit vector (ux, uy) and across it. */
@@ -410,7 +416,7 @@ static double fit_descend(const ShapeMask *m, FitModel *f, int first, int count,
 			  int most_halvings)
 {
 	double best = fit_cost(m, f), scale = ldexp(1.0, -first_halving);
-	for (int halvings = first_halving; halvings <= most_halvings && best > 0;) {
+	for (int halvings = first_halving, passes = 0; halvings <= most_halvings && best > 0; passes++) {
 		bool improved = false;
 		for (int i = first; i < first + count; i++)
 			for (int dir = -1; dir <= 1; dir += 2) {
@@ -424,9 +430,10 @@ static double fit_descend(const ShapeMask *m, FitModel *f, int first, int count,
 					*p = keep;
 				}
 			}
-		if (!improved) {
+		if (!improved || passes == FIT_MAX_PASSES) {
 			scale /= 2;
 			halvings++;
+			passes = -1;
 		}
 	}
 	return best;
@@ -452,7 +459,7 @@ static double fit_descend_vertices(const ShapeMask *m, FitModel *f, Vec2 v[3])
 {
 	fit_triangle_on(f, v);
 	double best = fit_cost(m, f), step = FIT_STEP;
-	for (int halvings = 0; halvings <= FIT_HALVINGS && best > 0;) {
+	for (int halvings = 0, passes = 0; halvings <= FIT_HALVINGS && best > 0; passes++) {
 		bool improved = false;
 		for (int i = 0; i < 6; i++)
 			for (int dir = -1; dir <= 1; dir += 2) {
@@ -469,9 +476,10 @@ static double fit_descend_vertices(const ShapeMask *m, FitModel *f, Vec2 v[3])
 					*p = keep;
 				}
 			}
-		if (!improved) {
+		if (!improved || passes == FIT_MAX_PASSES) {
 			step /= 2;
 			halvings++;
+			passes = -1;
 		}
 	}
 	return best;
