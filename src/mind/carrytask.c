@@ -306,12 +306,7 @@ static void ct_roommap_build(const Controller *c, int32_t k, bool objects_fixed,
 		if (l != SCREEN_UNKNOWN && s->fixed.cells[at] == GRID_FREE && !wall_like)
 			r->known.cells[at] = GRID_FREE;
 	}
-	skeleton_init(&r->skeleton);
-	pathgraph_init(&r->pathgraph);
-	rooms_init(&r->rooms);
-	skeleton_compute(&r->skeleton, &r->known);
-	pathgraph_build(&r->pathgraph, &r->skeleton, &r->known);
-	rooms_find(&r->rooms, &r->pathgraph);
+	goals_roommap_find(r);
 }
 
 /* ct_box_has(b, x, y, grow): cell (x, y) lies in box b (x0, y0, x1, y1, inclusive)

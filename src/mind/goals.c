@@ -58,6 +58,11 @@ void goals_roommap_build(RoomMap *r, const Screen *s)
 	for (int32_t k = 0; k < s->w * s->h; k++)
 		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE)
 			r->known.cells[k] = GRID_FREE;
+	goals_roommap_find(r);
+}
+
+void goals_roommap_find(RoomMap *r)
+{
 	skeleton_init(&r->skeleton);
 	pathgraph_init(&r->pathgraph);
 	rooms_init(&r->rooms);

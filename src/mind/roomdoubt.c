@@ -57,12 +57,7 @@ static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi
 		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE && !doubt[k])
 			rm->known.cells[k] = GRID_FREE;
 	}
-	skeleton_init(&rm->skeleton);
-	pathgraph_init(&rm->pathgraph);
-	rooms_init(&rm->rooms);
-	skeleton_compute(&rm->skeleton, &rm->known);
-	pathgraph_build(&rm->pathgraph, &rm->skeleton, &rm->known);
-	rooms_find(&rm->rooms, &rm->pathgraph);
+	goals_roommap_find(rm);
 	return doubt;
 }
 

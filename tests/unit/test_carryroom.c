@@ -26,12 +26,7 @@ static void roommap(RoomMap *rm)
 		for (int32_t x = 0; x < table.w; x++)
 			if (table_owner(&table, x, y) != TABLE_VERGE)
 				rm->known.cells[y * table.w + x] = GRID_FREE;
-	skeleton_init(&rm->skeleton);
-	pathgraph_init(&rm->pathgraph);
-	rooms_init(&rm->rooms);
-	skeleton_compute(&rm->skeleton, &rm->known);
-	pathgraph_build(&rm->pathgraph, &rm->skeleton, &rm->known);
-	rooms_find(&rm->rooms, &rm->pathgraph);
+	goals_roommap_find(rm);
 }
 
 /* merged_count(cr, rm): the merged rooms that hold a free cell. */

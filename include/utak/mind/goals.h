@@ -43,6 +43,10 @@ typedef struct RoomMap {
 	Rooms rooms;
 } RoomMap;
 void goals_roommap_build(RoomMap *r, const Screen *s);
+/* goals_roommap_find(r): the skeleton, pathgraph and rooms of r->known, a grid the
+ * caller filled (goals_roommap_build fills it with the screen's fixed space seen;
+ * other callers leave out what they must take for wall). */
+void goals_roommap_find(RoomMap *r);
 void goals_roommap_free(RoomMap *r);
 
 /* goals_corner_score(k, x, y): how far square (x, y) lies toward corner k. */
