@@ -17,6 +17,9 @@
 # done). With RATES_TARGETS naming a mode (or "all") the issue's target for it is
 # checked: perturb, every applicable run achieved; random, disagreement under 3% and
 # no false success; noise, at least 90% achieved. Runs go RATES_JOBS (2) at a time.
+# RATES_KEEP=FILE appends every run's line ("MODE|TASK|STATUS|LAST LINE|WORLD
+# OPTIONS") to FILE, to find the runs behind a figure; the generated worlds are
+# kept beside it in FILE.worlds/.
 set -u
 UTAK=$1; shift
 GEN=${GEN:-build/rel/gen}
@@ -117,6 +120,15 @@ for mode in "$@"; do
 	*) echo "rates.sh: unknown mode $mode" >&2; exit 2 ;;
 	esac
 	run_list "$tmp/list"
+	if [ -n "${RATES_KEEP:-}" ]; then
+		mkdir -p "$RATES_KEEP.worlds"
+		for d in g p; do
+			[ -d "$tmp/$d" ] && cp -r "$tmp/$d" "$RATES_KEEP.worlds/"
+		done
+		awk -v m="$mode" -v t="$tmp/" -v k="$RATES_KEEP.worlds/" \
+			'{ while ((i = index($0, t)) > 0) $0 = substr($0, 1, i - 1) k substr($0, i + length(t)); print m "|" $0 }' \
+			"$tmp/res" | sort -t'|' -k5 -V >>"$RATES_KEEP"
+	fi
 	report "$mode"
 done
 exit $status
