@@ -373,38 +373,91 @@ enum {
 };
 
 /* The thinning works on a copy of the grid padded by one background cell on every
- * side, so that a neighbourhood never needs a bounds check. */
+ * side, so that a neighbourhood never needs a bounds check (and 3 bytes more at the
+ * end, for the last row's 4-byte loads; see thinner_raster).
+ *
+ * A neighbourhood is read as its "raster mask": the three cells of the row below as
+ * one 4-byte load folded to 3 bits (thinner_fold), the west and east cells as bytes,
+ * the three of the row above as a 4-byte load. The middle row is read by bytes since
+ * the visit before this one usually stored the west cell: a 4-byte load over a byte
+ * just stored waits for the store to reach the cache (no store forwarding), and that
+ * stall was a third of the visits' time (perf annotate). Which bit of the raster mask
+ * is which neighbour depends on the byte order, so the tables over it are built by
+ * running thinner_raster itself on a probe (thinner_init_tables). */
 typedef struct Thinner {
 	int32_t w, h, pw; /* grid size, padded width w + 2 */
-	uint8_t *state;   /* (w + 2) * (h + 2) SKELETON_* bits */
+	uint8_t *state;   /* (w + 2) * (h + 2) + 3 SKELETON_* bits */
 	int32_t off[8];   /* padded index offsets of the 8 neighbours */
 	int32_t *stack;   /* padded indices to try again */
 	int32_t top;
 	const int32_t *dist2; /* w * h, unpadded */
-	uint8_t kind[256];    /* THIN_* of each neighbourhood mask */
+	uint32_t lanes;       /* bit 0 of the first three bytes of a 4-byte load */
+	unsigned shift;       /* where thinner_fold's product holds those three bits */
+	uint8_t kind[256];    /* THIN_* of each raster mask */
+	uint8_t ring[256];    /* the neighbourhood mask (bit i: neighbour i) of each */
 } Thinner;
 
-/* thinner_mask_of(st, pi, pw): the neighbourhood mask, written out: the offsets are
- * known shapes, so the eight loads issue together (a loop over t->off did not). */
-static inline unsigned thinner_mask_of(const uint8_t *st, int32_t pi, int32_t pw)
+/* thinner_load4(p): the 4 bytes at p, in the machine's byte order. */
+static inline uint32_t thinner_load4(const uint8_t *p)
 {
-	return (unsigned)(st[pi + 1] & SKELETON_IN) | (unsigned)(st[pi + 1 + pw] & SKELETON_IN) << 1 |
-	       (unsigned)(st[pi + pw] & SKELETON_IN) << 2 |
-	       (unsigned)(st[pi - 1 + pw] & SKELETON_IN) << 3 | (unsigned)(st[pi - 1] & SKELETON_IN) << 4 |
-	       (unsigned)(st[pi - 1 - pw] & SKELETON_IN) << 5 |
-	       (unsigned)(st[pi - pw] & SKELETON_IN) << 6 | (unsigned)(st[pi + 1 - pw] & SKELETON_IN) << 7;
+	uint32_t v;
+	memcpy(&v, p, sizeof v);
+	return v;
 }
 
-static inline unsigned thinner_mask(const Thinner *t, int32_t pi)
+/* thinner_fold(t, v): bit 0 of v's first three bytes, as 3 adjacent bits. The bits
+ * sit 8 apart (at 0, 8, 16 little-endian; 24, 16, 8 big-endian); times 1 + 2^7 + 2^14
+ * brings them together at 14-16 (22-24) with no two terms overlapping, so no carry. */
+static inline unsigned thinner_fold(const Thinner *t, uint32_t v)
 {
-	return thinner_mask_of(t->state, pi, t->pw);
+	return (unsigned)((((uint64_t)(v & t->lanes)) * 0x4081u) >> t->shift) & 7u;
 }
 
-/* thinner_ridge_end(t, pi, m): pi, simple with one edge neighbour (mask m), is a
- * ridge end. A ridge end has exactly one 4-neighbour in the set and no 8-neighbour in
- * the set farther from the obstacles: it is the tip of a branch of the medial axis
- * (the distance map has a local maximum there along the branch). Without the second
- * condition every cell of the grassfire front that happens to lose its side
+/* thinner_raster(t, pi, bit): the raster mask of pi's neighbours for the state bit
+ * (SKELETON_IN: in the set; see the Thinner). */
+static inline unsigned thinner_raster(const Thinner *t, int32_t pi)
+{
+	const uint8_t *st = t->state;
+	const int32_t pw = t->pw;
+	return thinner_fold(t, thinner_load4(st + pi - pw - 1)) |
+	       (unsigned)(st[pi - 1] & SKELETON_IN) << 3 | (unsigned)(st[pi + 1] & SKELETON_IN) << 4 |
+	       thinner_fold(t, thinner_load4(st + pi + pw - 1)) << 5;
+}
+
+/* thinner_init_tables(t): lanes, shift, and the tables over the raster mask, found by
+ * reading probes: one neighbour at a time set in a 3 x 3 patch. */
+static void thinner_init_tables(Thinner *t)
+{
+	const uint8_t first3[4] = {1, 1, 1, 0};
+	memcpy(&t->lanes, first3, sizeof t->lanes);
+	t->shift = (t->lanes & 1u) ? 14 : 22; /* little- or big-endian */
+	uint8_t kind8[256];
+	skeleton_build_kind_table(kind8);
+	uint8_t patch[3 * 5 + 4];
+	Thinner probe = *t;
+	probe.state = patch;
+	probe.pw = 5;
+	unsigned bit_of[8];
+	for (int i = 0; i < 8; i++) {
+		memset(patch, 0, sizeof patch);
+		patch[6 + SKELETON_DX[i] + 5 * SKELETON_DY[i]] = SKELETON_IN;
+		bit_of[i] = thinner_raster(&probe, 6);
+		assert(bit_of[i] != 0 && (bit_of[i] & (bit_of[i] - 1)) == 0);
+	}
+	for (unsigned r = 0; r < 256; r++) {
+		unsigned m = 0;
+		for (int i = 0; i < 8; i++)
+			m |= (r & bit_of[i]) ? 1u << i : 0;
+		t->ring[r] = (uint8_t)m;
+		t->kind[r] = kind8[m];
+	}
+}
+
+/* thinner_ridge_end(t, pi, m): pi, simple with one edge neighbour (neighbourhood
+ * mask m), is a ridge end. A ridge end has exactly one 4-neighbour in the set and no
+ * 8-neighbour in the set farther from the obstacles: it is the tip of a branch of the
+ * medial axis (the distance map has a local maximum there along the branch). Without
+ * the second condition every cell of the grassfire front that happens to lose its side
  * neighbours first would be kept as an end, and grow a spur; with it, a branch whose
  * distance rises from its tip (toward a convex corner of the space) burns back to its
  * junction, as Blum's branches into corners carry no choice of route. One division
@@ -424,9 +477,24 @@ static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
 /* thinner_deletable(t, pi): pi is simple and not a ridge end. */
 static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 {
-	unsigned m = thinner_mask(t, pi);
-	uint8_t k = t->kind[m];
-	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, m));
+	unsigned r = thinner_raster(t, pi);
+	uint8_t k = t->kind[r];
+	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, t->ring[r]));
+}
+
+/* thinner_push_again(t, pi): stacks pi's neighbours that are in the set and visited
+ * (to be tried again now that pi is gone) and not stacked already. */
+static inline void thinner_push_again(Thinner *t, int32_t pi)
+{
+	for (int i = 0; i < 8; i++) {
+		int32_t qi = pi + t->off[i];
+		uint8_t st = t->state[qi];
+		if ((st & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
+		    (SKELETON_IN | SKELETON_VISITED)) {
+			t->state[qi] = st | SKELETON_STACKED;
+			t->stack[t->top++] = qi;
+		}
+	}
 }
 
 /* thinner_delete_more(t, pi, top): deletes pi, then every visited cell that its
@@ -437,15 +505,7 @@ static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 	t->state[pi] &= (uint8_t)~SKELETON_IN;
 	t->top = top;
 	for (;;) {
-		for (int i = 0; i < 8; i++) {
-			int32_t qi = pi + t->off[i];
-			uint8_t st = t->state[qi];
-			if ((st & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
-			    (SKELETON_IN | SKELETON_VISITED)) {
-				t->state[qi] = st | SKELETON_STACKED;
-				t->stack[t->top++] = qi;
-			}
-		}
+		thinner_push_again(t, pi);
 		/* find the next stacked cell that is deletable now */
 		for (;;) {
 			if (t->top == 0)
@@ -463,38 +523,36 @@ static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t, pi, 0); }
 
 /* thinner_visit(t, pi): the visit of pi in the distance order: marks it visited and,
- * when deletable, deletes it (thinner_delete_from). The same as those two calls, with
- * the 8 neighbours loaded once for the deletion test and for the re-try stack: this
- * runs for every free cell. The neighbours to try again, visited and in the set, come
- * as a second mask from the same loads (none is stacked: the stack is empty between
- * visits), so the usual deletion, with none, costs no loop over the neighbours.
- * Every visit is a real one: on the benchmark grids no free cell is interior (all 8
- * neighbours in the set) when its turn comes, as the distance order makes each cell
- * part of the front then; so a border queue would save no visit, and was not built. */
-static void thinner_visit(Thinner *t, int32_t pi)
+ * when deletable, deletes it (thinner_delete_from); returns whether pi was kept. The
+ * same as those two calls, with the neighbourhood read once (thinner_raster's loads)
+ * for the deletion test and for the re-try stack: this runs for every free cell. The
+ * neighbours to try again, visited and in the set, come as a second raster mask from
+ * the same loads (none is stacked: the stack is empty between visits), so the usual
+ * deletion, with none, costs no loop over the neighbours. Every visit is a real one:
+ * on the benchmark grids no free cell is interior (all 8 neighbours in the set) when
+ * its turn comes, as the distance order makes each cell part of the front then; so a
+ * border queue would save no visit, and was not built. */
+static inline bool thinner_visit(Thinner *t, int32_t pi)
 {
 	uint8_t *st = t->state;
 	const int32_t pw = t->pw;
-	const unsigned n[8] = {st[pi + 1],  st[pi + 1 + pw],  st[pi + pw],  st[pi - 1 + pw],
-	                       st[pi - 1], st[pi - 1 - pw], st[pi - pw], st[pi + 1 - pw]};
-	/* written out: GCC 12 at -O2 kept the loop over i, with a shift by a register,
-	 * and it was a third of skeleton_compute's time (perf record) */
-	const unsigned m = (n[0] & SKELETON_IN) | (n[1] & SKELETON_IN) << 1 |
-	                   (n[2] & SKELETON_IN) << 2 | (n[3] & SKELETON_IN) << 3 |
-	                   (n[4] & SKELETON_IN) << 4 | (n[5] & SKELETON_IN) << 5 |
-	                   (n[6] & SKELETON_IN) << 6 | (n[7] & SKELETON_IN) << 7;
-	/* the neighbours in the set and visited (SKELETON_IN and SKELETON_VISITED) */
-	const unsigned v = (n[0] >> 1 & 1u) | (n[1] >> 1 & 1u) << 1 | (n[2] >> 1 & 1u) << 2 |
-	                   (n[3] >> 1 & 1u) << 3 | (n[4] >> 1 & 1u) << 4 | (n[5] >> 1 & 1u) << 5 |
-	                   (n[6] >> 1 & 1u) << 6 | (n[7] >> 1 & 1u) << 7;
-	const unsigned again = m & v;
-	st[pi] = (uint8_t)(st[pi] | SKELETON_VISITED);
-	const uint8_t k = t->kind[m];
-	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, m)))
-		return;
-	st[pi] &= (uint8_t)~SKELETON_IN;
+	const uint32_t below = thinner_load4(st + pi - pw - 1), above = thinner_load4(st + pi + pw - 1);
+	const unsigned west = st[pi - 1], east = st[pi + 1], self = st[pi];
+	const unsigned r = thinner_fold(t, below) | (west & SKELETON_IN) << 3 |
+	                   (east & SKELETON_IN) << 4 | thinner_fold(t, above) << 5;
+	const uint8_t k = t->kind[r];
+	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, t->ring[r]))) {
+		st[pi] = (uint8_t)(self | SKELETON_VISITED);
+		return true;
+	}
+	st[pi] = (uint8_t)((self | SKELETON_VISITED) & ~SKELETON_IN);
+	/* the neighbours in the set and visited: bit 0 and bit 1 of their state; stacked
+	 * in the order of the ring, as thinner_push_again does */
+	const unsigned again = t->ring[thinner_fold(t, below & below >> 1) |
+	                               (west & west >> 1 & 1u) << 3 | (east & east >> 1 & 1u) << 4 |
+	                               thinner_fold(t, above & above >> 1) << 5];
 	if (again == 0)
-		return;
+		return false;
 	t->top = 0;
 	for (int i = 0; i < 8; i++)
 		if ((again >> i) & 1) {
@@ -504,14 +562,14 @@ static void thinner_visit(Thinner *t, int32_t pi)
 		}
 	for (;;) {
 		if (t->top == 0)
-			return;
+			return false;
 		int32_t qi = t->stack[--t->top];
 		st[qi] &= (uint8_t)~SKELETON_STACKED;
 		if (thinner_deletable(t, qi)) {
 			/* rare: a cascade; the stack as it is now is taken over */
 			int32_t saved = t->top;
 			thinner_delete_more(t, qi, saved);
-			return;
+			return false;
 		}
 	}
 }
@@ -519,42 +577,55 @@ static void thinner_visit(Thinner *t, int32_t pi)
 /* ---------------------------------------------------------------- pruning */
 
 /* thinner_degree(t, pi): the 4-neighbours of pi in the set. */
-static int thinner_degree(const Thinner *t, int32_t pi)
+static inline int thinner_degree(const Thinner *t, int32_t pi)
 {
-	return (t->state[pi + t->off[0]] & SKELETON_IN) + (t->state[pi + t->off[2]] & SKELETON_IN) +
-	       (t->state[pi + t->off[4]] & SKELETON_IN) + (t->state[pi + t->off[6]] & SKELETON_IN);
+	const uint8_t *st = t->state;
+	return (st[pi + 1] & SKELETON_IN) + (st[pi - 1] & SKELETON_IN) + (st[pi + t->pw] & SKELETON_IN) +
+	       (st[pi - t->pw] & SKELETON_IN);
 }
 
-/* thinner_prune(t, dist2, order, nset, maxd): removes the spurs (see the header
- * comment); returns the number of cells removed. Spurs are found on the set as
- * thinned, then removed. maxd is the largest dist2: no junction is farther from the
- * obstacles, so a branch longer than SKELETON_SPUR_FACTOR * sqrt(maxd) +
- * SKELETON_SPUR_SLACK cells is no spur whatever its junction, and its walk stops
- * there (the same test, monotone in the clearance; on the 1024 maze, whose dead ends
- * are long corridors, it saves most of the walking). */
-static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, int32_t nset,
+/* thinner_next(t, prev, cur): cur's first 4-neighbour in the set, other than prev, in
+ * the order of the ring; -1 when none. */
+static inline int32_t thinner_next(const Thinner *t, int32_t prev, int32_t cur)
+{
+	for (int i = 0; i < 8; i += 2) {
+		int32_t qi = cur + t->off[i];
+		if (qi != prev && (t->state[qi] & SKELETON_IN))
+			return qi;
+	}
+	return -1;
+}
+
+static int thinner_cmp_index(const void *a, const void *b)
+{
+	int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+	return (x > y) - (x < y);
+}
+
+/* thinner_prune(t, dist2, kept, nkept, maxd): removes the spurs (see the header
+ * comment), then deletes what that makes deletable; returns the number of cells
+ * removed as spurs. kept[0 .. nkept) holds every cell of the set (padded indices;
+ * some may have left it since), in any order; it is overwritten. Spurs are found on
+ * the set as thinned, then removed. maxd is the largest dist2: no junction is farther
+ * from the obstacles, so a branch longer than SKELETON_SPUR_FACTOR * sqrt(maxd) +
+ * SKELETON_SPUR_SLACK cells is no spur whatever its junction, and its walk stops there
+ * (the same test, monotone in the clearance; on the 1024 maze, whose dead ends are
+ * long corridors, it saves most of the walking). */
+static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *kept, int32_t nkept,
                              int32_t maxd)
 {
 	const double longest = SKELETON_SPUR_FACTOR * sqrt((double)maxd) + SKELETON_SPUR_SLACK;
-	/* order[0 .. nset) lists the padded indices of the set; cells to remove are
-	 * collected at the end of the stack array, which is as long as the grid. */
+	/* cells to remove are collected in the stack array, as long as the grid */
 	int32_t nremove = 0;
 	int32_t *remove = t->stack;
-	for (int32_t k = 0; k < nset; k++) {
-		int32_t end = order[k];
-		if (thinner_degree(t, end) != 1)
+	for (int32_t k = 0; k < nkept; k++) {
+		int32_t end = kept[k];
+		if (!(t->state[end] & SKELETON_IN) || thinner_degree(t, end) != 1)
 			continue;
 		int32_t prev = -1, cur = end, length = 1;
 		bool to_junction = false;
 		for (;;) {
-			int32_t next = -1;
-			for (int i = 0; i < 8; i += 2) {
-				int32_t qi = cur + t->off[i];
-				if (qi != prev && (t->state[qi] & SKELETON_IN)) {
-					next = qi;
-					break;
-				}
-			}
+			int32_t next = thinner_next(t, prev, cur);
 			int d = thinner_degree(t, next);
 			if (d >= 3) {
 				to_junction = true;
@@ -579,14 +650,7 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 		cur = end;
 		for (;;) {
 			remove[nremove++] = cur;
-			int32_t next = -1;
-			for (int i = 0; i < 8; i += 2) {
-				int32_t qi = cur + t->off[i];
-				if (qi != prev && (t->state[qi] & SKELETON_IN)) {
-					next = qi;
-					break;
-				}
-			}
+			int32_t next = thinner_next(t, prev, cur);
 			if (thinner_degree(t, next) >= 3)
 				break;
 			prev = cur;
@@ -596,13 +660,26 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *order, i
 	for (int32_t k = 0; k < nremove; k++)
 		t->state[remove[k]] &= (uint8_t)~SKELETON_IN;
 	/* only a cell next to a removed one has a new neighbourhood (every other was
-	 * left not deletable by the thinning), so only those are tested again */
+	 * left not deletable by the thinning), so only those are tested again: listed in
+	 * kept (no longer needed) and sorted, so that they are tested in raster order as
+	 * a test of every cell in raster order would (and equals: a deletion here
+	 * retries its neighbours through the stack) */
+	int32_t nrecheck = 0;
 	for (int32_t k = 0; k < nremove; k++)
 		for (int i = 0; i < 8; i++) {
-			uint8_t *q = &t->state[remove[k] + t->off[i]];
-			if (*q & SKELETON_IN)
-				*q |= SKELETON_RECHECK;
+			int32_t qi = remove[k] + t->off[i];
+			if ((t->state[qi] & (SKELETON_IN | SKELETON_RECHECK)) == SKELETON_IN) {
+				t->state[qi] |= SKELETON_RECHECK;
+				kept[nrecheck++] = qi;
+			}
 		}
+	qsort(kept, (size_t)nrecheck, sizeof *kept, thinner_cmp_index);
+	for (int32_t k = 0; k < nrecheck; k++) {
+		int32_t pi = kept[k];
+		t->state[pi] &= (uint8_t)~SKELETON_RECHECK;
+		if ((t->state[pi] & SKELETON_IN) && thinner_deletable(t, pi))
+			thinner_delete_from(t, pi);
+	}
 	return nremove;
 }
 
@@ -654,7 +731,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		s->on = util_alloc(n, 1);
 		s->work = util_alloc(1, sizeof *s->work);
 		s->work->cells = n;
-		s->work->state = util_alloc(pn, 1);
+		s->work->state = util_alloc(pn + 3, 1); /* + 3: thinner_raster's last load */
 		s->work->stack = util_alloc(n, sizeof *s->work->stack);
 		s->work->order = util_alloc(n, sizeof *s->work->order);
 	}
@@ -677,12 +754,21 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
 	t.state = wk->state;
-	memset(t.state, 0, pn);
 	t.stack = wk->stack;
 	for (int i = 0; i < 8; i++)
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
-	skeleton_build_kind_table(t.kind);
+	thinner_init_tables(&t);
 
+	/* the padded state: the free cells in the set, the ring around the grid not */
+	memset(t.state, 0, (size_t)t.pw);
+	memset(t.state + (size_t)(h + 1) * t.pw, 0, (size_t)t.pw + 3);
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *restrict c = g->cells + (size_t)y * w;
+		uint8_t *restrict st = t.state + (size_t)(y + 1) * t.pw;
+		st[0] = st[w + 1] = 0;
+		for (int32_t x = 0; x < w; x++)
+			st[x + 1] = c[x] == GRID_FREE ? SKELETON_IN : 0;
+	}
 	/* counting sort of the free cells by dist2, ties by index (the histogram came
 	 * with the distance transform) */
 	for (int32_t d = 0; d <= maxd; d++)
@@ -691,47 +777,38 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *c = g->cells + (size_t)y * w;
 		const int32_t *d2 = s->dist2 + (size_t)y * w;
-		uint8_t *st = t.state + (size_t)(y + 1) * t.pw + 1;
 		for (int32_t x = 0; x < w; x++) {
 			if (c[x] != GRID_FREE)
 				continue;
-			st[x] = SKELETON_IN;
 			order[start[d2[x]]++] = (y + 1) * t.pw + x + 1;
 		}
 	}
 	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 
-	for (int32_t k = 0; k < nfree; k++)
-		thinner_visit(&t, order[k]);
-
-	/* the cells left, for pruning, in row-major order (a scan along memory) */
-	int32_t nset = 0;
-	for (int32_t y = 0; y < h; y++) {
-		int32_t row = (y + 1) * t.pw + 1;
-		for (int32_t x = 0; x < w; x++)
-			if (t.state[row + x] & SKELETON_IN)
-				order[nset++] = row + x;
+	/* the visits; the cells kept are listed over the visiting order as it is read */
+	int32_t nkept = 0;
+	for (int32_t k = 0; k < nfree; k++) {
+		const int32_t pi = order[k];
+		order[nkept] = pi;
+		nkept += thinner_visit(&t, pi);
 	}
-	s->pruned = thinner_prune(&t, s->dist2, order, nset, maxd);
-	if (s->pruned > 0) {
-		/* a junction that lost a branch may be deletable now: the cells marked by
-		 * thinner_prune, in the same raster order as a test of every cell (which
-		 * it equals: a deletion here retries its neighbours through the stack) */
-		for (int32_t k = 0; k < nset; k++) {
-			int32_t pi = order[k];
-			if (!(t.state[pi] & SKELETON_RECHECK))
-				continue;
-			t.state[pi] &= (uint8_t)~SKELETON_RECHECK;
-			if ((t.state[pi] & SKELETON_IN) && thinner_deletable(&t, pi))
-				thinner_delete_from(&t, pi);
-		}
-	}
+	s->pruned = thinner_prune(&t, s->dist2, order, nkept, maxd);
 
-	int32_t count = 0; /* a local, so that the loop need not store it every cell */
+	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */
+	int32_t count = 0;
+	const uint64_t ones = 0x0101010101010101u;
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *st = t.state + (size_t)(y + 1) * t.pw + 1;
 		uint8_t *on = s->on + (size_t)y * w;
-		for (int32_t x = 0; x < w; x++) {
+		int32_t x = 0;
+		for (; x + 8 <= w; x += 8) {
+			uint64_t v;
+			memcpy(&v, st + x, sizeof v);
+			v &= ones * SKELETON_IN;
+			memcpy(on + x, &v, sizeof v);
+			count += (int32_t)((v * ones) >> 56);
+		}
+		for (; x < w; x++) {
 			on[x] = st[x] & SKELETON_IN;
 			count += on[x];
 		}
