@@ -395,7 +395,26 @@ typedef struct Thinner {
 	unsigned shift;       /* where thinner_fold's product holds those three bits */
 	uint8_t kind[256];    /* THIN_* of each raster mask */
 	uint8_t ring[256];    /* the neighbourhood mask (bit i: neighbour i) of each */
+	int32_t doff[8];      /* unpadded index offsets of the 8 neighbours (in dist2) */
+	uint64_t row_mul;     /* pi / pw as (pi * row_mul) >> row_shift (thinner_row) */
+	unsigned row_shift;
 } Thinner;
+
+/* thinner_row(t, pi): pi / pw, the padded row, with no division (Granlund and
+ * Montgomery, "Division by invariant integers using multiplication", PLDI 1994): with
+ * l = ceil(log2 pw) and row_mul = ceil(2^(31 + l) / pw), the product's top bits are
+ * the quotient for every pi < 2^31, and pi < (30002)^2 < 2^31; the product < 2^63. */
+static inline int32_t thinner_row(const Thinner *t, int32_t pi)
+{
+	return (int32_t)(((uint64_t)pi * t->row_mul) >> t->row_shift);
+}
+
+/* thinner_unpadded(t, pi): the index in dist2 of the padded index pi: with pi =
+ * (y + 1) pw + x + 1, that is y w + x = pi - pw - 1 - 2 y. */
+static inline int32_t thinner_unpadded(const Thinner *t, int32_t pi)
+{
+	return pi - t->pw - 1 - 2 * (thinner_row(t, pi) - 1);
+}
 
 /* thinner_load4(p): the 4 bytes at p, in the machine's byte order. */
 static inline uint32_t thinner_load4(const uint8_t *p)
@@ -431,6 +450,11 @@ static void thinner_init_tables(Thinner *t)
 	const uint8_t first3[4] = {1, 1, 1, 0};
 	memcpy(&t->lanes, first3, sizeof t->lanes);
 	t->shift = (t->lanes & 1u) ? 14 : 22; /* little- or big-endian */
+	unsigned l = 0;
+	while ((1u << l) < (unsigned)t->pw)
+		l++;
+	t->row_shift = 31 + l;
+	t->row_mul = ((1ull << t->row_shift) + (uint64_t)t->pw - 1) / (uint64_t)t->pw;
 	uint8_t kind8[256];
 	skeleton_build_kind_table(kind8);
 	uint8_t patch[3 * 5 + 4];
@@ -453,6 +477,13 @@ static void thinner_init_tables(Thinner *t)
 	}
 }
 
+/* thinner_lowest_bit(m): the index of m's lowest set bit, m a nonzero byte. */
+static inline int thinner_lowest_bit(unsigned m)
+{
+	static const int8_t lowest[16] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	return (m & 15u) ? lowest[m & 15u] : 4 + lowest[(m >> 4) & 15u];
+}
+
 /* thinner_ridge_end(t, pi, m): pi, simple with one edge neighbour (neighbourhood
  * mask m), is a ridge end. A ridge end has exactly one 4-neighbour in the set and no
  * 8-neighbour in the set farther from the obstacles: it is the tip of a branch of the
@@ -460,16 +491,14 @@ static void thinner_init_tables(Thinner *t)
  * the second condition every cell of the grassfire front that happens to lose its side
  * neighbours first would be kept as an end, and grow a spur; with it, a branch whose
  * distance rises from its tip (toward a convex corner of the space) burns back to its
- * junction, as Blum's branches into corners carry no choice of route. One division
- * finds the unpadded index; the neighbours are offsets from it. */
+ * junction, as Blum's branches into corners carry no choice of route. The padded row
+ * comes by a multiplication and a shift (thinner_row), the neighbours as offsets. */
 static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
 {
-	const int32_t w = t->w;
-	const int32_t *d2 = t->dist2 + (size_t)(pi / t->pw - 1) * w + (pi % t->pw - 1);
+	const int32_t *d2 = t->dist2 + thinner_unpadded(t, pi);
 	const int32_t d = d2[0];
-	const int32_t off[8] = {1, 1 + w, w, w - 1, -1, -1 - w, -w, 1 - w};
-	for (int i = 0; i < 8; i++)
-		if (((m >> i) & 1) && d2[off[i]] > d)
+	for (; m != 0; m &= m - 1)
+		if (d2[t->doff[thinner_lowest_bit(m)]] > d)
 			return false;
 	return true;
 }
@@ -522,6 +551,33 @@ static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 /* thinner_delete_from(t, pi): deletes pi and whatever that makes deletable. */
 static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t, pi, 0); }
 
+/* thinner_retry(t, pi, again): after pi's deletion, tries again its neighbours in the
+ * mask again (visited, in the set, none stacked: the stack is empty between visits),
+ * and deletes what that makes deletable (thinner_delete_more). */
+static void thinner_retry(Thinner *t, int32_t pi, unsigned again)
+{
+	uint8_t *st = t->state;
+	t->top = 0;
+	for (int i = 0; i < 8; i++)
+		if ((again >> i) & 1) {
+			int32_t qi = pi + t->off[i];
+			st[qi] = (uint8_t)(st[qi] | SKELETON_STACKED);
+			t->stack[t->top++] = qi;
+		}
+	for (;;) {
+		if (t->top == 0)
+			return;
+		int32_t qi = t->stack[--t->top];
+		st[qi] &= (uint8_t)~SKELETON_STACKED;
+		if (thinner_deletable(t, qi)) {
+			/* a cascade; the stack as it is now is taken over */
+			int32_t saved = t->top;
+			thinner_delete_more(t, qi, saved);
+			return;
+		}
+	}
+}
+
 /* thinner_visit(t, pi): the visit of pi in the distance order: marks it visited and,
  * when deletable, deletes it (thinner_delete_from); returns whether pi was kept. The
  * same as those two calls, with the neighbourhood read once (thinner_raster's loads)
@@ -540,6 +596,9 @@ static inline bool thinner_visit(Thinner *t, int32_t pi)
 	const unsigned west = st[pi - 1], east = st[pi + 1], self = st[pi];
 	const unsigned r = thinner_fold(t, below) | (west & SKELETON_IN) << 3 |
 	                   (east & SKELETON_IN) << 4 | thinner_fold(t, above) << 5;
+	/* a branch on the kind, not a select: the next visit usually reads this cell, and
+	 * a select would chain each visit's loads to the last one's table load (tried:
+	 * 10% slower on the maze, where the branch goes either way) */
 	const uint8_t k = t->kind[r];
 	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, t->ring[r]))) {
 		st[pi] = (uint8_t)(self | SKELETON_VISITED);
@@ -551,27 +610,9 @@ static inline bool thinner_visit(Thinner *t, int32_t pi)
 	const unsigned again = t->ring[thinner_fold(t, below & below >> 1) |
 	                               (west & west >> 1 & 1u) << 3 | (east & east >> 1 & 1u) << 4 |
 	                               thinner_fold(t, above & above >> 1) << 5];
-	if (again == 0)
-		return false;
-	t->top = 0;
-	for (int i = 0; i < 8; i++)
-		if ((again >> i) & 1) {
-			int32_t qi = pi + t->off[i];
-			st[qi] = (uint8_t)(st[qi] | SKELETON_STACKED);
-			t->stack[t->top++] = qi;
-		}
-	for (;;) {
-		if (t->top == 0)
-			return false;
-		int32_t qi = t->stack[--t->top];
-		st[qi] &= (uint8_t)~SKELETON_STACKED;
-		if (thinner_deletable(t, qi)) {
-			/* rare: a cascade; the stack as it is now is taken over */
-			int32_t saved = t->top;
-			thinner_delete_more(t, qi, saved);
-			return false;
-		}
-	}
+	if (again != 0)
+		thinner_retry(t, pi, again);
+	return false;
 }
 
 /* ---------------------------------------------------------------- pruning */
@@ -629,8 +670,7 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *kept, in
 			int d = thinner_degree(t, next);
 			if (d >= 3) {
 				to_junction = true;
-				int32_t jx = next % t->pw - 1, jy = next / t->pw - 1;
-				double r = sqrt((double)dist2[(size_t)jy * t->w + jx]);
+				double r = sqrt((double)dist2[thinner_unpadded(t, next)]);
 				if (length > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK)
 					to_junction = false;
 				break;
@@ -755,8 +795,10 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
 	t.state = wk->state;
 	t.stack = wk->stack;
-	for (int i = 0; i < 8; i++)
+	for (int i = 0; i < 8; i++) {
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
+		t.doff[i] = SKELETON_DX[i] + SKELETON_DY[i] * w;
+	}
 	thinner_init_tables(&t);
 
 	/* the padded state: the free cells in the set, the ring around the grid not */
@@ -770,18 +812,40 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			st[x + 1] = c[x] == GRID_FREE ? SKELETON_IN : 0;
 	}
 	/* counting sort of the free cells by dist2, ties by index (the histogram came
-	 * with the distance transform) */
+	 * with the distance transform); the blocked cells (dist2 0) go to one bucket
+	 * more, after the free ones, so that the loop needs no branch. Four cells at a
+	 * time: each bucket's next place is loaded for all four before any is stored,
+	 * and a cell's place counts the cells before it in the four with the same key;
+	 * so the chain through start[], a store forwarded to the next load, is one link
+	 * a group rather than one a cell (it was most of the sort's time). */
 	for (int32_t d = 0; d <= maxd; d++)
 		start[d + 1] += start[d];
 	const int32_t nfree = start[maxd + 1];
+	const int32_t blocked_key = maxd + 1;
 	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *c = g->cells + (size_t)y * w;
-		const int32_t *d2 = s->dist2 + (size_t)y * w;
-		for (int32_t x = 0; x < w; x++) {
-			if (c[x] != GRID_FREE)
-				continue;
-			order[start[d2[x]]++] = (y + 1) * t.pw + x + 1;
+		const int32_t *restrict d2 = s->dist2 + (size_t)y * w;
+		const int32_t base = (y + 1) * t.pw + 1;
+		int32_t x = 0;
+		for (; x + 4 <= w; x += 4) {
+			const int32_t k0 = d2[x] ? d2[x] : blocked_key;
+			const int32_t k1 = d2[x + 1] ? d2[x + 1] : blocked_key;
+			const int32_t k2 = d2[x + 2] ? d2[x + 2] : blocked_key;
+			const int32_t k3 = d2[x + 3] ? d2[x + 3] : blocked_key;
+			const int32_t p0 = start[k0];
+			const int32_t p1 = start[k1] + (k1 == k0);
+			const int32_t p2 = start[k2] + (k2 == k0) + (k2 == k1);
+			const int32_t p3 = start[k3] + (k3 == k0) + (k3 == k1) + (k3 == k2);
+			start[k0] = p0 + 1;
+			start[k1] = p1 + 1;
+			start[k2] = p2 + 1;
+			start[k3] = p3 + 1;
+			order[p0] = base + x;
+			order[p1] = base + x + 1;
+			order[p2] = base + x + 2;
+			order[p3] = base + x + 3;
 		}
+		for (; x < w; x++)
+			order[start[d2[x] ? d2[x] : blocked_key]++] = base + x;
 	}
 	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 
