@@ -376,25 +376,26 @@ enum {
  * side, so that a neighbourhood never needs a bounds check (and 3 bytes more at the
  * end, for the last row's 4-byte loads; see thinner_raster).
  *
- * A neighbourhood is read as its "raster mask": the three cells of the row below as
- * one 4-byte load folded to 3 bits (thinner_fold), the west and east cells as bytes,
- * the three of the row above as a 4-byte load. The middle row is read by bytes since
- * the visit before this one usually stored the west cell: a 4-byte load over a byte
- * just stored waits for the store to reach the cache (no store forwarding), and that
- * stall was a third of the visits' time (perf annotate). Which bit of the raster mask
- * is which neighbour depends on the byte order, so the tables over it are built by
- * running thinner_raster itself on a probe (thinner_init_tables). */
+ * A neighbourhood is read as its "raster mask" of THIN_RASTER bits: the row below as
+ * one 4-byte load folded to 4 bits (thinner_fold; the fourth, the cell two east, is
+ * not a neighbour and the tables ignore it), the west and east cells as bytes, the
+ * row above as the row below. The middle row is read by bytes since the visit before
+ * this one usually stored the west cell: a 4-byte load over a byte just stored waits
+ * for the store to reach the cache (no store forwarding), and that stall was a third
+ * of the visits' time (perf annotate). Which bit is which cell depends on the byte
+ * order, so the tables over the mask are built by running thinner_raster itself on
+ * probes (thinner_init_tables). */
+#define THIN_RASTER 10
+
 typedef struct Thinner {
 	int32_t w, h, pw; /* grid size, padded width w + 2 */
 	uint8_t *state;   /* (w + 2) * (h + 2) + 3 SKELETON_* bits */
 	int32_t off[8];   /* padded index offsets of the 8 neighbours */
 	int32_t *stack;   /* padded indices to try again */
 	int32_t top;
-	const int32_t *dist2; /* w * h, unpadded */
-	uint32_t lanes;       /* bit 0 of the first three bytes of a 4-byte load */
-	unsigned shift;       /* where thinner_fold's product holds those three bits */
-	uint8_t kind[256];    /* THIN_* of each raster mask */
-	uint8_t ring[256];    /* the neighbourhood mask (bit i: neighbour i) of each */
+	const int32_t *dist2;             /* w * h, unpadded */
+	uint8_t kind[1u << THIN_RASTER];  /* THIN_* of each raster mask */
+	uint8_t ring[1u << THIN_RASTER];  /* the neighbourhood mask (bit i: neighbour i) */
 	int32_t doff[8];      /* unpadded index offsets of the 8 neighbours (in dist2) */
 	uint64_t row_mul;     /* pi / pw as (pi * row_mul) >> row_shift (thinner_row) */
 	unsigned row_shift;
@@ -424,32 +425,28 @@ static inline uint32_t thinner_load4(const uint8_t *p)
 	return v;
 }
 
-/* thinner_fold(t, v): bit 0 of v's first three bytes, as 3 adjacent bits. The bits
- * sit 8 apart (at 0, 8, 16 little-endian; 24, 16, 8 big-endian); times 1 + 2^7 + 2^14
- * brings them together at 14-16 (22-24) with no two terms overlapping, so no carry. */
-static inline unsigned thinner_fold(const Thinner *t, uint32_t v)
+/* thinner_fold(v): bit 0 of each of v's four bytes, as 4 adjacent bits. The bits sit
+ * at 0, 8, 16 and 24, in either byte order; times 1 + 2^7 + 2^14 + 2^21 brings them
+ * to 21-24, and no two of the sixteen terms (at 8 j + 7 k) fall on one bit, so no
+ * carry. */
+static inline unsigned thinner_fold(uint32_t v)
 {
-	return (unsigned)((((uint64_t)(v & t->lanes)) * 0x4081u) >> t->shift) & 7u;
+	return (unsigned)((((uint64_t)(v & 0x01010101u)) * 0x204081u) >> 21) & 15u;
 }
 
-/* thinner_raster(t, pi, bit): the raster mask of pi's neighbours for the state bit
- * (SKELETON_IN: in the set; see the Thinner). */
-static inline unsigned thinner_raster(const Thinner *t, int32_t pi)
+/* thinner_raster(st, pi, pw): the raster mask of pi's neighbours in the set (see the
+ * Thinner). */
+static inline unsigned thinner_raster(const uint8_t *st, int32_t pi, int32_t pw)
 {
-	const uint8_t *st = t->state;
-	const int32_t pw = t->pw;
-	return thinner_fold(t, thinner_load4(st + pi - pw - 1)) |
-	       (unsigned)(st[pi - 1] & SKELETON_IN) << 3 | (unsigned)(st[pi + 1] & SKELETON_IN) << 4 |
-	       thinner_fold(t, thinner_load4(st + pi + pw - 1)) << 5;
+	return thinner_fold(thinner_load4(st + pi - pw - 1)) |
+	       (unsigned)(st[pi - 1] & SKELETON_IN) << 4 | (unsigned)(st[pi + 1] & SKELETON_IN) << 5 |
+	       thinner_fold(thinner_load4(st + pi + pw - 1)) << 6;
 }
 
-/* thinner_init_tables(t): lanes, shift, and the tables over the raster mask, found by
- * reading probes: one neighbour at a time set in a 3 x 3 patch. */
+/* thinner_init_tables(t): the tables over the raster mask, found by reading probes
+ * (one neighbour at a time set in a 3 x 3 patch), and thinner_row's constants. */
 static void thinner_init_tables(Thinner *t)
 {
-	const uint8_t first3[4] = {1, 1, 1, 0};
-	memcpy(&t->lanes, first3, sizeof t->lanes);
-	t->shift = (t->lanes & 1u) ? 14 : 22; /* little- or big-endian */
 	unsigned l = 0;
 	while ((1u << l) < (unsigned)t->pw)
 		l++;
@@ -458,17 +455,14 @@ static void thinner_init_tables(Thinner *t)
 	uint8_t kind8[256];
 	skeleton_build_kind_table(kind8);
 	uint8_t patch[3 * 5 + 4];
-	Thinner probe = *t;
-	probe.state = patch;
-	probe.pw = 5;
 	unsigned bit_of[8];
 	for (int i = 0; i < 8; i++) {
 		memset(patch, 0, sizeof patch);
 		patch[6 + SKELETON_DX[i] + 5 * SKELETON_DY[i]] = SKELETON_IN;
-		bit_of[i] = thinner_raster(&probe, 6);
+		bit_of[i] = thinner_raster(patch, 6, 5);
 		assert(bit_of[i] != 0 && (bit_of[i] & (bit_of[i] - 1)) == 0);
 	}
-	for (unsigned r = 0; r < 256; r++) {
+	for (unsigned r = 0; r < (1u << THIN_RASTER); r++) {
 		unsigned m = 0;
 		for (int i = 0; i < 8; i++)
 			m |= (r & bit_of[i]) ? 1u << i : 0;
@@ -506,7 +500,7 @@ static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
 /* thinner_deletable(t, pi): pi is simple and not a ridge end. */
 static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 {
-	unsigned r = thinner_raster(t, pi);
+	unsigned r = thinner_raster(t->state, pi, t->pw);
 	uint8_t k = t->kind[r];
 	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, t->ring[r]));
 }
@@ -578,41 +572,57 @@ static void thinner_retry(Thinner *t, int32_t pi, unsigned again)
 	}
 }
 
-/* thinner_visit(t, pi): the visit of pi in the distance order: marks it visited and,
- * when deletable, deletes it (thinner_delete_from); returns whether pi was kept. The
- * same as those two calls, with the neighbourhood read once (thinner_raster's loads)
- * for the deletion test and for the re-try stack: this runs for every free cell. The
- * neighbours to try again, visited and in the set, come as a second raster mask from
- * the same loads (none is stacked: the stack is empty between visits), so the usual
- * deletion, with none, costs no loop over the neighbours. Every visit is a real one:
- * on the benchmark grids no free cell is interior (all 8 neighbours in the set) when
- * its turn comes, as the distance order makes each cell part of the front then; so a
- * border queue would save no visit, and was not built. */
-static inline bool thinner_visit(Thinner *t, int32_t pi)
+/* thinner_visit_all(t, order, nfree): the visits of the cells order[0 .. nfree) in
+ * that order (the distance order): each is marked visited and, when deletable,
+ * deleted (thinner_retry then tries its visited neighbours again). The cells kept are
+ * listed over order as it is read; returns how many. The same as thinner_deletable
+ * and thinner_delete_from for each cell, with the neighbourhood read once for the
+ * deletion test and for the re-try stack: this runs for every free cell. The cell
+ * itself needs no load: unvisited, it is in the set and on no stack. The neighbours to
+ * try again, visited and in the set, come as a second raster mask from the same loads
+ * (none is stacked: the stack is empty between visits), so the usual deletion, with
+ * none, costs no loop over the neighbours. A branch on the kind, not a select: the
+ * next visit usually reads this cell, and a select would chain each visit's loads to
+ * the last one's table load (tried: 10% slower on the maze, where the branch goes
+ * either way). Every visit is a real one: on the benchmark grids no free cell is
+ * interior (all 8 neighbours in the set) when its turn comes, as the distance order
+ * makes each cell part of the front then; so a border queue would save no visit, and
+ * was not built. */
+#if defined(__GNUC__)
+/* a function of its own: inlined into skeleton_compute (GCC 12 -O2), it kept its
+ * loop index and count on the stack, a chain of stores and loads through each visit */
+__attribute__((noinline))
+#endif
+static int32_t thinner_visit_all(Thinner *t, int32_t *order, int32_t nfree)
 {
-	uint8_t *st = t->state;
+	uint8_t *const st = t->state;
 	const int32_t pw = t->pw;
-	const uint32_t below = thinner_load4(st + pi - pw - 1), above = thinner_load4(st + pi + pw - 1);
-	const unsigned west = st[pi - 1], east = st[pi + 1], self = st[pi];
-	const unsigned r = thinner_fold(t, below) | (west & SKELETON_IN) << 3 |
-	                   (east & SKELETON_IN) << 4 | thinner_fold(t, above) << 5;
-	/* a branch on the kind, not a select: the next visit usually reads this cell, and
-	 * a select would chain each visit's loads to the last one's table load (tried:
-	 * 10% slower on the maze, where the branch goes either way) */
-	const uint8_t k = t->kind[r];
-	if (k == THIN_KEEP || (k == THIN_RIDGE && thinner_ridge_end(t, pi, t->ring[r]))) {
-		st[pi] = (uint8_t)(self | SKELETON_VISITED);
-		return true;
+	const uint8_t *const kind = t->kind, *const ring = t->ring;
+	int32_t nkept = 0;
+	for (int32_t k = 0; k < nfree; k++) {
+		const int32_t pi = order[k];
+		order[nkept] = pi;
+		const uint32_t below = thinner_load4(st + pi - pw - 1);
+		const uint32_t above = thinner_load4(st + pi + pw - 1);
+		const unsigned west = st[pi - 1], east = st[pi + 1];
+		const unsigned r = thinner_fold(below) | (west & SKELETON_IN) << 4 |
+		                   (east & SKELETON_IN) << 5 | thinner_fold(above) << 6;
+		const uint8_t kd = kind[r];
+		if (kd == THIN_KEEP || (kd == THIN_RIDGE && thinner_ridge_end(t, pi, ring[r]))) {
+			st[pi] = SKELETON_IN | SKELETON_VISITED;
+			nkept++;
+			continue;
+		}
+		st[pi] = SKELETON_VISITED;
+		/* in the set and visited: bit 0 and bit 1 of the state; stacked in the order
+		 * of the ring, as thinner_push_again does */
+		const unsigned again = ring[thinner_fold(below & below >> 1) |
+		                            (west & west >> 1 & 1u) << 4 | (east & east >> 1 & 1u) << 5 |
+		                            thinner_fold(above & above >> 1) << 6];
+		if (again != 0)
+			thinner_retry(t, pi, again);
 	}
-	st[pi] = (uint8_t)((self | SKELETON_VISITED) & ~SKELETON_IN);
-	/* the neighbours in the set and visited: bit 0 and bit 1 of their state; stacked
-	 * in the order of the ring, as thinner_push_again does */
-	const unsigned again = t->ring[thinner_fold(t, below & below >> 1) |
-	                               (west & west >> 1 & 1u) << 3 | (east & east >> 1 & 1u) << 4 |
-	                               thinner_fold(t, above & above >> 1) << 5];
-	if (again != 0)
-		thinner_retry(t, pi, again);
-	return false;
+	return nkept;
 }
 
 /* ---------------------------------------------------------------- pruning */
@@ -850,12 +860,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 
 	/* the visits; the cells kept are listed over the visiting order as it is read */
-	int32_t nkept = 0;
-	for (int32_t k = 0; k < nfree; k++) {
-		const int32_t pi = order[k];
-		order[nkept] = pi;
-		nkept += thinner_visit(&t, pi);
-	}
+	const int32_t nkept = thinner_visit_all(&t, order, nfree);
 	s->pruned = thinner_prune(&t, s->dist2, order, nkept, maxd);
 
 	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */
