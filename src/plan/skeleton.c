@@ -367,7 +367,8 @@ static void skeleton_build_kind_table(uint8_t kind[256])
 
 enum {
 	SKELETON_IN = 1,      /* still in the set */
-	SKELETON_VISITED = 2, /* reached in the distance order */
+	SKELETON_KEPT = 2,    /* visited, and still in the set (kept, or not yet deleted
+	                       * by a cascade): the cells a deletion tries again */
 	SKELETON_STACKED = 4, /* on the re-try stack */
 	SKELETON_RECHECK = 8  /* next to a pruned cell: to test again after pruning */
 };
@@ -512,8 +513,7 @@ static inline void thinner_push_again(Thinner *t, int32_t pi)
 	for (int i = 0; i < 8; i++) {
 		int32_t qi = pi + t->off[i];
 		uint8_t st = t->state[qi];
-		if ((st & (SKELETON_IN | SKELETON_VISITED | SKELETON_STACKED)) ==
-		    (SKELETON_IN | SKELETON_VISITED)) {
+		if ((st & (SKELETON_KEPT | SKELETON_STACKED)) == SKELETON_KEPT) {
 			t->state[qi] = st | SKELETON_STACKED;
 			t->stack[t->top++] = qi;
 		}
@@ -525,7 +525,7 @@ static inline void thinner_push_again(Thinner *t, int32_t pi)
  * already. */
 static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 {
-	t->state[pi] &= (uint8_t)~SKELETON_IN;
+	t->state[pi] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
 	t->top = top;
 	for (;;) {
 		thinner_push_again(t, pi);
@@ -538,26 +538,21 @@ static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 			if (thinner_deletable(t, pi))
 				break;
 		}
-		t->state[pi] &= (uint8_t)~SKELETON_IN;
+		t->state[pi] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
 	}
 }
 
 /* thinner_delete_from(t, pi): deletes pi and whatever that makes deletable. */
 static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t, pi, 0); }
 
-/* thinner_retry(t, pi, again): after pi's deletion, tries again its neighbours in the
- * mask again (visited, in the set, none stacked: the stack is empty between visits),
- * and deletes what that makes deletable (thinner_delete_more). */
-static void thinner_retry(Thinner *t, int32_t pi, unsigned again)
+/* thinner_retry(t, pi): after pi's deletion in its visit, tries again its visited
+ * neighbours in the set (none is stacked: the stack is empty between visits), and
+ * deletes what that makes deletable (thinner_delete_more). */
+static void thinner_retry(Thinner *t, int32_t pi)
 {
 	uint8_t *st = t->state;
 	t->top = 0;
-	for (int i = 0; i < 8; i++)
-		if ((again >> i) & 1) {
-			int32_t qi = pi + t->off[i];
-			st[qi] = (uint8_t)(st[qi] | SKELETON_STACKED);
-			t->stack[t->top++] = qi;
-		}
+	thinner_push_again(t, pi);
 	for (;;) {
 		if (t->top == 0)
 			return;
@@ -573,14 +568,15 @@ static void thinner_retry(Thinner *t, int32_t pi, unsigned again)
 }
 
 /* thinner_visit_all(t, order, nfree): the visits of the cells order[0 .. nfree) in
- * that order (the distance order): each is marked visited and, when deletable,
- * deleted (thinner_retry then tries its visited neighbours again). The same as thinner_deletable
+ * that order (the distance order): each is marked kept (SKELETON_KEPT) or, when
+ * deletable, deleted (thinner_retry then tries its visited neighbours again). The same as thinner_deletable
  * and thinner_delete_from for each cell, with the neighbourhood read once for the
- * deletion test and for the re-try stack: this runs for every free cell. The cell
- * itself needs no load: unvisited, it is in the set and on no stack. The neighbours to
- * try again, visited and in the set, come as a second raster mask from the same loads
- * (none is stacked: the stack is empty between visits), so the usual deletion, with
- * none, costs no loop over the neighbours. A branch on the kind, not a select: the
+ * deletion test and for the test of a re-try: this runs for every free cell. The cell
+ * itself needs no load: unvisited, it is in the set and on no stack. Whether any
+ * neighbour is to be tried again (SKELETON_KEPT) is one test on the same loads (the
+ * cells two east, in the 4-byte loads, may set it in vain: thinner_retry finds no
+ * neighbour then), so the usual deletion, with none, costs no loop over the
+ * neighbours and no mask. A branch on the kind, not a select: the
  * next visit usually reads this cell, and a select would chain each visit's loads to
  * the last one's table load (tried: 10% slower on the maze, where the branch goes
  * either way). Every visit is a real one: on the benchmark grids no free cell is
@@ -606,17 +602,12 @@ static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
 		                   (east & SKELETON_IN) << 5 | thinner_fold(above) << 6;
 		const uint8_t kd = kind[r];
 		if (kd == THIN_KEEP || (kd == THIN_RIDGE && thinner_ridge_end(t, pi, ring[r]))) {
-			st[pi] = SKELETON_IN | SKELETON_VISITED;
+			st[pi] = SKELETON_IN | SKELETON_KEPT;
 			continue;
 		}
-		st[pi] = SKELETON_VISITED;
-		/* in the set and visited: bit 0 and bit 1 of the state; stacked in the order
-		 * of the ring, as thinner_push_again does */
-		const unsigned again = ring[thinner_fold(below & below >> 1) |
-		                            (west & west >> 1 & 1u) << 4 | (east & east >> 1 & 1u) << 5 |
-		                            thinner_fold(above & above >> 1) << 6];
-		if (again != 0)
-			thinner_retry(t, pi, again);
+		st[pi] = 0;
+		if ((((below | above) & (0x01010101u * SKELETON_KEPT)) | ((west | east) & SKELETON_KEPT)) != 0)
+			thinner_retry(t, pi);
 	}
 }
 
@@ -779,7 +770,7 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *ends, in
 		}
 	}
 	for (int32_t k = 0; k < nremove; k++)
-		t->state[remove[k]] &= (uint8_t)~SKELETON_IN;
+		t->state[remove[k]] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
 	/* only a cell next to a removed one has a new neighbourhood (every other was
 	 * left not deletable by the thinning), so only those are tested again: listed in
 	 * ends (no longer needed) and sorted, so that they are tested in raster order as
