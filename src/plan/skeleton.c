@@ -377,16 +377,18 @@ enum {
  * side, so that a neighbourhood never needs a bounds check (and 3 bytes more at the
  * end, for the last row's 4-byte loads; see thinner_raster).
  *
- * A neighbourhood is read as its "raster mask" of THIN_RASTER bits: the row below as
- * one 4-byte load folded to 4 bits (thinner_fold; the fourth, the cell two east, is
- * not a neighbour and the tables ignore it), the west and east cells as bytes, the
- * row above as the row below. The middle row is read by bytes since the visit before
- * this one usually stored the west cell: a 4-byte load over a byte just stored waits
- * for the store to reach the cache (no store forwarding), and that stall was a third
- * of the visits' time (perf annotate). Which bit is which cell depends on the byte
- * order, so the tables over the mask are built by running thinner_raster itself on
- * probes (thinner_init_tables). */
-#define THIN_RASTER 10
+ * A neighbourhood is read as its "raster mask" of THIN_RASTER bits: the rows below and
+ * above as a 4-byte load each, gathered to 8 bits by one multiplication (thinner_rows;
+ * the fourth cell of each, two east, is not a neighbour and the tables ignore it),
+ * then the west and east cells' state, 2 bits each (only bit 0, SKELETON_IN, counts,
+ * so the visits take the bytes as they are: SKELETON_IN and SKELETON_KEPT, below 4).
+ * The middle row is read by bytes since the visit before this one usually stored the
+ * west cell: a 4-byte load over a byte just stored waits for the store to reach the
+ * cache (no store forwarding), and that stall was a third of the visits' time (perf
+ * annotate). Which bit is which cell depends on the byte order, so the tables over
+ * the mask are built by running thinner_raster itself on probes
+ * (thinner_init_tables). */
+#define THIN_RASTER 12
 
 typedef struct Thinner {
 	int32_t w, h, pw; /* grid size, padded width w + 2 */
@@ -426,22 +428,26 @@ static inline uint32_t thinner_load4(const uint8_t *p)
 	return v;
 }
 
-/* thinner_fold(v): bit 0 of each of v's four bytes, as 4 adjacent bits. The bits sit
- * at 0, 8, 16 and 24, in either byte order; times 1 + 2^7 + 2^14 + 2^21 brings them
- * to 21-24, and no two of the sixteen terms (at 8 j + 7 k) fall on one bit, so no
- * carry. */
-static inline unsigned thinner_fold(uint32_t v)
+/* THIN_ONES: a byte of 1 in each lane of a 64-bit word; THIN_LOW7: 0x7f in each. */
+#define THIN_ONES 0x0101010101010101u
+#define THIN_LOW7 0x7f7f7f7f7f7f7f7fu
+
+/* thinner_rows(below, above): bit 0 of each byte of the two 4-byte loads, as 8 bits.
+ * The bits sit at 8 i in a 64-bit word; times 0x0102040810204080 (the terms 2^(7 j + 7))
+ * puts bit 8 i at 56 + i when i + j = 7, and no two of the 64 terms fall on one bit
+ * (8 i + 7 j is unique for i, j < 8), so there is no carry. */
+static inline unsigned thinner_rows(uint32_t below, uint32_t above)
 {
-	return (unsigned)((((uint64_t)(v & 0x01010101u)) * 0x204081u) >> 21) & 15u;
+	const uint64_t v = ((uint64_t)above << 32 | below) & THIN_ONES;
+	return (unsigned)((v * 0x0102040810204080u) >> 56);
 }
 
 /* thinner_raster(st, pi, pw): the raster mask of pi's neighbours in the set (see the
  * Thinner). */
 static inline unsigned thinner_raster(const uint8_t *st, int32_t pi, int32_t pw)
 {
-	return thinner_fold(thinner_load4(st + pi - pw - 1)) |
-	       (unsigned)(st[pi - 1] & SKELETON_IN) << 4 | (unsigned)(st[pi + 1] & SKELETON_IN) << 5 |
-	       thinner_fold(thinner_load4(st + pi + pw - 1)) << 6;
+	return thinner_rows(thinner_load4(st + pi - pw - 1), thinner_load4(st + pi + pw - 1)) |
+	       (unsigned)(st[pi - 1] & SKELETON_IN) << 8 | (unsigned)(st[pi + 1] & SKELETON_IN) << 10;
 }
 
 /* thinner_init_tables(t): the tables over the raster mask, found by reading probes
@@ -598,8 +604,7 @@ static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
 		const uint32_t below = thinner_load4(st + pi - pw - 1);
 		const uint32_t above = thinner_load4(st + pi + pw - 1);
 		const unsigned west = st[pi - 1], east = st[pi + 1];
-		const unsigned r = thinner_fold(below) | (west & SKELETON_IN) << 4 |
-		                   (east & SKELETON_IN) << 5 | thinner_fold(above) << 6;
+		const unsigned r = thinner_rows(below, above) | west << 8 | east << 10;
 		const uint8_t kd = kind[r];
 		if (kd == THIN_KEEP || (kd == THIN_RIDGE && thinner_ridge_end(t, pi, ring[r]))) {
 			st[pi] = SKELETON_IN | SKELETON_KEPT;
@@ -666,10 +671,6 @@ static void thinner_sort(int32_t *a, int32_t n, int32_t *tmp)
 	/* three passes: the sorted list is in tmp */
 	memcpy(a, from, (size_t)n * sizeof *a);
 }
-
-/* THIN_ONES: a byte of 1 in each lane of a 64-bit word; THIN_LOW7: 0x7f in each. */
-#define THIN_ONES 0x0101010101010101u
-#define THIN_LOW7 0x7f7f7f7f7f7f7f7fu
 
 /* thinner_load8(p): the 8 bytes at p, in the machine's byte order. */
 static inline uint64_t thinner_load8(const uint8_t *p)
