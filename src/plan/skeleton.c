@@ -626,16 +626,12 @@ static inline int thinner_degree(const Thinner *t, int32_t pi)
 	       (st[pi - t->pw] & SKELETON_IN);
 }
 
-/* thinner_next(t, prev, cur): cur's first 4-neighbour in the set, other than prev, in
- * the order of the ring; -1 when none. */
-static inline int32_t thinner_next(const Thinner *t, int32_t prev, int32_t cur)
+/* thinner_mask4(st, pi, pw): pi's 4-neighbours in the set, bit k the k-th of east,
+ * north (+pw), west and south: the ring's even neighbours in its order. */
+static inline unsigned thinner_mask4(const uint8_t *st, int32_t pi, int32_t pw)
 {
-	for (int i = 0; i < 8; i += 2) {
-		int32_t qi = cur + t->off[i];
-		if (qi != prev && (t->state[qi] & SKELETON_IN))
-			return qi;
-	}
-	return -1;
+	return (unsigned)(st[pi + 1] & SKELETON_IN) | (unsigned)(st[pi + pw] & SKELETON_IN) << 1 |
+	       (unsigned)(st[pi - 1] & SKELETON_IN) << 2 | (unsigned)(st[pi - pw] & SKELETON_IN) << 3;
 }
 
 /* thinner_sort(a, n, tmp): sorts the padded indices a[0 .. n) (below 2^31) in
@@ -680,17 +676,68 @@ static inline uint64_t thinner_load8(const uint8_t *p)
 	return v;
 }
 
-/* thinner_list_ends(t, ends): lists in ends the cells of the set with one 4-neighbour
- * in it (the end points, padded indices, in raster order); returns how many. Eight
- * cells at a time: each lane holds a cell's bit 0, the sum of four neighbours' lanes
- * its degree (at most 4: no carry), and a lane of degree ^ 1 is zero exactly where
- * ((lane & 0x7f) + 0x7f) | lane has no top bit; most words hold no end and cost no
- * branch of their own. */
-static int32_t thinner_list_ends(const Thinner *t, int32_t *ends)
+/* thinner_walk(t, end, remove, nremove, longest): walks from the end point end to a
+ * junction; when the branch is a spur (see the header comment), its cells are added
+ * to remove[0 .. nremove); returns the new count. The next cell is the first
+ * 4-neighbour in the set, in the ring's order, other than the way back: found by masks
+ * of the 4-neighbours, with no branch on the way the walk turns, and the next cell's
+ * mask gives its degree and its way on. The cells are written after remove[nremove - 1]
+ * as the walk goes, and kept when it finds a spur (a walk's cells are no other walk's:
+ * a branch has one end point). longest: see thinner_prune. */
+static inline int32_t thinner_walk(const Thinner *t, int32_t end, int32_t *remove, int32_t nremove,
+                                   double longest)
 {
+	static const uint8_t first[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
+	static const uint8_t degree[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+	const uint8_t *st = t->state;
+	const int32_t pw = t->pw;
+	const int32_t step[4] = {1, pw, -1, -pw}; /* the 4-neighbours, as thinner_mask4 */
+	int32_t cur = end, length = 1;
+	unsigned m = thinner_mask4(st, cur, pw), back = 0;
+	for (;;) {
+		remove[nremove + length - 1] = cur;
+		const unsigned j = first[m & ~back];
+		const int32_t next = cur + step[j];
+		const unsigned mn = thinner_mask4(st, next, pw);
+		const int d = degree[mn];
+		if (d >= 3) {
+			double r = sqrt((double)t->dist2[thinner_unpadded(t, next)]);
+			return length > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK ? nremove
+			                                                               : nremove + length;
+		}
+		if (d <= 1)
+			return nremove; /* the branch is all the component: no spur */
+		back = 1u << ((j + 2) & 3);
+		cur = next;
+		m = mn;
+		length++;
+		if (length > longest)
+			return nremove; /* no spur */
+	}
+}
+
+/* thinner_prune(t, scratch, maxd): removes the spurs (see the header comment), then
+ * deletes what that makes deletable; returns the number of cells removed as spurs.
+ * scratch is an array as long as the grid. Spurs are found on the set as thinned,
+ * then removed. The end points are found by a scan of the set in raster order, eight
+ * cells a word: each lane holds a cell's bit 0, the sum of four neighbours' lanes its
+ * degree (at most 4: no carry), and a lane of degree ^ 1 is zero exactly where
+ * ((lane & 0x7f) + 0x7f) | lane has no top bit; most words hold no end and cost no
+ * branch of their own. Each end is walked when the scan finds it, while its rows are
+ * in the cache (walked after the whole scan, they were not, and the walks on the maze
+ * cost as much as the scan). maxd is the largest dist2: no junction is farther from the
+ * obstacles, so a branch longer than SKELETON_SPUR_FACTOR * sqrt(maxd) +
+ * SKELETON_SPUR_SLACK cells is no spur whatever its junction, and its walk stops there
+ * (the same test, monotone in the clearance; on the 1024 maze, whose dead ends are
+ * long corridors, it saves most of the walking). */
+static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
+{
+	const double longest = SKELETON_SPUR_FACTOR * sqrt((double)maxd) + SKELETON_SPUR_SLACK;
+	/* cells to remove are collected in the stack array, as long as the grid */
+	int32_t nremove = 0;
+	int32_t *remove = t->stack;
 	const uint8_t *st = t->state;
 	const int32_t w = t->w, pw = t->pw;
-	int32_t n = 0;
 	for (int32_t y = 0; y < t->h; y++) {
 		const int32_t row = (y + 1) * pw + 1;
 		int32_t x = 0;
@@ -709,72 +756,17 @@ static int32_t thinner_list_ends(const Thinner *t, int32_t *ends)
 				continue;
 			for (int32_t j = 0; j < 8; j++)
 				if ((p[j] & SKELETON_IN) && thinner_degree(t, row + x + j) == 1)
-					ends[n++] = row + x + j;
+					nremove = thinner_walk(t, row + x + j, remove, nremove, longest);
 		}
 		for (; x < w; x++)
 			if ((st[row + x] & SKELETON_IN) && thinner_degree(t, row + x) == 1)
-				ends[n++] = row + x;
-	}
-	return n;
-}
-
-/* thinner_prune(t, dist2, ends, nends, maxd): removes the spurs (see the header
- * comment), then deletes what that makes deletable; returns the number of cells
- * removed as spurs. ends[0 .. nends) are the end points of the set (padded indices,
- * thinner_list_ends); the array, as long as the grid, is overwritten. Spurs are found on
- * the set as thinned, then removed. maxd is the largest dist2: no junction is farther
- * from the obstacles, so a branch longer than SKELETON_SPUR_FACTOR * sqrt(maxd) +
- * SKELETON_SPUR_SLACK cells is no spur whatever its junction, and its walk stops there
- * (the same test, monotone in the clearance; on the 1024 maze, whose dead ends are
- * long corridors, it saves most of the walking). */
-static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *ends, int32_t nends,
-                             int32_t maxd)
-{
-	const double longest = SKELETON_SPUR_FACTOR * sqrt((double)maxd) + SKELETON_SPUR_SLACK;
-	/* cells to remove are collected in the stack array, as long as the grid */
-	int32_t nremove = 0;
-	int32_t *remove = t->stack;
-	for (int32_t k = 0; k < nends; k++) {
-		int32_t end = ends[k];
-		int32_t prev = -1, cur = end, length = 1;
-		bool to_junction = false;
-		for (;;) {
-			int32_t next = thinner_next(t, prev, cur);
-			int d = thinner_degree(t, next);
-			if (d >= 3) {
-				to_junction = true;
-				double r = sqrt((double)dist2[thinner_unpadded(t, next)]);
-				if (length > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK)
-					to_junction = false;
-				break;
-			}
-			if (d <= 1)
-				break;
-			prev = cur;
-			cur = next;
-			length++;
-			if (length > longest)
-				break; /* to_junction is false */
-		}
-		if (!to_junction)
-			continue;
-		/* walk it again, recording the cells */
-		prev = -1;
-		cur = end;
-		for (;;) {
-			remove[nremove++] = cur;
-			int32_t next = thinner_next(t, prev, cur);
-			if (thinner_degree(t, next) >= 3)
-				break;
-			prev = cur;
-			cur = next;
-		}
+				nremove = thinner_walk(t, row + x, remove, nremove, longest);
 	}
 	for (int32_t k = 0; k < nremove; k++)
 		t->state[remove[k]] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
 	/* only a cell next to a removed one has a new neighbourhood (every other was
 	 * left not deletable by the thinning), so only those are tested again: listed in
-	 * ends (no longer needed) and sorted, so that they are tested in raster order as
+	 * scratch and sorted, so that they are tested in raster order as
 	 * a test of every cell in raster order would (and equals: a deletion here
 	 * retries its neighbours through the stack) */
 	int32_t nrecheck = 0;
@@ -783,12 +775,12 @@ static int32_t thinner_prune(Thinner *t, const int32_t *dist2, int32_t *ends, in
 			int32_t qi = remove[k] + t->off[i];
 			if ((t->state[qi] & (SKELETON_IN | SKELETON_RECHECK)) == SKELETON_IN) {
 				t->state[qi] |= SKELETON_RECHECK;
-				ends[nrecheck++] = qi;
+				scratch[nrecheck++] = qi;
 			}
 		}
-	thinner_sort(ends, nrecheck, remove); /* remove is no longer needed */
+	thinner_sort(scratch, nrecheck, remove); /* remove is no longer needed */
 	for (int32_t k = 0; k < nrecheck; k++) {
-		int32_t pi = ends[k];
+		int32_t pi = scratch[k];
 		t->state[pi] &= (uint8_t)~SKELETON_RECHECK;
 		if ((t->state[pi] & SKELETON_IN) && thinner_deletable(t, pi))
 			thinner_delete_from(t, pi);
@@ -932,7 +924,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
 
 	thinner_visit_all(&t, order + nblocked, nfree);
-	s->pruned = thinner_prune(&t, s->dist2, order, thinner_list_ends(&t, order), maxd);
+	s->pruned = thinner_prune(&t, order, maxd);
 
 	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */
 	int32_t count = 0;
