@@ -601,17 +601,18 @@ static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
 	const uint8_t *const kind = t->kind, *const ring = t->ring;
 	for (int32_t k = 0; k < nfree; k++) {
 		const int32_t pi = order[k];
-		const uint32_t below = thinner_load4(st + pi - pw - 1);
-		const uint32_t above = thinner_load4(st + pi + pw - 1);
-		const unsigned west = st[pi - 1], east = st[pi + 1];
-		const unsigned r = thinner_rows(below, above) | west << 8 | east << 10;
+		const uint8_t *p = st + pi;
+		const uint64_t rows = (uint64_t)thinner_load4(p + pw - 1) << 32 | thinner_load4(p - pw - 1);
+		const unsigned we = p[-1] | (unsigned)p[1] << 2; /* west, east: 2 bits each */
+		const unsigned r =
+		    (unsigned)(((rows & THIN_ONES) * 0x0102040810204080u) >> 56) | we << 8;
 		const uint8_t kd = kind[r];
 		if (kd == THIN_KEEP || (kd == THIN_RIDGE && thinner_ridge_end(t, pi, ring[r]))) {
 			st[pi] = SKELETON_IN | SKELETON_KEPT;
 			continue;
 		}
 		st[pi] = 0;
-		if ((((below | above) & (0x01010101u * SKELETON_KEPT)) | ((west | east) & SKELETON_KEPT)) != 0)
+		if (((rows & (THIN_ONES * SKELETON_KEPT)) | (we & (SKELETON_KEPT * 5u))) != 0)
 			thinner_retry(t, pi);
 	}
 }
