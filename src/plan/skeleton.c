@@ -573,7 +573,16 @@ static void thinner_retry(Thinner *t, int32_t pi)
 	}
 }
 
-/* thinner_visit_all(t, order, nfree): the visits of the cells order[0 .. nfree) in
+/* The visits of a grid whose state outgrows THIN_PREFETCH_BYTES prefetch the rows
+ * below and above the cell THIN_AHEAD visits on: each distance level sweeps the whole
+ * grid, and at 4096 a side (17 MB of state) most of a sparse level's visits missed the
+ * cache; there it took 10-25% off the visits of rooms and rects, at 1024 it added 10%
+ * (the loads hit the cache anyway, the prefetch is instructions). */
+#define THIN_AHEAD 16
+#define THIN_PREFETCH_BYTES (8u << 20)
+
+/* thinner_visits(t, order, nfree, prefetch), for thinner_visit_all(t, order, nfree): the
+ * visits of the cells order[0 .. nfree) in
  * that order (the distance order): each is marked kept (SKELETON_KEPT) or, when
  * deletable, deleted (thinner_retry then tries its visited neighbours again). The same as thinner_deletable
  * and thinner_delete_from for each cell, with the neighbourhood read once for the
@@ -589,18 +598,21 @@ static void thinner_retry(Thinner *t, int32_t pi)
  * interior (all 8 neighbours in the set) when its turn comes, as the distance order
  * makes each cell part of the front then; so a border queue would save no visit, and
  * was not built. */
-#if defined(__GNUC__)
-/* a function of its own: inlined into skeleton_compute (GCC 12 -O2), it kept its
- * loop index and count on the stack, a chain of stores and loads through each visit */
-__attribute__((noinline))
-#endif
-static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
+static inline void thinner_visits(Thinner *t, const int32_t *order, int32_t nfree, bool prefetch)
 {
 	uint8_t *const st = t->state;
 	const int32_t pw = t->pw;
 	const uint8_t *const kind = t->kind, *const ring = t->ring;
 	for (int32_t k = 0; k < nfree; k++) {
 		const int32_t pi = order[k];
+#if defined(__GNUC__)
+		if (prefetch && k + THIN_AHEAD < nfree) {
+			__builtin_prefetch(st + order[k + THIN_AHEAD] - pw, 1);
+			__builtin_prefetch(st + order[k + THIN_AHEAD] + pw, 1);
+		}
+#else
+		(void)prefetch;
+#endif
 		const uint8_t *p = st + pi;
 		const uint64_t rows = (uint64_t)thinner_load4(p + pw - 1) << 32 | thinner_load4(p - pw - 1);
 		const unsigned we = p[-1] | (unsigned)p[1] << 2; /* west, east: 2 bits each */
@@ -615,6 +627,20 @@ static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
 		if (((rows & (THIN_ONES * SKELETON_KEPT)) | (we & (SKELETON_KEPT * 5u))) != 0)
 			thinner_retry(t, pi);
 	}
+}
+
+#if defined(__GNUC__)
+/* a function of its own: inlined into skeleton_compute (GCC 12 -O2), it kept its
+ * loop index and count on the stack, a chain of stores and loads through each visit */
+__attribute__((noinline))
+#endif
+static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
+{
+	const size_t bytes = (size_t)t->pw * (size_t)(t->h + 2);
+	if (bytes > THIN_PREFETCH_BYTES)
+		thinner_visits(t, order, nfree, true);
+	else
+		thinner_visits(t, order, nfree, false);
 }
 
 /* ---------------------------------------------------------------- pruning */
