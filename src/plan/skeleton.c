@@ -58,21 +58,35 @@
  *    a free cell on the benchmark grids); pruning walks each branch once.
  *
  * MEASURED  (issue 16; thread CPU time on this 2-core machine, shared, so +-15%;
- *    `make bench-compare` for the table against the peers): on the 1024 x 1024 maze
- *    the skeleton's 19-20 ms were, by phase (instrumented copy, best of 7), the
- *    transform 6.9 ms, the counting sort 1.7, the visits 6.9, listing the set 0.9,
- *    pruning 2.2 and the output 0.5; rooms and random rectangles alike but for the
- *    visits (8.8 and 10.8 ms) and pruning (0.2). 786 429 visits on the maze (993 796
- *    on rooms), of which none found its cell interior (all 8 neighbours in the set)
- *    and 11 374 cells were tried again: the distance order puts every cell on the
- *    front when its turn comes, so a border queue would save no visit, and the
- *    visit's cost (about 9 ns) is its loads and its branch on the table. The medial
- *    axis from a feature transform was not tried: this thinning's visits already
- *    cost about as much as one more pass of the transform would, and its spur rule
- *    and topology are what the tests pin. From 1024 to 4096 a side the cost grows
- *    15-34 times for 16 times the cells: the visits of the 4096 grids miss the cache
- *    (state, 17 MB, no longer fits), most on the random rectangles, whose many
- *    distance levels each sweep the whole grid.
+ *    `make bench-compare` for the table against the peers). Everything after the
+ *    transform (state, sort, visits, pruning, output) on the 1024 grids, before and
+ *    after the rework of the thinning (the same skeleton cell for cell): 129, 146, 121
+ *    and 118 million instructions on the maze, rooms, rects and Boston_0_1024 (123,
+ *    139, 115 and 112 a cell; valgrind --tool=callgrind, exact) down to 58, 65, 53 and
+ *    51 (56, 62, 51 and 49 a cell); in time, by phase (an instrumented copy, min of 7
+ *    alternating runs), on the maze the state and the sort 1.7 -> 1.55 ms, the visits
+ *    6.9 -> 2.4, listing and pruning 3.1 -> 0.9, the output 0.5 -> 0.15: about 12 ms
+ *    to 5.1, and on rooms, rects and Boston 6.3-6.4 ms (visits 3.7-3.9, sort
+ *    1.9-2.1). What did it: the visit's raster mask from two 4-byte loads gathered
+ *    by one multiplication (the former byte loads spilled a byte that was read back
+ *    as 4, a store-forwarding stall that was a third of the visits), the visits in a
+ *    loop of their own (inlined, its index lived on the stack), SKELETON_KEPT so that
+ *    "any neighbour to try again" is one test, the sort four cells a group with the
+ *    blocked cells as bucket 0 (no branch; one link of the chain through start[] a
+ *    group), the end points by a scan eight cells a word and walks by 4-neighbour
+ *    masks, the recheck list by a radix sort. The visits are instruction-bound at 1024 (3-4 ns,
+ *    about 35 instructions, a visit; at 256 a side, all in cache, 80% of that) and
+ *    the sort takes 4-6 cycles a cell. 786 429 visits on the maze (993 796 on rooms),
+ *    of which none found its cell interior (all 8 neighbours in the set): the
+ *    distance order puts every cell on the front when its turn comes, so a border
+ *    queue would save no visit. The medial axis from a feature transform was not
+ *    tried: the visits now cost about a third of the transform, and the spur rule and
+ *    topology are what the tests pin; a select instead of the kind's branch, a
+ *    shortcut of the ridge test by the visited bits, a run-of-one-key path in the
+ *    sort and prefetching at 1024 were tried and were slower or no faster. From 1024
+ *    to 4096 a side the sort grows 14-16 times, the visits 18 (maze) to 43 times
+ *    (rects: many distance levels, each a sweep of the 17 MB state) before the
+ *    prefetch above 8 MB (thinner_visit_all), which takes 10-25% off at 4096.
  *    The transform (the same values) went, on the 1024 grids, from 130, 115 and 104
  *    million instructions (rooms, rects, maze; valgrind --tool=cachegrind) to 80,
  *    80 and 80, and its mispredicted branches (cachegrind's model) on the maze from
@@ -87,10 +101,7 @@
  *    the envelope's sweep cut the maze's mispredictions to 318 000 but was 10-30%
  *    slower (the select lengthens the sweep's chain of dependences); not kept. What
  *    is left is the envelope's two data-dependent branches (pop, advance), which on
- *    the maze's rows of short runs mispredict about once in two cells.
- *    The visit's neighbourhood masks written out (thinner_visit) took the skeleton,
- *    transform included, from 23.0, 22.7 and 23.0 ms to 21.9, 20.5 and 21.9 (rooms,
- *    rects, maze; `skelbench 5 1024`, the two builds alternating, loaded machine). */
+ *    the maze's rows of short runs mispredict about once in two cells. */
 #include "utak/plan/skeleton.h"
 
 #include <assert.h>
