@@ -247,7 +247,9 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 			return true;
 		}
 	}
-	if (o.reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
+	if (goals_unseen_within(c, c->start, d))
+		snprintf(why, size, "space nearer the start than the %s is unseen, where another may lie", shape);
+	else if (o.reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
 		snprintf(why, size, "the %s's %d squares may be those of a polygon under %.0f wide (from %.2f), too narrow to name",
 			 shape, (int)o.squares, OBJECTS_NAMED_WIDTH, o.reading.min_width);
 	else if (o.shape == SHAPE_SQUARE && o.reading.aspect > SHAPE_SQUARE_ASPECT)

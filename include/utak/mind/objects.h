@@ -98,6 +98,10 @@ bool objects_touching_target(Controller *c);
  *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
  *   squares or more each way (a square two wide or more, unless its sides lie on
  *   the grid's lines, does). A crumb named another shape is taken at its name.
+ *   THE NEARER UNSEEN: where floor the model knows borders unseen squares nearer
+ *   the start than the object's centroid (goals_unseen_within), an object of
+ *   the shape may lie there; goals.c looks at such space before going to the
+ *   object, and what cannot be reached or seen stays a doubt.
  *   THE GAP: a square is at most SHAPE_SQUARE_ASPECT long for its width, a brick at
  *   least SHAPE_BRICK_ASPECT; read between the two (shape.h names it the nearer),
  *   the object may be neither.
