@@ -197,6 +197,35 @@ void goals_corner_failed(Controller *c, int64_t short_by)
 /* goals_frontier(c, g, dist): the nearest reachable known-floor cell beside an unknown one. */
 bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
 {
+	return goals_frontier_within(c, dist, c->start, INFINITY, goal);
+}
+
+/* unknown_beside(s, i, j, centre, radius): a 4-neighbour of screen cell (i, j) is
+ * unknown, with its centre under radius from centre. */
+static bool unknown_beside(const Screen *s, int32_t i, int32_t j, Vec2 centre, double radius)
+{
+	static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+	for (int d = 0; d < 4; d++) {
+		int32_t a = i + step[d][0], b = j + step[d][1];
+		if (screen_label(s, a, b) == SCREEN_UNKNOWN &&
+		    (radius == INFINITY || goals_distance(goals_centre(s->x0 + a, s->y0 + b), centre) < radius))
+			return true;
+	}
+	return false;
+}
+
+bool goals_unseen_within(const Controller *c, Vec2 centre, double radius)
+{
+	const Screen *s = &c->screen;
+	for (int32_t j = 0; j < s->h; j++)
+		for (int32_t i = 0; i < s->w; i++)
+			if (s->label[j * s->w + i] == SCREEN_SPACE && unknown_beside(s, i, j, centre, radius))
+				return true;
+	return false;
+}
+
+bool goals_frontier_within(const Controller *c, const int32_t *dist, Vec2 centre, double radius, Vec2 *goal)
+{
 	const Screen *s = &c->screen;
 	int32_t best = -1, best_d = INT32_MAX;
 	for (int32_t j = 0; j < s->h; j++)
@@ -210,8 +239,7 @@ bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal)
 				visited = goals_distance(here, c->visited[v]) < 1.0;
 			if (visited)
 				continue;
-			if (screen_label(s, i + 1, j) == SCREEN_UNKNOWN || screen_label(s, i - 1, j) == SCREEN_UNKNOWN ||
-			    screen_label(s, i, j + 1) == SCREEN_UNKNOWN || screen_label(s, i, j - 1) == SCREEN_UNKNOWN) {
+			if (unknown_beside(s, i, j, centre, radius)) {
 				best = k;
 				best_d = dist[k];
 			}
@@ -656,6 +684,15 @@ void goals_choose(Controller *c, GoalResult *out)
 			/* Another object nearer the start, not yet seen whole, may be the
 			 * task's (objects_doubt): a closer look at it first. */
 			if (k >= 0 && unexamined(c, k, true, dist, &out->goal)) {
+				out->exploring = out->found = true;
+				break;
+			}
+			/* The task's object is the nearest of its shape to the start: where
+			 * the model has unseen space nearer the start than k's centroid,
+			 * a nearer one may lie, and Utak looks there before going to k
+			 * (objects.h, THE NEARER UNSEEN). */
+			if (k >= 0 && goals_frontier_within(c, dist, c->start, goals_distance(objects_read(c, k).centroid, c->start),
+							    &out->goal)) {
 				out->exploring = out->found = true;
 				break;
 			}

@@ -210,7 +210,7 @@ bool objects_touching_target(Controller *c)
 /* doubt_own(o, shape): objects_doubt's measures on one reading (NULL: none). */
 static const char *doubt_own(const ObjectReading *o)
 {
-	if (o->squares <= OBJECTS_CRUMB)
+	if (o->reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
 		return "crumb";
 	if (o->shape == SHAPE_SQUARE && o->reading.aspect > SHAPE_SQUARE_ASPECT)
 		return "gap";
@@ -247,9 +247,11 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 			return true;
 		}
 	}
-	if (o.squares <= OBJECTS_CRUMB)
-		snprintf(why, size, "the %s covers only %d squares, as a crumb too small to name covers as many",
-			 shape, (int)o.squares);
+	if (goals_unseen_within(c, c->start, d))
+		snprintf(why, size, "space nearer the start than the %s is unseen, where another may lie", shape);
+	else if (o.reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
+		snprintf(why, size, "the %s's %d squares may be those of a polygon under %.0f wide (from %.2f), too narrow to name",
+			 shape, (int)o.squares, OBJECTS_NAMED_WIDTH, o.reading.min_width);
 	else if (o.shape == SHAPE_SQUARE && o.reading.aspect > SHAPE_SQUARE_ASPECT)
 		snprintf(why, size, "the %s reads %.2f times as long as wide, over a square's %.1f", shape,
 			 o.reading.aspect, SHAPE_SQUARE_ASPECT);

@@ -198,9 +198,51 @@ static double notch_depth(const ShapeMask *m, const Vec2 *h, int32_t n)
 	return deepest;
 }
 
+/* spread_less_square(h, n, t): how far the points h spread across the direction
+ * at t radians, less a square's own extent across it. */
+static double spread_less_square(const Vec2 *h, int32_t n, double t)
+{
+	double ux = cos(t), uy = sin(t), lo = INFINITY, hi = -INFINITY;
+	for (int32_t i = 0; i < n; i++) {
+		double p = h[i].x * ux + h[i].y * uy;
+		lo = fmin(lo, p);
+		hi = fmax(hi, p);
+	}
+	return hi - lo - (fabs(ux) + fabs(uy));
+}
+
+/* least_width(h, n): the width every polygon whose digital representation has
+ * these square centres on its hull exceeds (shape.h, min_width). Across a
+ * direction u the centres of the squares a polygon P meets spread less than P
+ * does plus a square's own extent across u, |ux| + |uy| (each square's open
+ * interior meets P, and its centre lies within half that of the meeting point);
+ * so P's width, its least extent, exceeds the least over u of the centres'
+ * spread less |ux| + |uy|, and a polygon of thin parts can come as near to it as
+ * it likes. That measure is, within each quadrant of u, the support function of
+ * a fixed polygon (the centres' difference set, shifted), whose least value over
+ * an arc, where positive, lies at the arc's ends or at a normal of one of its
+ * edges, which are the normals of the hull's edges: those directions, and the
+ * axes, are tried. Samples every SHAPE_WIDTH_STEP degrees catch a least value
+ * at or under 0, where that does not hold. */
+static double least_width(const Vec2 *h, int32_t n)
+{
+	if (n <= 0)
+		return 0;
+	const double rad = atan(1.0) / 45;
+	double least = fmin(spread_less_square(h, n, 0), spread_less_square(h, n, 90 * rad));
+	for (int32_t i = 0; i < n; i++) {
+		Vec2 a = h[i], b = h[(i + 1) % n];
+		if (a.x != b.x || a.y != b.y)
+			least = fmin(least, spread_less_square(h, n, atan2(b.x - a.x, -(b.y - a.y))));
+	}
+	for (int k = 0; k * SHAPE_WIDTH_STEP < 180; k++)
+		least = fmin(least, spread_less_square(h, n, k * SHAPE_WIDTH_STEP * rad));
+	return fmax(0, least);
+}
+
 Shape shape_read(const int32_t *x, const int32_t *y, int32_t n, double scale, ShapeReading *out)
 {
-	ShapeReading r = {SHAPE_NONE, 0, 0, 0, 0, 0, 0, 0, 0, 0, {0, 0, 0}};
+	ShapeReading r = {SHAPE_NONE, 0, 0, 0, 0, 0, 0, 0, 0, 0, {0, 0, 0}, 0};
 	if (n <= 0) {
 		if (out)
 			*out = r;
@@ -223,6 +265,7 @@ Shape shape_read(const int32_t *x, const int32_t *y, int32_t n, double scale, Sh
 	int32_t hn, on;
 	Vec2 *h = hull_vertices(&m, true, &hn), *outer = hull_vertices(&m, false, &on);
 	double area = hn >= 3 ? hull_area(h, hn) : 0;
+	r.min_width = least_width(h, hn);
 	if (area > 0 && r.squares >= SHAPE_MIN_SQUARES) {
 		Rect rect = min_area_rect(h, hn);
 		int32_t tri[3];

@@ -170,11 +170,49 @@ TEST_CASE(shape_of_coordinates)
 	TEST_CHECK(shape_read(x, y, n, 1, &r) == SHAPE_SQUARE && r.squares == 25);
 }
 
+/* min_width (shape.h) bounds the width of every polygon the squares may be: for
+ * rectangles from 1 to 3 squares wide, at every 5 degrees and at four shifts, it
+ * lies under the true width; and for a k x m block of squares on the grid it is
+ * min(k, m) - 2 (at least 0): a rectangle that reaches just past the inner lines
+ * of the block's outer squares, min(k, m) - 2 + e wide, covers the block. */
+TEST_CASE(min_width_bounds_every_width)
+{
+	static const double widths[] = {1.0, 1.5, 1.9, 1.99, 2.0, 2.3, 3.0};
+	static const double offs[4][2] = {{0, 0}, {0.35, 0.7}, {0.5, 0.5}, {0.9, 0.1}};
+	int over = 0, runs = 0;
+	for (size_t i = 0; i < sizeof widths / sizeof widths[0]; i++)
+		for (int len = 0; len < 3; len++) {
+			double w = widths[i], l = len == 0 ? w : len == 1 ? 1.2 * w : 4;
+			double xy[8] = {0, 0, l, 0, l, w, 0, w};
+			for (int deg = 0; deg < 180; deg += 5)
+				for (int k = 0; k < 4; k++) {
+					ShapeReading r;
+					name(xy, 4, deg, offs[k][0], offs[k][1], &r);
+					runs++;
+					over += r.min_width >= w;
+				}
+		}
+	TEST_CHECK(runs > 0 && over == 0);
+	for (int32_t k = 1; k <= 5; k++)
+		for (int32_t m = 1; m <= 5; m++) {
+			int32_t x[25], y[25], n = 0;
+			for (int32_t j = 0; j < m; j++)
+				for (int32_t i = 0; i < k; i++) {
+					x[n] = i;
+					y[n++] = j;
+				}
+			ShapeReading r;
+			shape_read(x, y, n, 1, &r);
+			TEST_CHECK(fabs(r.min_width - fmax(0, (k < m ? k : m) - 2)) < 1e-9);
+		}
+}
+
 int main(void)
 {
 	TEST_RUN(rectangles_at_every_angle);
 	TEST_RUN(lshapes_and_triangles_at_every_angle);
 	TEST_RUN(unnamed_shapes_at_every_angle);
 	TEST_RUN(shape_of_coordinates);
+	TEST_RUN(min_width_bounds_every_width);
 	return TEST_EXIT();
 }

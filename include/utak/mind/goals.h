@@ -65,6 +65,12 @@ void goals_corner_failed(Controller *c, int64_t short_by);
 /* goals_frontier(c, dist, goal): the nearest reachable known-floor cell beside an
  * unknown one, not yet visited. */
 bool goals_frontier(const Controller *c, const int32_t *dist, Vec2 *goal);
+/* goals_frontier_within(c, dist, centre, radius, goal): the same, among the cells
+ * beside an unknown square whose centre lies under radius from centre. */
+bool goals_frontier_within(const Controller *c, const int32_t *dist, Vec2 centre, double radius, Vec2 *goal);
+/* goals_unseen_within(c, centre, radius): some unknown square under radius from
+ * centre lies beside floor the model knows (reachable or not, visited or not). */
+bool goals_unseen_within(const Controller *c, Vec2 centre, double radius);
 /* goals_inspect(c, dist, goal): beside the nearest object not yet seen whole in the
  * fovea, where a closer look may show its shape (or show it to be part of a wall). */
 bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal);

@@ -86,15 +86,22 @@ bool objects_touching_target(Controller *c);
  * whole in the fovea as the task's shape, otherwise (why says how). The eye knows
  * an object by the squares it covers, and the same squares are covered by objects
  * of other names: Utak claims a task on an object only when they are not.
- *   A CRUMB: a set of at most OBJECTS_CRUMB squares is covered as well by an
- *   object under two squares wide, which has no shape name (judgeshape.h,
- *   JUDGE_SHAPE_MIN_WIDTH; its corners fall inside the squares); and a square
- *   just two wide may cover as few as 4, too few to name (shape.h).
+ *   A CRUMB: a set of squares that a polygon under OBJECTS_NAMED_WIDTH may
+ *   cover, which has no shape name (doc/verdicts.md): the reading's min_width
+ *   (shape.h) under it. The bound is exact for polygons of any form: a 3 x 3
+ *   block (min_width 1) is a crumb, a 4 x 4 block (2) is not. It replaced a
+ *   count (at most OBJECTS_CRUMB squares), which doubted every 4 x 4 square
+ *   that happened to cover 14 squares or fewer and no 15-square set, whatever
+ *   its spread.
  *   NEARER THE START: the task's object is the one of its shape nearest the
  *   start; another object nearer may be it when its squares were never all seen
  *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
  *   squares or more each way (a square two wide or more, unless its sides lie on
  *   the grid's lines, does). A crumb named another shape is taken at its name.
+ *   THE NEARER UNSEEN: where floor the model knows borders unseen squares nearer
+ *   the start than the object's centroid (goals_unseen_within), an object of
+ *   the shape may lie there; goals.c looks at such space before going to the
+ *   object, and what cannot be reached or seen stays a doubt.
  *   THE GAP: a square is at most SHAPE_SQUARE_ASPECT long for its width, a brick at
  *   least SHAPE_BRICK_ASPECT; read between the two (shape.h names it the nearer),
  *   the object may be neither.
@@ -103,8 +110,14 @@ bool objects_touching_target(Controller *c);
  * corners cut by under a square reads as the rectangle). */
 /* The most squares a rectangle under two squares wide and at most 1.2 times as
  * long covers (measured: 1.99 x 2.39 at every 5 degrees and eighth-square
- * offsets, 14; a 1.99 square covers at most 12). */
+ * offsets, 14; a 1.99 square covers at most 12): an unnamed set nearer the start
+ * no larger may be a square (objects_doubt). */
 #define OBJECTS_CRUMB 14
+/* The least width the verdicts give a name (doc/verdicts.md: a polygon narrower
+ * is unnamed). A set of squares that a polygon narrower than this may cover is a
+ * crumb to objects_doubt (shape.h, min_width: a bound on the width of every
+ * polygon covering the set, from how far its centres spread in each direction). */
+#define OBJECTS_NAMED_WIDTH 2.0
 bool objects_doubt(Controller *c, int32_t k, char *why, size_t size);
 /* objects_doubtful(c, k): node k is seen whole and doubtful by its own measures
  * (a crumb, or in the gap): one of the shape beyond doubt goes before it as the

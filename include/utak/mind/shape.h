@@ -82,6 +82,8 @@
 /* Too small to name: a short side under this (squares, times scale). */
 #define SHAPE_MIN_SIDE 1.5
 #define SHAPE_MIN_SQUARES 8
+/* min_width's directions are also sampled this often (degrees). */
+#define SHAPE_WIDTH_STEP 1.0
 
 /* What was read from a set of squares. Lengths in squares; the angle in degrees,
  * counter-clockwise from the x axis of the squares' frame. */
@@ -96,6 +98,9 @@ typedef struct ShapeReading {
 	double notch_depth;   /* how deep the outline reaches into the corners' hull */
 	int32_t corners;      /* 3, 4 or 6 for a named shape; 0 unnamed */
 	int32_t fit_error[3]; /* squares mismatched by the best rectangle, triangle, L */
+	double min_width;     /* every polygon whose digital representation is the set
+			       * is wider than this, and one may be as little wider as
+			       * it likes (squares; shape.c least_width) */
 } ShapeReading;
 
 /* shape_read(x, y, n, scale, out): the shape of the n distinct squares (x[i], y[i])
