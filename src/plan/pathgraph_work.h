@@ -85,6 +85,11 @@ struct PathgraphScratch {
 	size_t toward_cells;
 	IntList built_vcells;
 	bool built_valid; /* cell_ref is -1 outside built_vcells and the edges' cells */
+	/* The capacities of the Pathgraph's arrays (vertices, edges, cells and cell_edge,
+	 * incident_start, incident), kept by the next build rather than freed and grown
+	 * again, and the builder's list of where each vertex's cells start. */
+	int vertex_cap, edge_cap, cells_cap, incident_start_cap, incident_cap;
+	IntList vstart;
 };
 
 /* ---------------------------------------------------------------- lengths */
@@ -104,8 +109,10 @@ static inline int32_t pathgraph_cy(const Pathgraph *pg, int32_t i)
  * fourth cell of the 2x2 block that a, b, c span is inside the grid. */
 static inline bool pathgraph_corner_cut(const Pathgraph *pg, int32_t a, int32_t b, int32_t c)
 {
-	int32_t s1 = b - a, s2 = c - b, w = pg->w;
-	bool perpendicular = (s1 == 1 || s1 == -1) ? (s2 == w || s2 == -w) : (s2 == 1 || s2 == -1);
+	/* a step along x is +-1 and one along y +-w (a grid one cell wide has none
+	 * along x, so no corner); the test as the build's edgerun_push makes it */
+	int32_t s1 = b - a, s2 = c - b;
+	bool perpendicular = ((uint32_t)(s1 + 1) <= 2) != ((uint32_t)(s2 + 1) <= 2);
 	return perpendicular && pg->grid->cells[a + s2] == GRID_FREE;
 }
 
