@@ -82,6 +82,7 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->toward);
 	free(sc->built_vcells.v);
 	free(sc->vstart.v);
+	free(sc->mask);
 	free(sc);
 }
 
@@ -109,6 +110,8 @@ typedef struct Builder {
 	const Skeleton *s;
 	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
 	uint8_t *toward; /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	uint8_t *mask;   /* skeleton cells: their skeleton 4-neighbours, bit d for direction d
+	                  * (east north west south); other cells: stale */
 	IntList vcells;  /* cells of every vertex, vertex after vertex */
 	IntList vstart;  /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
 	int32_t count;   /* edge cells so far, in pg->cells and pg->cell_edge */
@@ -204,13 +207,12 @@ static void builder_junction_set(Builder *b, int32_t seed)
 	pg->vertices[v].dist2 = b->s->dist2[root];
 }
 
-/* ---------------------------------------------------------------- an edge's run */
+/* ---------------------------------------------------------------- edges */
 
-/* An edge's cells as they are appended, with its length and clearance measured on
- * the way: the length by pathgraph_run_length's rule (a diagonal across a cut corner,
- * decided left to right), taken one cell at a time so that the additions, and so the
- * double, are those of pathgraph_run_length; one pass over the cells instead of three
- * (walk, length, clearance). */
+/* An edge's length and clearance, measured as its cells are appended: the length by
+ * pathgraph_run_length's rule (a diagonal across each cut corner, decided left to
+ * right) taken one cell at a time, so that the additions, and so the double, are
+ * those of pathgraph_run_length. */
 typedef struct EdgeRun {
 	int32_t a, b;   /* the last two cells */
 	bool ready;     /* the step out of b is undecided: the next cell decides it */
@@ -218,21 +220,19 @@ typedef struct EdgeRun {
 	int32_t min_dist2;
 } EdgeRun;
 
-static inline EdgeRun edgerun_start(const Skeleton *s, int32_t c)
-{
-	return (EdgeRun){-1, c, false, 0.0, s->dist2[c]};
-}
-
-/* edgerun_push(r, gc, c): cell c after r's last (a 4-neighbour of it). The steps
+/* edgerun_push(r, dist2, c): cell c after r's last (a 4-neighbour of it). The steps
  * a -> b -> c cut a corner when one is along x and the other along y (s == +-1 tells
- * a step along x; w >= 2, and a grid one cell wide has none) and the fourth cell of
- * their 2x2 block, a + (c - b), is free (pathgraph_corner_cut). */
-static inline void edgerun_push(EdgeRun *r, const uint8_t *gc, const int32_t *dist2, int32_t c)
+ * a step along x: w >= 2, and a grid one cell wide has none) and the fourth cell of
+ * their 2x2 block, a + (c - b), is free (pathgraph_corner_cut). Free is told by
+ * dist2 > 0 (skeleton.h: 0 exactly on blocked cells), which the walk's loads of
+ * dist2 around the corner have mostly brought in already, where the grid's byte
+ * would be a load of its own. */
+static inline void edgerun_push(EdgeRun *r, const int32_t *dist2, int32_t c)
 {
 	if (r->ready) {
 		int32_t s1 = r->b - r->a, s2 = c - r->b;
 		bool cut = ((uint32_t)(s1 + 1) <= 2) != ((uint32_t)(s2 + 1) <= 2) &&
-		           gc[r->a + s2] == GRID_FREE;
+		           dist2[r->a + s2] > 0;
 		r->length += cut ? PATHGRAPH_SQRT2 : 1.0;
 		r->ready = !cut;
 	} else {
@@ -258,37 +258,34 @@ static void builder_reserve(Builder *b, int64_t more)
 	b->sc->cells_cap = cap;
 }
 
-/* builder_root_path(b, c, r, forward): the cells from junction-set cell c to the root
- * of its set (toward[]), appended to the edge: from the root to c when !forward (the
- * start of an edge: c is where it leaves the set), else from c to the root. */
+/* builder_root_path(b, c, r, forward): appends to the edge (and to r) the cells from
+ * junction-set cell c to the root of its set (toward[]): from the root to c when
+ * !forward (the start of an edge, c where it leaves the set: r starts there), else
+ * from c to the root. */
 static void builder_root_path(Builder *b, int32_t c, EdgeRun *r, bool forward)
 {
-	Pathgraph *pg = b->pg;
-	int32_t *cells = pg->cells;
-	const int32_t w = pg->w;
+	int32_t *p = b->pg->cells + b->count;
+	const int32_t w = b->pg->w, *dist2 = b->s->dist2;
 	int32_t n = 0, at = c;
-	for (;;) { /* the path, c first, at the end of cells[] */
-		cells[b->count + n++] = at;
+	for (;;) {
+		p[n++] = at;
 		uint8_t t = b->toward[at];
 		if (t == 0)
 			break;
 		at += PATHGRAPH_DX[t - 1] + PATHGRAPH_DY[t - 1] * w;
 	}
-	int32_t *p = cells + b->count;
-	if (!forward)
-		for (int32_t i = 0, j = n - 1; i < j; i++, j--) {
-			int32_t t = p[i];
-			p[i] = p[j];
-			p[j] = t;
-		}
-	const uint8_t *gc = pg->grid->cells;
 	int32_t i = 0;
-	if (!forward) { /* the edge's first cell */
-		*r = edgerun_start(b->s, p[0]);
+	if (!forward) {
+		for (int32_t lo = 0, hi = n - 1; lo < hi; lo++, hi--) {
+			int32_t t = p[lo];
+			p[lo] = p[hi];
+			p[hi] = t;
+		}
+		*r = (EdgeRun){-1, p[0], false, 0.0, dist2[p[0]]};
 		i = 1;
 	}
 	for (; i < n; i++)
-		edgerun_push(r, gc, b->s->dist2, p[i]);
+		edgerun_push(r, dist2, p[i]);
 	b->count += n;
 }
 
@@ -297,17 +294,18 @@ static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, 
 {
 	Pathgraph *pg = b->pg;
 	pg->edges = util_grow(pg->edges, &b->sc->edge_cap, pg->edge_count + 1, sizeof *pg->edges);
-	int32_t e = pg->edge_count++;
+	const int32_t e = pg->edge_count++;
 	pg->edges[e] = (PathgraphEdge){v0, v1, first, b->count - first,
 	                               r->length + (r->ready ? 1.0 : 0.0), r->min_dist2};
-	for (int32_t k = first; k < b->count; k++)
-		pg->cell_edge[k] = e;
+	int32_t *cell_edge = pg->cell_edge;
+	for (int32_t k = first, end = b->count; k < end; k++)
+		cell_edge[k] = e;
 }
 
 /* PATHGRAPH_NEXT[back][m]: for a cell whose skeleton 4-neighbours are the bits of m (bit
  * d for direction d, east north west south) and that was entered from direction back:
  * the direction on, when the cell is a chain cell (two neighbours, back one of them);
- * else -1, a vertex cell. */
+ * else -1, a vertex cell (or a loop vertex's, its mask zeroed). */
 static const int8_t PATHGRAPH_NEXT[4][16] = {
 	{-1, -1, -1, 1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
 	{-1, -1, -1, 0, -1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1},
@@ -315,50 +313,45 @@ static const int8_t PATHGRAPH_NEXT[4][16] = {
 	{-1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, -1, 2, -1, -1, -1},
 };
 
-/* builder_walk(b, c, d, stop, r): from cell c (already in the edge) in direction d along
- * chain cells, appending each to the edge, up to the first cell that is not a chain
- * cell (of degree other than 2: step (1) made it a vertex cell), or cell stop (a loop
- * vertex's own cell; -1 for none); returns that cell. Each chain cell's cell_ref is
- * set to ref_base + its place in cells[]. Inline, so that stop -1 costs nothing. */
-static inline int32_t builder_walk(Builder *b, int32_t c, int d, int32_t stop, EdgeRun *r)
+/* builder_edge_from(b, v, c, d): the edge leaving vertex v's cell c in direction d,
+ * into a chain cell not yet walked: along the chain to the next cell that is not a
+ * chain cell (of degree other than 2, so a vertex cell, step 1; or a loop vertex's
+ * cell, its mask zeroed by builder_loops), measuring it on the way. Each chain cell's
+ * cell_ref is set to ref_base + its place in cells[]. */
+static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 {
-	const Pathgraph *pg = b->pg;
+	Pathgraph *pg = b->pg;
+	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
+	const int32_t first = b->count;
+	EdgeRun r;
+	builder_root_path(b, c, &r, false); /* from v's own cell to c */
 	const int32_t w = pg->w, ref_base = b->ref_base;
-	const uint32_t w_in = (uint32_t)(w - 2), rows_in = (uint32_t)(w * pg->h - 2 * w);
 	const int32_t step[4] = {1, w, -1, -w};
-	const uint8_t *on = b->s->on, *gc = pg->grid->cells;
+	const uint8_t *mask = b->mask;
 	const int32_t *dist2 = b->s->dist2;
 	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
-	int32_t k = b->count, x = c % w + PATHGRAPH_DX[d], cur = c + step[d];
+	int32_t k = b->count, cur = c + step[d];
 	int back = d ^ 2;
-	/* the run's state in locals (stores to cell_ref and cells could alias r); pend,
-	 * the direction of the step into the last cell when r->ready, else -1 */
+	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
+	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
-	if (r->ready) {
-		int32_t s1 = r->b - r->a;
+	if (r.ready) {
+		const int32_t s1 = r.b - r.a;
 		pend = s1 == 1 ? 0 : s1 == w ? 1 : s1 == -1 ? 2 : 3;
 	}
-	int32_t md = r->min_dist2;
-	double length = r->length;
+	int32_t md = r.min_dist2;
+	double length = r.length;
 	for (;;) {
-		/* the neighbours of cur, without bounds tests inside the grid's rim */
-		unsigned m;
-		if ((uint32_t)(x - 1) < w_in && (uint32_t)(cur - w) < rows_in)
-			m = on[cur + 1] | on[cur + w] << 1 | on[cur - 1] << 2 | on[cur - w] << 3;
-		else
-			m = (unsigned)(x + 1 < w && on[cur + 1]) |
-			    (unsigned)(cur + w < w * pg->h && on[cur + w]) << 1 |
-			    (unsigned)(x > 0 && on[cur - 1]) << 2 | (unsigned)(cur >= w && on[cur - w]) << 3;
-		const int next = PATHGRAPH_NEXT[back][m];
-		if (next < 0 || cur == stop)
+		const int next = PATHGRAPH_NEXT[back][mask[cur]];
+		if (next < 0)
 			break;
 		cell_ref[cur] = ref_base + k;
 		cells[k++] = cur;
-		/* edgerun_push, written out: the steps into the last cell (pend) and into
+		/* edgerun_push, in directions: the steps into the last cell (pend) and into
 		 * cur (back ^ 2) cut a corner when perpendicular and the fourth cell of
 		 * their 2x2 block, cur - step[pend], is free */
 		if (pend >= 0) {
-			const bool cut = ((pend ^ back) & 1) && gc[cur - step[pend]] == GRID_FREE;
+			const bool cut = ((pend ^ back) & 1) && dist2[cur - step[pend]] > 0;
 			length += cut ? PATHGRAPH_SQRT2 : 1.0;
 			pend = cut ? -1 : back ^ 2;
 		} else {
@@ -367,31 +360,15 @@ static inline int32_t builder_walk(Builder *b, int32_t c, int d, int32_t stop, E
 		if (dist2[cur] < md)
 			md = dist2[cur];
 		cur += step[next];
-		x += PATHGRAPH_DX[next];
 		back = next ^ 2;
 	}
-	/* at least one chain cell was walked: the edge has two cells or more */
-	*r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
+	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
+	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
 	b->chain_left -= k - b->count;
 	b->count = k;
-	return cur;
-}
-
-/* builder_edge_from(b, v, c, d, stop): the edge leaving vertex v's cell c in direction
- * d, into a chain cell not yet walked, to the next vertex cell (or stop, see
- * builder_walk). */
-static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d, int32_t stop)
-{
-	Pathgraph *pg = b->pg;
-	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
-	const int32_t first = b->count;
-	EdgeRun r;
-	/* from v's own cell to c: the tree path c -> root, reversed */
-	builder_root_path(b, c, &r, false);
-	const int32_t end = stop < 0 ? builder_walk(b, c, d, -1, &r) : builder_walk(b, c, d, stop, &r);
-	const int32_t u = pg->cell_ref[end];
+	const int32_t u = cell_ref[cur];
 	assert(u >= 0 && u < pg->vertex_count);
-	builder_root_path(b, end, &r, true);
+	builder_root_path(b, cur, &r, true);
 	builder_end_edge(b, v, u, first, &r);
 }
 
@@ -433,6 +410,7 @@ static void builder_vertices(Builder *b)
 		const uint8_t *on = s->on + (size_t)y * pg->w;
 		const uint8_t *below = y > 0 ? on - pg->w : NULL;
 		const uint8_t *above = y + 1 < pg->h ? on + pg->w : NULL;
+		uint8_t *mask = b->mask + (size_t)y * pg->w;
 		for (int32_t x = 0; x < pg->w;) {
 #if PATHGRAPH_SCAN_WORDS
 			/* eight cells a word, inside the row: the degrees of all eight as
@@ -445,9 +423,14 @@ static void builder_vertices(Builder *b)
 					x += 8;
 					continue;
 				}
-				uint64_t deg = pathgraph_load8(on + x - 1) + pathgraph_load8(on + x + 1) +
-				               (below ? pathgraph_load8(below + x) : 0) +
-				               (above ? pathgraph_load8(above + x) : 0);
+				const uint64_t e = pathgraph_load8(on + x + 1),
+				               wst = pathgraph_load8(on + x - 1),
+				               nth = above ? pathgraph_load8(above + x) : 0,
+				               sth = below ? pathgraph_load8(below + x) : 0;
+				const uint64_t deg = e + nth + wst + sth;
+				/* the eight masks: each byte's bits apart, no carries */
+				const uint64_t m8 = e | nth << 1 | wst << 2 | sth << 3;
+				memcpy(mask + x, &m8, sizeof m8);
 				uint64_t t = deg ^ (2 * ones); /* a byte nonzero: degree not 2 */
 				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
 				while (cand) {
@@ -467,8 +450,10 @@ static void builder_vertices(Builder *b)
 				x++;
 				continue;
 			}
-			int d = (x > 0 && on[x - 1]) + (x + 1 < pg->w && on[x + 1]) +
-			        (below && below[x]) + (above && above[x]);
+			const int e = x + 1 < pg->w && on[x + 1], nth = above && above[x],
+			          wst = x > 0 && on[x - 1], sth = below && below[x];
+			mask[x] = (uint8_t)(e | nth << 1 | wst << 2 | sth << 3);
+			int d = e + nth + wst + sth;
 			int32_t i = y * pg->w + x;
 			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE)
 				builder_vertex_at(b, i, d);
@@ -492,7 +477,7 @@ static void builder_edges(Builder *b)
 					continue;
 				int32_t ref = pg->cell_ref[nb];
 				if (ref == PATHGRAPH_REF_NONE) {
-					builder_edge_from(b, v, c, d, -1);
+					builder_edge_from(b, v, c, d);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
 					/* two vertices' cells touching: an edge without chain cells */
 					builder_reserve(b, 2 * (int64_t)b->max_set);
@@ -517,7 +502,7 @@ static void builder_loops(Builder *b)
 	Pathgraph *pg = b->pg;
 	const Skeleton *s = b->s;
 	const size_t n = (size_t)pg->w * (size_t)pg->h;
-	const int32_t nv = pg->vertex_count, edges = pg->edge_count;
+	const int32_t nv = pg->vertex_count;
 	for (size_t i = 0; i < n && b->chain_left > 0; i++) {
 		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
 			continue;
@@ -527,10 +512,12 @@ static void builder_loops(Builder *b)
 		int d = 0;
 		while (builder_neighbour(b, (int32_t)i, x, d) < 0)
 			d++;
-		builder_edge_from(b, v, (int32_t)i, d, (int32_t)i);
+		b->mask[i] = 0; /* where the walk round the loop ends */
+		builder_edge_from(b, v, (int32_t)i, d);
 	}
+	/* inner cells of edges at or past nv are chain cells: junction-set cells number
+	 * below nv, and loop vertices' cells end their edges */
 	const int32_t loops = pg->vertex_count - nv;
-	(void)edges;
 	for (int32_t e = 0; e < pg->edge_count; e++) {
 		const PathgraphEdge *ed = &pg->edges[e];
 		for (int32_t k = ed->first + 1; k < ed->first + ed->count - 1; k++)
@@ -570,13 +557,18 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 			memset(sc->toward, 0, n);
 		}
 	}
+	if (sc->mask_cells != n || !sc->mask) {
+		free(sc->mask);
+		sc->mask = util_alloc(n, 1);
+		sc->mask_cells = n;
+	}
 	sc->built_valid = false;
 	pg->w = s->w;
 	pg->h = s->h;
 	pg->grid = g;
 	pg->skeleton = s;
 	pg->vertex_count = pg->edge_count = pg->cell_count = 0;
-	Builder b = {.pg = pg, .s = s, .sc = sc, .toward = sc->toward, .max_set = 1};
+	Builder b = {.pg = pg, .s = s, .sc = sc, .toward = sc->toward, .mask = sc->mask, .max_set = 1};
 	b.vcells = sc->built_vcells; /* its memory, reused */
 	b.vcells.count = 0;
 	b.vstart = sc->vstart;
