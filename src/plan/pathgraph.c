@@ -398,67 +398,70 @@ static inline uint64_t pathgraph_load8(const uint8_t *p)
 #define PATHGRAPH_SCAN_WORDS 0
 #endif
 
-/* builder_vertices(b): step (1), the vertices in row-major order of their first cell.
- * Most cells are off the skeleton: the scan skips eight at a time where they are all
- * zero; and most skeleton cells are chain cells, told by their degree from the rows
- * around. */
+/* builder_scan_cell(b, y, x, on, below, above, mask): the vertex scan at one cell of
+ * row y (on, and the rows below and above it or NULL; mask, row y's masks). */
+static inline void builder_scan_cell(Builder *b, int32_t y, int32_t x, const uint8_t *on,
+                                     const uint8_t *below, const uint8_t *above, uint8_t *mask)
+{
+	if (!on[x])
+		return;
+	const int32_t w = b->pg->w;
+	const int e = x + 1 < w && on[x + 1], nth = above && above[x], wst = x > 0 && on[x - 1],
+	          sth = below && below[x];
+	mask[x] = (uint8_t)(e | nth << 1 | wst << 2 | sth << 3);
+	const int d = e + nth + wst + sth;
+	const int32_t i = y * w + x;
+	if (d != 2 && b->pg->cell_ref[i] == PATHGRAPH_REF_NONE)
+		builder_vertex_at(b, i, d);
+}
+
+/* builder_vertices(b): step (1), the vertices in row-major order of their first cell,
+ * and every skeleton cell's mask. Most cells are off the skeleton: the scan skips
+ * eight at a time where they are all zero; and most skeleton cells are chain cells,
+ * told by their degree from the rows around. */
 static void builder_vertices(Builder *b)
 {
 	Pathgraph *pg = b->pg;
 	const Skeleton *s = b->s;
-	for (int32_t y = 0; y < pg->h; y++) {
-		const uint8_t *on = s->on + (size_t)y * pg->w;
-		const uint8_t *below = y > 0 ? on - pg->w : NULL;
-		const uint8_t *above = y + 1 < pg->h ? on + pg->w : NULL;
-		uint8_t *mask = b->mask + (size_t)y * pg->w;
-		for (int32_t x = 0; x < pg->w;) {
+	const int32_t w = pg->w, h = pg->h;
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *on = s->on + (size_t)y * w;
+		const uint8_t *below = y > 0 ? on - w : NULL;
+		const uint8_t *above = y + 1 < h ? on + w : NULL;
+		uint8_t *mask = b->mask + (size_t)y * w;
+		int32_t x = 0;
 #if PATHGRAPH_SCAN_WORDS
-			/* eight cells a word, inside the row: the degrees of all eight as
-			 * byte sums (each at most 4, so no carries), and only the cells of
-			 * degree other than 2 visited below */
-			if (x >= 1 && x + 9 <= pg->w) {
-				const uint64_t ones = 0x0101010101010101ULL;
-				uint64_t here = pathgraph_load8(on + x);
-				if (here == 0) {
-					x += 8;
+		/* inside rows and columns, eight cells a word: their degrees as byte sums
+		 * (each at most 4, so no carries) and their masks (each byte's bits apart),
+		 * and only the cells of degree other than 2 visited one by one */
+		if (below && above && w >= 10) {
+			builder_scan_cell(b, y, 0, on, below, above, mask);
+			const uint64_t ones = 0x0101010101010101ULL;
+			for (x = 1; x + 9 <= w; x += 8) {
+				const uint64_t here = pathgraph_load8(on + x);
+				if (here == 0)
 					continue;
-				}
 				const uint64_t e = pathgraph_load8(on + x + 1),
 				               wst = pathgraph_load8(on + x - 1),
-				               nth = above ? pathgraph_load8(above + x) : 0,
-				               sth = below ? pathgraph_load8(below + x) : 0;
-				const uint64_t deg = e + nth + wst + sth;
-				/* the eight masks: each byte's bits apart, no carries */
+				               nth = pathgraph_load8(above + x),
+				               sth = pathgraph_load8(below + x);
 				const uint64_t m8 = e | nth << 1 | wst << 2 | sth << 3;
 				memcpy(mask + x, &m8, sizeof m8);
-				uint64_t t = deg ^ (2 * ones); /* a byte nonzero: degree not 2 */
+				const uint64_t t = (e + nth + wst + sth) ^ (2 * ones); /* degree not 2 */
 				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
 				while (cand) {
 					const int32_t cx = x + __builtin_ctzll(cand) / 8;
 					cand &= cand - 1;
-					const int32_t i = y * pg->w + cx;
+					const int32_t i = y * w + cx;
 					if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
 						builder_vertex_at(b, i, on[cx - 1] + on[cx + 1] +
-						                            (below && below[cx]) +
-						                            (above && above[cx]));
+						                            below[cx] + above[cx]);
 				}
-				x += 8;
-				continue;
 			}
-#endif
-			if (!on[x]) {
-				x++;
-				continue;
-			}
-			const int e = x + 1 < pg->w && on[x + 1], nth = above && above[x],
-			          wst = x > 0 && on[x - 1], sth = below && below[x];
-			mask[x] = (uint8_t)(e | nth << 1 | wst << 2 | sth << 3);
-			int d = e + nth + wst + sth;
-			int32_t i = y * pg->w + x;
-			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-				builder_vertex_at(b, i, d);
-			x++;
 		}
+#endif
+		for (; x < w; x++)
+			builder_scan_cell(b, y, x, on, below, above, mask);
 	}
 	intlist_push(&b->vstart, b->vcells.count);
 }
@@ -539,8 +542,13 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	}
 	if (pg->cell_ref && sc->built_valid && sc->toward_cells == n) {
 		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
-		for (int32_t k = 0; k < pg->cell_count; k++)
-			pg->cell_ref[pg->cells[k]] = PATHGRAPH_REF_NONE;
+		int32_t *cell_ref = pg->cell_ref;
+		const int32_t *cells = pg->cells, count = pg->cell_count;
+		if ((size_t)count * 8 > n) /* one cell in 8 or more: every line of cell_ref has */
+			memset(cell_ref, 0xff, n * sizeof *cell_ref); /* some; a stream is cheaper */
+		else
+			for (int32_t k = 0; k < count; k++)
+				cell_ref[cells[k]] = PATHGRAPH_REF_NONE;
 		for (int k = 0; k < sc->built_vcells.count; k++) {
 			pg->cell_ref[sc->built_vcells.v[k]] = PATHGRAPH_REF_NONE;
 			sc->toward[sc->built_vcells.v[k]] = 0;
