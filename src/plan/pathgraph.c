@@ -471,13 +471,15 @@ static void builder_edges(Builder *b)
 {
 	Pathgraph *pg = b->pg;
 	const int32_t nv = pg->vertex_count;
+	const int32_t step[4] = {1, pg->w, -1, -pg->w};
 	for (int32_t v = 0; v < nv; v++)
 		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
-			int32_t c = b->vcells.v[k], x = c % pg->w;
+			const int32_t c = b->vcells.v[k];
+			const unsigned m = b->mask[c]; /* its skeleton neighbours, from the scan */
 			for (int d = 0; d < 4; d++) {
-				int32_t nb = builder_neighbour(b, c, x, d);
-				if (nb < 0)
+				if (!(m >> d & 1))
 					continue;
+				const int32_t nb = c + step[d];
 				int32_t ref = pg->cell_ref[nb];
 				if (ref == PATHGRAPH_REF_NONE) {
 					builder_edge_from(b, v, c, d);
