@@ -5,14 +5,19 @@
  * Build: (1) every skeleton cell of degree other than 2 is a vertex cell; 4-adjacent
  *    junction cells are merged into a junction set by flood fill, placed at its cell of
  *    largest dist2, and a breadth-first tree inside the set leads from any of its cells
- *    to that one. (2) From every vertex cell, every skeleton neighbour that is an
- *    unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
- *    cell: that chain is an edge. Two vertex cells of different vertices that touch are
+ *    to that one. The same row-major scan records each skeleton cell's 4-neighbours as
+ *    a mask of four bits. (2) From every vertex cell, every skeleton neighbour that is
+ *    an unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
+ *    cell: that chain is an edge. The walk steps by the masks (one load and a table a
+ *    step) and measures the edge as it goes (length, clearance, cell_ref), so each
+ *    chain cell is touched once. Two vertex cells of different vertices that touch are
  *    joined by an edge without chain cells. (3) Chain cells still unvisited lie on loops
  *    without a junction: the first of each in row-major order becomes a loop vertex
  *    and the loop an edge from it to itself. Vertices are numbered by their first cell
  *    in row-major order (loop vertices after the others), edges as found: the result
- *    depends on nothing else.
+ *    depends on nothing else. A rebuild on a grid of the same size keeps every array
+ *    and clears only the cells the last build set (all of cell_ref by one memset when
+ *    they were one in 8 or more).
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
@@ -26,20 +31,33 @@
  *    (once for a loop).
  *
  * MEMORY  cell_ref (4 bytes a grid cell); the edges' cells (4 + 4 bytes each); vertices
- *    and edges; and, for the queries, 12 bytes a grid cell of search scratch (a visit
- *    stamp, a parent and a queue entry: stamps spare clearing between queries).
+ *    and edges; for the build, 2 bytes a grid cell kept between builds (the masks,
+ *    and the junction sets' parent directions); and, for the queries, 12 bytes a grid
+ *    cell of search scratch (a visit stamp, a parent and a queue entry: stamps spare
+ *    clearing between queries).
  *
  * COMPLEXITY  build O(w h) for the scan plus O(skeleton cells); a query O(cells searched
  *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
  *    path); k paths O(k L) such searches for routes of L arcs.
  *
- * MEASURED  instructions of a rebuild on 1024 x 1024 (callgrind, pathgraph_build on the
- *    bench-compare grids): the vertex scan a word of eight cells at a time, the chain
- *    walk written out and the clearing of the last build's cells alone took them from
- *    13.9 to 5.9 million on rooms, 15.5 to 6.9 on rects, 59.8 to 31.0 on the maze,
- *    11.6 to 4.6 on Boston_0_1024, 9.1 to 3.2 on den520d (the same graph, cell for
- *    cell). Earlier, by bench/skelbench.c (CPU time, best of 3): build 2.8-3.8
- *    ms (rooms, random rectangles), 10.6 ms (maze: 250 000 skeleton cells); a corner
+ * MEASURED  on the bench-compare grids at 1024 x 1024 (issue 16), a rebuild on a grid of
+ *    the same size. Instructions (callgrind --toggle-collect=pathgraph_build, exact;
+ *    a driver building 3 times less one building once, over 2) before this file's
+ *    masks, measuring walk and memset clearing, and after: rooms 5.76 -> 3.80 million
+ *    (3.6 a grid cell), rects 6.62 -> 4.46 (4.3), maze 29.7 -> 23.0 (21.9; 255 000
+ *    edge cells, 4.2 million of it the memset's loop), Boston_0_1024 4.48 -> 2.90
+ *    (2.8), den520d 3.18 -> 1.97 (1.9); the same graph, array for array. Time,
+ *    bench/skelbench --compare DIR --side 1024 (the pg column: median of 5 thread-CPU
+ *    runs, the build just after the skeleton's, its caches cold), three runs each
+ *    alternating with the former build, medians: rooms 1.37 -> 1.10 ms, rects 2.12
+ *    -> 1.44, maze 7.2 -> 4.3, Boston_0_1024 1.05 -> 0.81, den520d 0.61 -> 0.55; one
+ *    read pass over the grid 0.34 ms. The maze stays past issue 16's 2 ms: its walk
+ *    is bound by memory (perf: the loads of dist2 and the stores to cell_ref, 4 MB
+ *    each, in chain order, one new line a step down a corridor). At 4096 (skelbench
+ *    --compare --side 4096, one run each, medians of 5): rooms 30.4 -> 23.8 ms, rects
+ *    39.1 -> 29.6, maze 121 -> 88 (4.0 million skeleton cells: 22 ns each, 17 at
+ *    1024), Boston_0_1024 8.7 -> 6.4, den520d 4.5 -> 3.8; 20-22 times the 1024 figure
+ *    for 16 times the cells on the synthetic grids, the caches' share. Earlier, a corner
  *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
  *    A* expands cells on the same query. */
@@ -50,9 +68,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "pathgraph_work.h"
 #include "utak/base/util.h"
 #include "utak/plan/heap.h"
-#include "pathgraph_work.h"
 
 /* ---------------------------------------------------------------- build */
 
@@ -99,7 +117,6 @@ void pathgraph_free(Pathgraph *pg)
 	*pg = (Pathgraph){0};
 }
 
-
 /* cell_ref of a cell that is not (yet) a skeleton cell of the graph. While building,
  * a chain cell walked in step (2) holds ref_base + k, k its place in cells[]: its final
  * value once the vertices are counted (see Builder.ref_base). */
@@ -109,13 +126,13 @@ typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
 	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
-	uint8_t *toward; /* junction-set cells: 1 + direction to the parent, 0 at the root */
-	uint8_t *mask;   /* skeleton cells: their skeleton 4-neighbours, bit d for direction d
-	                  * (east north west south); other cells: stale */
-	IntList vcells;  /* cells of every vertex, vertex after vertex */
-	IntList vstart;  /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
-	int32_t count;   /* edge cells so far, in pg->cells and pg->cell_edge */
-	int32_t max_set; /* the largest vertex (cells): a bound on a walk to its root */
+	uint8_t *toward;    /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	uint8_t *mask;      /* skeleton cells: their skeleton 4-neighbours, bit d for direction d
+	                     * (east north west south); other cells: stale */
+	IntList vcells;     /* cells of every vertex, vertex after vertex */
+	IntList vstart;     /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
+	int32_t count;      /* edge cells so far, in pg->cells and pg->cell_edge */
+	int32_t max_set;    /* the largest vertex (cells): a bound on a walk to its root */
 	int32_t chain_left; /* skeleton cells not yet in a vertex or an edge: a bound */
 	int32_t ref_base;   /* vertices found by step (1): chain cells' cell_ref base */
 } Builder;
@@ -151,8 +168,8 @@ static int builder_degree(const Builder *b, int32_t i, int32_t x)
 static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 {
 	Pathgraph *pg = b->pg;
-	pg->vertices = util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1,
-	                         sizeof *pg->vertices);
+	pg->vertices =
+	    util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
 	pg->cell_ref[cell] = v;
@@ -214,8 +231,8 @@ static void builder_junction_set(Builder *b, int32_t seed)
  * right) taken one cell at a time, so that the additions, and so the double, are
  * those of pathgraph_run_length. */
 typedef struct EdgeRun {
-	int32_t a, b;   /* the last two cells */
-	bool ready;     /* the step out of b is undecided: the next cell decides it */
+	int32_t a, b; /* the last two cells */
+	bool ready;   /* the step out of b is undecided: the next cell decides it */
 	double length;
 	int32_t min_dist2;
 } EdgeRun;
@@ -231,8 +248,8 @@ static inline void edgerun_push(EdgeRun *r, const int32_t *dist2, int32_t c)
 {
 	if (r->ready) {
 		int32_t s1 = r->b - r->a, s2 = c - r->b;
-		bool cut = ((uint32_t)(s1 + 1) <= 2) != ((uint32_t)(s2 + 1) <= 2) &&
-		           dist2[r->a + s2] > 0;
+		bool cut =
+		    ((uint32_t)(s1 + 1) <= 2) != ((uint32_t)(s2 + 1) <= 2) && dist2[r->a + s2] > 0;
 		r->length += cut ? PATHGRAPH_SQRT2 : 1.0;
 		r->ready = !cut;
 	} else {
@@ -252,8 +269,8 @@ static void builder_reserve(Builder *b, int64_t more)
 	if (need <= b->sc->cells_cap)
 		return;
 	int cap = b->sc->cells_cap; /* past INT32_MAX, util_grow reports out of memory */
-	pg->cells = util_grow(pg->cells, &cap, need > INT32_MAX ? INT32_MAX : (int)need,
-	                      sizeof *pg->cells);
+	pg->cells =
+	    util_grow(pg->cells, &cap, need > INT32_MAX ? INT32_MAX : (int)need, sizeof *pg->cells);
 	pg->cell_edge = util_realloc(pg->cell_edge, (size_t)cap, sizeof *pg->cell_edge);
 	b->sc->cells_cap = cap;
 }
@@ -295,8 +312,8 @@ static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, 
 	Pathgraph *pg = b->pg;
 	pg->edges = util_grow(pg->edges, &b->sc->edge_cap, pg->edge_count + 1, sizeof *pg->edges);
 	const int32_t e = pg->edge_count++;
-	pg->edges[e] = (PathgraphEdge){v0, v1, first, b->count - first,
-	                               r->length + (r->ready ? 1.0 : 0.0), r->min_dist2};
+	pg->edges[e] = (PathgraphEdge){
+	    v0, v1, first, b->count - first, r->length + (r->ready ? 1.0 : 0.0), r->min_dist2};
 	int32_t *cell_edge = pg->cell_edge;
 	for (int32_t k = first, end = b->count; k < end; k++)
 		cell_edge[k] = e;
@@ -307,10 +324,10 @@ static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, 
  * the direction on, when the cell is a chain cell (two neighbours, back one of them);
  * else -1, a vertex cell (or a loop vertex's, its mask zeroed). */
 static const int8_t PATHGRAPH_NEXT[4][16] = {
-	{-1, -1, -1, 1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
-	{-1, -1, -1, 0, -1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1},
-	{-1, -1, -1, -1, -1, 0, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
-	{-1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, -1, 2, -1, -1, -1},
+    {-1, -1, -1, 1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
+    {-1, -1, -1, 0, -1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1},
+    {-1, -1, -1, -1, -1, 0, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
+    {-1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, -1, 2, -1, -1, -1},
 };
 
 /* builder_edge_from(b, v, c, d): the edge leaving vertex v's cell c in direction d,
@@ -447,15 +464,17 @@ static void builder_vertices(Builder *b)
 				               sth = pathgraph_load8(below + x);
 				const uint64_t m8 = e | nth << 1 | wst << 2 | sth << 3;
 				memcpy(mask + x, &m8, sizeof m8);
-				const uint64_t t = (e + nth + wst + sth) ^ (2 * ones); /* degree not 2 */
+				const uint64_t t =
+				    (e + nth + wst + sth) ^ (2 * ones); /* degree not 2 */
 				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
 				while (cand) {
 					const int32_t cx = x + __builtin_ctzll(cand) / 8;
 					cand &= cand - 1;
 					const int32_t i = y * w + cx;
 					if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-						builder_vertex_at(b, i, on[cx - 1] + on[cx + 1] +
-						                            below[cx] + above[cx]);
+						builder_vertex_at(b, i,
+						                  on[cx - 1] + on[cx + 1] +
+						                      below[cx] + above[cx]);
 				}
 			}
 		}
@@ -484,7 +503,8 @@ static void builder_edges(Builder *b)
 				if (ref == PATHGRAPH_REF_NONE) {
 					builder_edge_from(b, v, c, d);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
-					/* two vertices' cells touching: an edge without chain cells */
+					/* two vertices' cells touching: an edge without chain cells
+					 */
 					builder_reserve(b, 2 * (int64_t)b->max_set);
 					int32_t first = b->count;
 					EdgeRun r;
@@ -547,7 +567,8 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 		int32_t *cell_ref = pg->cell_ref;
 		const int32_t *cells = pg->cells, count = pg->cell_count;
 		if ((size_t)count * 8 > n) /* one cell in 8 or more: every line of cell_ref has */
-			memset(cell_ref, 0xff, n * sizeof *cell_ref); /* some; a stream is cheaper */
+			memset(cell_ref, 0xff,
+			       n * sizeof *cell_ref); /* some; a stream is cheaper */
 		else
 			for (int32_t k = 0; k < count; k++)
 				cell_ref[cells[k]] = PATHGRAPH_REF_NONE;
@@ -578,7 +599,8 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	pg->grid = g;
 	pg->skeleton = s;
 	pg->vertex_count = pg->edge_count = pg->cell_count = 0;
-	Builder b = {.pg = pg, .s = s, .sc = sc, .toward = sc->toward, .mask = sc->mask, .max_set = 1};
+	Builder b = {
+	    .pg = pg, .s = s, .sc = sc, .toward = sc->toward, .mask = sc->mask, .max_set = 1};
 	b.vcells = sc->built_vcells; /* its memory, reused */
 	b.vcells.count = 0;
 	b.vstart = sc->vstart;
@@ -690,4 +712,3 @@ void pathgraph_dump(const Pathgraph *pg, FILE *out)
 		        ed->length, sqrt((double)ed->min_dist2), (int)ed->count);
 	}
 }
-

@@ -123,7 +123,7 @@ static inline bool pathgraph_corner_cut(const Pathgraph *pg, int32_t a, int32_t 
 /* pathgraph_run_length(pg, cells, count, step): the length of the polyline through the
  * cells cells[0], cells[step], ... (count of them; step 1 or -1), corners cut. */
 static inline double pathgraph_run_length(const Pathgraph *pg, const int32_t *cells, int32_t count,
-                                   int step)
+                                          int step)
 {
 	double len = 0;
 	int32_t i = 1;

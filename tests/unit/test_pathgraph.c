@@ -215,10 +215,12 @@ TEST_CASE(rebuilt_pathgraph_equals_a_fresh_one)
 				for (int y = 0; y < h; y++)
 					for (int x = 0; x < w; x++)
 						if (x % 12 == 0 || y % 12 == 0 ||
-						    (x % 12 >= 5 && x % 12 <= 7 && y % 12 >= 5 && y % 12 <= 7))
+						    (x % 12 >= 5 && x % 12 <= 7 && y % 12 >= 5 &&
+						     y % 12 <= 7))
 							g.cells[y * w + x] = GRID_BLOCKED;
 			} else {
-				oracle_random_grid(&g, w, h, oracle_rand_below(50), oracle_rand_below(6));
+				oracle_random_grid(&g, w, h, oracle_rand_below(50),
+				                   oracle_rand_below(6));
 			}
 			Skeleton s;
 			Pathgraph fresh;
