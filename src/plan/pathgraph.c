@@ -566,9 +566,10 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
 		int32_t *cell_ref = pg->cell_ref;
 		const int32_t *cells = pg->cells, count = pg->cell_count;
-		if ((size_t)count * 8 > n) /* one cell in 8 or more: every line of cell_ref has */
-			memset(cell_ref, 0xff,
-			       n * sizeof *cell_ref); /* some; a stream is cheaper */
+		/* one cell in 8 or more: every line of cell_ref holds some, and one
+		 * stream over it costs less than a store a cell in chain order */
+		if ((size_t)count * 8 > n)
+			memset(cell_ref, 0xff, n * sizeof *cell_ref);
 		else
 			for (int32_t k = 0; k < count; k++)
 				cell_ref[cells[k]] = PATHGRAPH_REF_NONE;
