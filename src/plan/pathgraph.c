@@ -5,14 +5,19 @@
  * Build: (1) every skeleton cell of degree other than 2 is a vertex cell; 4-adjacent
  *    junction cells are merged into a junction set by flood fill, placed at its cell of
  *    largest dist2, and a breadth-first tree inside the set leads from any of its cells
- *    to that one. (2) From every vertex cell, every skeleton neighbour that is an
- *    unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
- *    cell: that chain is an edge. Two vertex cells of different vertices that touch are
+ *    to that one. The same row-major scan records each skeleton cell's 4-neighbours as
+ *    a mask of four bits. (2) From every vertex cell, every skeleton neighbour that is
+ *    an unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
+ *    cell: that chain is an edge. The walk steps by the masks (one load and a table a
+ *    step) and measures the edge as it goes (length, clearance, cell_ref), so each
+ *    chain cell is touched once. Two vertex cells of different vertices that touch are
  *    joined by an edge without chain cells. (3) Chain cells still unvisited lie on loops
  *    without a junction: the first of each in row-major order becomes a loop vertex
  *    and the loop an edge from it to itself. Vertices are numbered by their first cell
  *    in row-major order (loop vertices after the others), edges as found: the result
- *    depends on nothing else.
+ *    depends on nothing else. A rebuild on a grid of the same size keeps every array
+ *    and clears only the cells the last build set (all of cell_ref by one memset when
+ *    they were one in 8 or more).
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
@@ -26,20 +31,33 @@
  *    (once for a loop).
  *
  * MEMORY  cell_ref (4 bytes a grid cell); the edges' cells (4 + 4 bytes each); vertices
- *    and edges; and, for the queries, 12 bytes a grid cell of search scratch (a visit
- *    stamp, a parent and a queue entry: stamps spare clearing between queries).
+ *    and edges; for the build, 2 bytes a grid cell kept between builds (the masks,
+ *    and the junction sets' parent directions); and, for the queries, 12 bytes a grid
+ *    cell of search scratch (a visit stamp, a parent and a queue entry: stamps spare
+ *    clearing between queries).
  *
  * COMPLEXITY  build O(w h) for the scan plus O(skeleton cells); a query O(cells searched
  *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
  *    path); k paths O(k L) such searches for routes of L arcs.
  *
- * MEASURED  instructions of a rebuild on 1024 x 1024 (callgrind, pathgraph_build on the
- *    bench-compare grids): the vertex scan a word of eight cells at a time, the chain
- *    walk written out and the clearing of the last build's cells alone took them from
- *    13.9 to 5.9 million on rooms, 15.5 to 6.9 on rects, 59.8 to 31.0 on the maze,
- *    11.6 to 4.6 on Boston_0_1024, 9.1 to 3.2 on den520d (the same graph, cell for
- *    cell). Earlier, by bench/skelbench.c (CPU time, best of 3): build 2.8-3.8
- *    ms (rooms, random rectangles), 10.6 ms (maze: 250 000 skeleton cells); a corner
+ * MEASURED  on the bench-compare grids at 1024 x 1024 (issue 16), a rebuild on a grid of
+ *    the same size. Instructions (callgrind --toggle-collect=pathgraph_build, exact;
+ *    a driver building 3 times less one building once, over 2) before this file's
+ *    masks, measuring walk and memset clearing, and after: rooms 5.76 -> 3.80 million
+ *    (3.6 a grid cell), rects 6.62 -> 4.46 (4.3), maze 29.7 -> 23.0 (21.9; 255 000
+ *    edge cells, 4.2 million of it the memset's loop), Boston_0_1024 4.48 -> 2.90
+ *    (2.8), den520d 3.18 -> 1.97 (1.9); the same graph, array for array. Time,
+ *    bench/skelbench --compare DIR --side 1024 (the pg column: median of 5 thread-CPU
+ *    runs, the build just after the skeleton's, its caches cold), three runs each
+ *    alternating with the former build, medians: rooms 1.37 -> 1.10 ms, rects 2.12
+ *    -> 1.44, maze 7.2 -> 4.3, Boston_0_1024 1.05 -> 0.81, den520d 0.61 -> 0.55; one
+ *    read pass over the grid 0.34 ms. The maze stays past issue 16's 2 ms: its walk
+ *    is bound by memory (perf: the loads of dist2 and the stores to cell_ref, 4 MB
+ *    each, in chain order, one new line a step down a corridor). At 4096 (skelbench
+ *    --compare --side 4096, one run each, medians of 5): rooms 30.4 -> 23.8 ms, rects
+ *    39.1 -> 29.6, maze 121 -> 88 (4.0 million skeleton cells: 22 ns each, 17 at
+ *    1024), Boston_0_1024 8.7 -> 6.4, den520d 4.5 -> 3.8; 20-22 times the 1024 figure
+ *    for 16 times the cells on the synthetic grids, the caches' share. Earlier, a corner
  *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
  *    A* expands cells on the same query. */
@@ -50,9 +68,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "pathgraph_work.h"
 #include "utak/base/util.h"
 #include "utak/plan/heap.h"
-#include "pathgraph_work.h"
 
 /* ---------------------------------------------------------------- build */
 
@@ -81,6 +99,8 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->cells.v);
 	free(sc->toward);
 	free(sc->built_vcells.v);
+	free(sc->vstart.v);
+	free(sc->mask);
 	free(sc);
 }
 
@@ -97,19 +117,24 @@ void pathgraph_free(Pathgraph *pg)
 	*pg = (Pathgraph){0};
 }
 
-
-/* Marks in cell_ref while building. */
-enum { PATHGRAPH_REF_NONE = -1, PATHGRAPH_REF_CHAIN = -2 };
+/* cell_ref of a cell that is not (yet) a skeleton cell of the graph. While building,
+ * a chain cell walked in step (2) holds ref_base + k, k its place in cells[]: its final
+ * value once the vertices are counted (see Builder.ref_base). */
+enum { PATHGRAPH_REF_NONE = -1 };
 
 typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
-	uint8_t *toward; /* junction-set cells: 1 + direction to the parent, 0 at the root */
-	IntList vcells;  /* cells of every vertex, vertex after vertex */
-	IntList vstart;  /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
-	IntList cells;   /* edge cells */
-	int vertex_cap, edge_cap;
-	int32_t chain_cells; /* chain cells visited so far */
+	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
+	uint8_t *toward;    /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	uint8_t *mask;      /* skeleton cells: their skeleton 4-neighbours, bit d for direction d
+	                     * (east north west south); other cells: stale */
+	IntList vcells;     /* cells of every vertex, vertex after vertex */
+	IntList vstart;     /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
+	int32_t count;      /* edge cells so far, in pg->cells and pg->cell_edge */
+	int32_t max_set;    /* the largest vertex (cells): a bound on a walk to its root */
+	int32_t chain_left; /* skeleton cells not yet in a vertex or an edge: a bound */
+	int32_t ref_base;   /* vertices found by step (1): chain cells' cell_ref base */
 } Builder;
 
 /* builder_neighbour(b, i, x, d): the skeleton cell next to cell i (in column x) in
@@ -144,7 +169,7 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 {
 	Pathgraph *pg = b->pg;
 	pg->vertices =
-	    util_grow(pg->vertices, &b->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
+	    util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
 	pg->cell_ref[cell] = v;
@@ -191,85 +216,177 @@ static void builder_junction_set(Builder *b, int32_t seed)
 		}
 	}
 	assert(b->vcells.count - first == n);
-	(void)n;
+	if (n > b->max_set)
+		b->max_set = n;
 	pg->vertices[v].x = root % pg->w;
 	pg->vertices[v].y = root / pg->w;
-	pg->vertices[v].set_size = b->vcells.count - first;
+	pg->vertices[v].set_size = n;
 	pg->vertices[v].dist2 = b->s->dist2[root];
 }
 
-/* builder_to_root(b, c, out): appends the cells from c to its vertex's cell (c first). */
-static void builder_to_root(Builder *b, int32_t c, IntList *out)
+/* ---------------------------------------------------------------- edges */
+
+/* An edge's length and clearance, measured as its cells are appended: the length by
+ * pathgraph_run_length's rule (a diagonal across each cut corner, decided left to
+ * right) taken one cell at a time, so that the additions, and so the double, are
+ * those of pathgraph_run_length. */
+typedef struct EdgeRun {
+	int32_t a, b; /* the last two cells */
+	bool ready;   /* the step out of b is undecided: the next cell decides it */
+	double length;
+	int32_t min_dist2;
+} EdgeRun;
+
+/* edgerun_push(r, dist2, c): cell c after r's last (a 4-neighbour of it). The steps
+ * a -> b -> c cut a corner when one is along x and the other along y (s == +-1 tells
+ * a step along x: w >= 2, and a grid one cell wide has none) and the fourth cell of
+ * their 2x2 block, a + (c - b), is free (pathgraph_corner_cut). Free is told by
+ * dist2 > 0 (skeleton.h: 0 exactly on blocked cells), which the walk's loads of
+ * dist2 around the corner have mostly brought in already, where the grid's byte
+ * would be a load of its own. */
+static inline void edgerun_push(EdgeRun *r, const int32_t *dist2, int32_t c)
 {
+	if (r->ready) {
+		int32_t s1 = r->b - r->a, s2 = c - r->b;
+		bool cut =
+		    ((uint32_t)(s1 + 1) <= 2) != ((uint32_t)(s2 + 1) <= 2) && dist2[r->a + s2] > 0;
+		r->length += cut ? PATHGRAPH_SQRT2 : 1.0;
+		r->ready = !cut;
+	} else {
+		r->ready = true;
+	}
+	r->a = r->b;
+	r->b = c;
+	if (dist2[c] < r->min_dist2)
+		r->min_dist2 = dist2[c];
+}
+
+/* builder_reserve(b, more): room in pg->cells and pg->cell_edge for more cells. */
+static void builder_reserve(Builder *b, int64_t more)
+{
+	Pathgraph *pg = b->pg;
+	int64_t need = b->count + more + 1;
+	if (need <= b->sc->cells_cap)
+		return;
+	int cap = b->sc->cells_cap; /* past INT32_MAX, util_grow reports out of memory */
+	pg->cells =
+	    util_grow(pg->cells, &cap, need > INT32_MAX ? INT32_MAX : (int)need, sizeof *pg->cells);
+	pg->cell_edge = util_realloc(pg->cell_edge, (size_t)cap, sizeof *pg->cell_edge);
+	b->sc->cells_cap = cap;
+}
+
+/* builder_root_path(b, c, r, forward): appends to the edge (and to r) the cells from
+ * junction-set cell c to the root of its set (toward[]): from the root to c when
+ * !forward (the start of an edge, c where it leaves the set: r starts there), else
+ * from c to the root. */
+static void builder_root_path(Builder *b, int32_t c, EdgeRun *r, bool forward)
+{
+	int32_t *p = b->pg->cells + b->count;
+	const int32_t w = b->pg->w, *dist2 = b->s->dist2;
+	int32_t n = 0, at = c;
 	for (;;) {
-		intlist_push(out, c);
-		uint8_t t = b->toward[c];
+		p[n++] = at;
+		uint8_t t = b->toward[at];
 		if (t == 0)
-			return;
-		int d = t - 1;
-		c += PATHGRAPH_DX[d] + PATHGRAPH_DY[d] * b->pg->w;
+			break;
+		at += PATHGRAPH_DX[t - 1] + PATHGRAPH_DY[t - 1] * w;
 	}
-}
-
-static void builder_add_edge(Builder *b, int32_t v0, int32_t v1, int first)
-{
-	Pathgraph *pg = b->pg;
-	pg->edges = util_grow(pg->edges, &b->edge_cap, pg->edge_count + 1, sizeof *pg->edges);
-	PathgraphEdge *e = &pg->edges[pg->edge_count++];
-	e->v0 = v0;
-	e->v1 = v1;
-	e->first = first;
-	e->count = b->cells.count - first;
-	e->length = pathgraph_run_length(pg, b->cells.v + first, e->count, 1);
-	e->min_dist2 = INT32_MAX;
-	for (int k = first; k < b->cells.count; k++)
-		if (b->s->dist2[b->cells.v[k]] < e->min_dist2)
-			e->min_dist2 = b->s->dist2[b->cells.v[k]];
-}
-
-/* builder_edge_from(b, v, c, nb, nb_x): the edge leaving vertex v's cell c through nb,
- * which is in column nb_x. */
-static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t nb, int32_t nb_x)
-{
-	Pathgraph *pg = b->pg;
-	int first = b->cells.count;
-	/* from v's own cell to c: the tree path c -> root, reversed */
-	builder_to_root(b, c, &b->cells);
-	for (int i = first, j = b->cells.count - 1; i < j; i++, j--) {
-		int32_t t = b->cells.v[i];
-		b->cells.v[i] = b->cells.v[j];
-		b->cells.v[j] = t;
-	}
-	const int32_t w = pg->w, wh = pg->w * pg->h;
-	const uint8_t *on = b->s->on;
-	int32_t prev = c, cur = nb, x = nb_x;
-	while (pg->cell_ref[cur] == PATHGRAPH_REF_NONE) {
-		pg->cell_ref[cur] = PATHGRAPH_REF_CHAIN;
-		b->chain_cells++;
-		intlist_push(&b->cells, cur);
-		/* the first skeleton neighbour other than prev, east north west south
-		 * (builder_neighbour's order, written out: a call per direction was a
-		 * third of the walk) */
-		int32_t next = -1, next_x = x;
-		if (x + 1 < w && on[cur + 1] && cur + 1 != prev) {
-			next = cur + 1;
-			next_x = x + 1;
-		} else if (cur + w < wh && on[cur + w] && cur + w != prev) {
-			next = cur + w;
-		} else if (x > 0 && on[cur - 1] && cur - 1 != prev) {
-			next = cur - 1;
-			next_x = x - 1;
-		} else if (cur >= w && on[cur - w] && cur - w != prev) {
-			next = cur - w;
+	int32_t i = 0;
+	if (!forward) {
+		for (int32_t lo = 0, hi = n - 1; lo < hi; lo++, hi--) {
+			int32_t t = p[lo];
+			p[lo] = p[hi];
+			p[hi] = t;
 		}
-		prev = cur;
-		cur = next;
-		x = next_x;
+		*r = (EdgeRun){-1, p[0], false, 0.0, dist2[p[0]]};
+		i = 1;
 	}
-	int32_t u = pg->cell_ref[cur];
-	assert(u >= 0);
-	builder_to_root(b, cur, &b->cells);
-	builder_add_edge(b, v, u, first);
+	for (; i < n; i++)
+		edgerun_push(r, dist2, p[i]);
+	b->count += n;
+}
+
+/* builder_end_edge(b, v0, v1, first, r): the edge of cells[first .. count). */
+static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, const EdgeRun *r)
+{
+	Pathgraph *pg = b->pg;
+	pg->edges = util_grow(pg->edges, &b->sc->edge_cap, pg->edge_count + 1, sizeof *pg->edges);
+	const int32_t e = pg->edge_count++;
+	pg->edges[e] = (PathgraphEdge){
+	    v0, v1, first, b->count - first, r->length + (r->ready ? 1.0 : 0.0), r->min_dist2};
+	int32_t *cell_edge = pg->cell_edge;
+	for (int32_t k = first, end = b->count; k < end; k++)
+		cell_edge[k] = e;
+}
+
+/* PATHGRAPH_NEXT[back][m]: for a cell whose skeleton 4-neighbours are the bits of m (bit
+ * d for direction d, east north west south) and that was entered from direction back:
+ * the direction on, when the cell is a chain cell (two neighbours, back one of them);
+ * else -1, a vertex cell (or a loop vertex's, its mask zeroed). */
+static const int8_t PATHGRAPH_NEXT[4][16] = {
+    {-1, -1, -1, 1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
+    {-1, -1, -1, 0, -1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1},
+    {-1, -1, -1, -1, -1, 0, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
+    {-1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, -1, 2, -1, -1, -1},
+};
+
+/* builder_edge_from(b, v, c, d): the edge leaving vertex v's cell c in direction d,
+ * into a chain cell not yet walked: along the chain to the next cell that is not a
+ * chain cell (of degree other than 2, so a vertex cell, step 1; or a loop vertex's
+ * cell, its mask zeroed by builder_loops), measuring it on the way. Each chain cell's
+ * cell_ref is set to ref_base + its place in cells[]. */
+static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
+{
+	Pathgraph *pg = b->pg;
+	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
+	const int32_t first = b->count;
+	EdgeRun r;
+	builder_root_path(b, c, &r, false); /* from v's own cell to c */
+	const int32_t w = pg->w, ref_base = b->ref_base;
+	const int32_t step[4] = {1, w, -1, -w};
+	const uint8_t *mask = b->mask;
+	const int32_t *dist2 = b->s->dist2;
+	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
+	int32_t k = b->count, cur = c + step[d];
+	int back = d ^ 2;
+	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
+	 * direction of the step into the last cell when r.ready, else -1 */
+	int pend = -1;
+	if (r.ready) {
+		const int32_t s1 = r.b - r.a;
+		pend = s1 == 1 ? 0 : s1 == w ? 1 : s1 == -1 ? 2 : 3;
+	}
+	int32_t md = r.min_dist2;
+	double length = r.length;
+	for (;;) {
+		const int next = PATHGRAPH_NEXT[back][mask[cur]];
+		if (next < 0)
+			break;
+		cell_ref[cur] = ref_base + k;
+		cells[k++] = cur;
+		/* edgerun_push, in directions: the steps into the last cell (pend) and into
+		 * cur (back ^ 2) cut a corner when perpendicular and the fourth cell of
+		 * their 2x2 block, cur - step[pend], is free */
+		if (pend >= 0) {
+			const bool cut = ((pend ^ back) & 1) && dist2[cur - step[pend]] > 0;
+			length += cut ? PATHGRAPH_SQRT2 : 1.0;
+			pend = cut ? -1 : back ^ 2;
+		} else {
+			pend = back ^ 2;
+		}
+		if (dist2[cur] < md)
+			md = dist2[cur];
+		cur += step[next];
+		back = next ^ 2;
+	}
+	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
+	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
+	b->chain_left -= k - b->count;
+	b->count = k;
+	const int32_t u = cell_ref[cur];
+	assert(u >= 0 && u < pg->vertex_count);
+	builder_root_path(b, cur, &r, true);
+	builder_end_edge(b, v, u, first, &r);
 }
 
 /* builder_vertex_at(b, i, d): the vertex whose first cell is i, of degree d != 2. */
@@ -298,178 +415,232 @@ static inline uint64_t pathgraph_load8(const uint8_t *p)
 #define PATHGRAPH_SCAN_WORDS 0
 #endif
 
-void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
+/* builder_scan_cell(b, y, x, on, below, above, mask): the vertex scan at one cell of
+ * row y (on, and the rows below and above it or NULL; mask, row y's masks). */
+static inline void builder_scan_cell(Builder *b, int32_t y, int32_t x, const uint8_t *on,
+                                     const uint8_t *below, const uint8_t *above, uint8_t *mask)
 {
-	/* keep the query scratch, and the cell map of a grid of the same size */
-	const size_t n = (size_t)s->w * (size_t)s->h;
-	if (!pg->scratch)
-		pg->scratch = util_alloc(1, sizeof *pg->scratch);
-	struct PathgraphScratch *scratch = pg->scratch;
-	int32_t *cell_ref = pg->cell_ref && pg->w == s->w && pg->h == s->h ? pg->cell_ref : NULL;
-	const bool clear_listed = cell_ref && scratch->built_valid && scratch->toward_cells == n;
-	if (clear_listed) {
-		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
-		for (int32_t k = 0; k < pg->cell_count; k++)
-			cell_ref[pg->cells[k]] = PATHGRAPH_REF_NONE;
-		for (int k = 0; k < scratch->built_vcells.count; k++) {
-			cell_ref[scratch->built_vcells.v[k]] = PATHGRAPH_REF_NONE;
-			scratch->toward[scratch->built_vcells.v[k]] = 0;
-		}
-	} else if (cell_ref) {
-		memset(cell_ref, 0xff, n * sizeof *cell_ref); /* all PATHGRAPH_REF_NONE */
-	}
-	if (scratch->toward_cells != n || !scratch->toward) {
-		free(scratch->toward);
-		scratch->toward = util_alloc(n, 1);
-		scratch->toward_cells = n;
-	} else if (!clear_listed) {
-		memset(scratch->toward, 0, n);
-	}
-	scratch->built_valid = false;
-	pg->scratch = NULL;
-	if (cell_ref)
-		pg->cell_ref = NULL;
-	pathgraph_free(pg);
-	pg->scratch = scratch;
-	pg->w = s->w;
-	pg->h = s->h;
-	pg->grid = g;
-	pg->skeleton = s;
-	if (!cell_ref) {
-		cell_ref = util_alloc(n + 1, sizeof *pg->cell_ref);
-		memset(cell_ref, 0xff, n * sizeof *cell_ref); /* all PATHGRAPH_REF_NONE */
-	}
-	pg->cell_ref = cell_ref;
-	Builder b = {.pg = pg, .s = s};
-	b.toward = scratch->toward;
-	b.vcells = scratch->built_vcells; /* its memory, reused */
-	b.vcells.count = 0;
+	if (!on[x])
+		return;
+	const int32_t w = b->pg->w;
+	const int e = x + 1 < w && on[x + 1], nth = above && above[x], wst = x > 0 && on[x - 1],
+	          sth = below && below[x];
+	mask[x] = (uint8_t)(e | nth << 1 | wst << 2 | sth << 3);
+	const int d = e + nth + wst + sth;
+	const int32_t i = y * w + x;
+	if (d != 2 && b->pg->cell_ref[i] == PATHGRAPH_REF_NONE)
+		builder_vertex_at(b, i, d);
+}
 
-	/* (1) vertices, in row-major order of their first cell. Most cells are off the
-	 * skeleton: the scan skips eight at a time where they are all zero; and most
-	 * skeleton cells are chain cells, told by their degree from the rows around. */
-	for (int32_t y = 0; y < pg->h; y++) {
-		const uint8_t *on = s->on + (size_t)y * pg->w;
-		const uint8_t *below = y > 0 ? on - pg->w : NULL;
-		const uint8_t *above = y + 1 < pg->h ? on + pg->w : NULL;
-		for (int32_t x = 0; x < pg->w;) {
+/* builder_vertices(b): step (1), the vertices in row-major order of their first cell,
+ * and every skeleton cell's mask. Most cells are off the skeleton: the scan skips
+ * eight at a time where they are all zero; and most skeleton cells are chain cells,
+ * told by their degree from the rows around. */
+static void builder_vertices(Builder *b)
+{
+	Pathgraph *pg = b->pg;
+	const Skeleton *s = b->s;
+	const int32_t w = pg->w, h = pg->h;
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *on = s->on + (size_t)y * w;
+		const uint8_t *below = y > 0 ? on - w : NULL;
+		const uint8_t *above = y + 1 < h ? on + w : NULL;
+		uint8_t *mask = b->mask + (size_t)y * w;
+		int32_t x = 0;
 #if PATHGRAPH_SCAN_WORDS
-			/* eight cells a word, inside the row: the degrees of all eight as
-			 * byte sums (each at most 4, so no carries), and only the cells of
-			 * degree other than 2 visited below */
-			if (x >= 1 && x + 9 <= pg->w) {
-				const uint64_t ones = 0x0101010101010101ULL;
-				uint64_t here = pathgraph_load8(on + x);
-				if (here == 0) {
-					x += 8;
+		/* inside rows and columns, eight cells a word: their degrees as byte sums
+		 * (each at most 4, so no carries) and their masks (each byte's bits apart),
+		 * and only the cells of degree other than 2 visited one by one */
+		if (below && above && w >= 10) {
+			builder_scan_cell(b, y, 0, on, below, above, mask);
+			const uint64_t ones = 0x0101010101010101ULL;
+			for (x = 1; x + 9 <= w; x += 8) {
+				const uint64_t here = pathgraph_load8(on + x);
+				if (here == 0)
 					continue;
-				}
-				uint64_t deg = pathgraph_load8(on + x - 1) + pathgraph_load8(on + x + 1) +
-				               (below ? pathgraph_load8(below + x) : 0) +
-				               (above ? pathgraph_load8(above + x) : 0);
-				uint64_t t = deg ^ (2 * ones); /* a byte nonzero: degree not 2 */
+				const uint64_t e = pathgraph_load8(on + x + 1),
+				               wst = pathgraph_load8(on + x - 1),
+				               nth = pathgraph_load8(above + x),
+				               sth = pathgraph_load8(below + x);
+				const uint64_t m8 = e | nth << 1 | wst << 2 | sth << 3;
+				memcpy(mask + x, &m8, sizeof m8);
+				const uint64_t t =
+				    (e + nth + wst + sth) ^ (2 * ones); /* degree not 2 */
 				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
 				while (cand) {
 					const int32_t cx = x + __builtin_ctzll(cand) / 8;
 					cand &= cand - 1;
-					const int32_t i = y * pg->w + cx;
+					const int32_t i = y * w + cx;
 					if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-						builder_vertex_at(&b, i, on[cx - 1] + on[cx + 1] +
-						                             (below && below[cx]) +
-						                             (above && above[cx]));
+						builder_vertex_at(b, i,
+						                  on[cx - 1] + on[cx + 1] +
+						                      below[cx] + above[cx]);
 				}
-				x += 8;
-				continue;
 			}
-#endif
-			if (!on[x]) {
-				x++;
-				continue;
-			}
-			int d = (x > 0 && on[x - 1]) + (x + 1 < pg->w && on[x + 1]) +
-			        (below && below[x]) + (above && above[x]);
-			int32_t i = y * pg->w + x;
-			if (d != 2 && pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-				builder_vertex_at(&b, i, d);
-			x++;
 		}
+#endif
+		for (; x < w; x++)
+			builder_scan_cell(b, y, x, on, below, above, mask);
 	}
-	intlist_push(&b.vstart, b.vcells.count);
-	/* (2) the chains between them */
-	for (int32_t v = 0; v < pg->vertex_count; v++)
-		for (int k = b.vstart.v[v]; k < b.vstart.v[v + 1]; k++) {
-			int32_t c = b.vcells.v[k], x = c % pg->w;
+	intlist_push(&b->vstart, b->vcells.count);
+}
+
+/* builder_edges(b): step (2), the chains between the vertices of step (1). */
+static void builder_edges(Builder *b)
+{
+	Pathgraph *pg = b->pg;
+	const int32_t nv = pg->vertex_count;
+	const int32_t step[4] = {1, pg->w, -1, -pg->w};
+	for (int32_t v = 0; v < nv; v++)
+		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
+			const int32_t c = b->vcells.v[k];
+			const unsigned m = b->mask[c]; /* its skeleton neighbours, from the scan */
 			for (int d = 0; d < 4; d++) {
-				int32_t nb = builder_neighbour(&b, c, x, d);
-				if (nb < 0)
+				if (!(m >> d & 1))
 					continue;
+				const int32_t nb = c + step[d];
 				int32_t ref = pg->cell_ref[nb];
 				if (ref == PATHGRAPH_REF_NONE) {
-					builder_edge_from(&b, v, c, nb, x + PATHGRAPH_DX[d]);
-				} else if (ref >= 0 && ref != v && c < nb) {
-					int first = b.cells.count;
-					builder_to_root(&b, c, &b.cells);
-					for (int i = first, j = b.cells.count - 1; i < j;
-					     i++, j--) {
-						int32_t t = b.cells.v[i];
-						b.cells.v[i] = b.cells.v[j];
-						b.cells.v[j] = t;
-					}
-					builder_to_root(&b, nb, &b.cells);
-					builder_add_edge(&b, v, ref, first);
+					builder_edge_from(b, v, c, d);
+				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
+					/* two vertices' cells touching: an edge without chain cells
+					 */
+					builder_reserve(b, 2 * (int64_t)b->max_set);
+					int32_t first = b->count;
+					EdgeRun r;
+					builder_root_path(b, c, &r, false);
+					builder_root_path(b, nb, &r, true);
+					builder_end_edge(b, v, ref, first, &r);
 				}
 			}
 		}
-	/* (3) loops without a junction: only when some skeleton cell is still unvisited */
-	bool all_visited = b.vcells.count + b.chain_cells == s->count;
-	for (size_t i = 0; i < n && !all_visited; i++) {
+}
+
+/* builder_loops(b): step (3), loops without a junction, only when some skeleton cell
+ * is still unwalked: the first cell of each, row-major, a loop vertex, the loop an
+ * edge from it to itself. Then the chain cells' cell_ref, written as ref_base + k,
+ * move up past the loop vertices (vertices number below edge cells in cell_ref). */
+static void builder_loops(Builder *b)
+{
+	if (b->chain_left == 0)
+		return;
+	Pathgraph *pg = b->pg;
+	const Skeleton *s = b->s;
+	const size_t n = (size_t)pg->w * (size_t)pg->h;
+	const int32_t nv = pg->vertex_count;
+	for (size_t i = 0; i < n && b->chain_left > 0; i++) {
 		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
 			continue;
-		int32_t v = builder_add_vertex(&b, (int32_t)i, PATHGRAPH_LOOP);
-		int32_t x = (int32_t)(i % (size_t)pg->w), nb = -1, d = 0;
-		for (; nb < 0; d++)
-			nb = builder_neighbour(&b, (int32_t)i, x, d);
-		builder_edge_from(&b, v, (int32_t)i, nb, x + PATHGRAPH_DX[d - 1]);
+		int32_t v = builder_add_vertex(b, (int32_t)i, PATHGRAPH_LOOP);
+		b->chain_left--;
+		int32_t x = (int32_t)(i % (size_t)pg->w);
+		int d = 0;
+		while (builder_neighbour(b, (int32_t)i, x, d) < 0)
+			d++;
+		b->mask[i] = 0; /* where the walk round the loop ends */
+		builder_edge_from(b, v, (int32_t)i, d);
 	}
-
-	/* the edges' cells, and the chain cells' references to them */
-	pg->cells = b.cells.v;
-	pg->cell_count = b.cells.count;
-	pg->cell_edge = util_alloc((size_t)pg->cell_count + 1, sizeof *pg->cell_edge);
+	/* inner cells of edges at or past nv are chain cells: junction-set cells number
+	 * below nv, and loop vertices' cells end their edges */
+	const int32_t loops = pg->vertex_count - nv;
 	for (int32_t e = 0; e < pg->edge_count; e++) {
 		const PathgraphEdge *ed = &pg->edges[e];
-		for (int32_t k = ed->first; k < ed->first + ed->count; k++) {
-			pg->cell_edge[k] = e;
-			if (pg->cell_ref[pg->cells[k]] == PATHGRAPH_REF_CHAIN)
-				pg->cell_ref[pg->cells[k]] = pg->vertex_count + k;
+		for (int32_t k = ed->first + 1; k < ed->first + ed->count - 1; k++)
+			if (pg->cell_ref[pg->cells[k]] >= nv)
+				pg->cell_ref[pg->cells[k]] += loops;
+	}
+}
+
+void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
+{
+	/* keep the query scratch, the arrays and the cell map of a grid of the same size */
+	const size_t n = (size_t)s->w * (size_t)s->h;
+	if (!pg->scratch)
+		pg->scratch = util_alloc(1, sizeof *pg->scratch);
+	struct PathgraphScratch *sc = pg->scratch;
+	if (pg->cell_ref && (pg->w != s->w || pg->h != s->h)) {
+		free(pg->cell_ref);
+		pg->cell_ref = NULL;
+	}
+	if (pg->cell_ref && sc->built_valid && sc->toward_cells == n) {
+		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
+		int32_t *cell_ref = pg->cell_ref;
+		const int32_t *cells = pg->cells, count = pg->cell_count;
+		/* one cell in 8 or more: every line of cell_ref holds some, and one
+		 * stream over it costs less than a store a cell in chain order */
+		if ((size_t)count * 8 > n)
+			memset(cell_ref, 0xff, n * sizeof *cell_ref);
+		else
+			for (int32_t k = 0; k < count; k++)
+				cell_ref[cells[k]] = PATHGRAPH_REF_NONE;
+		for (int k = 0; k < sc->built_vcells.count; k++) {
+			pg->cell_ref[sc->built_vcells.v[k]] = PATHGRAPH_REF_NONE;
+			sc->toward[sc->built_vcells.v[k]] = 0;
+		}
+	} else {
+		if (!pg->cell_ref)
+			pg->cell_ref = util_alloc(n + 1, sizeof *pg->cell_ref);
+		memset(pg->cell_ref, 0xff, n * sizeof *pg->cell_ref); /* all PATHGRAPH_REF_NONE */
+		if (sc->toward_cells != n || !sc->toward) {
+			free(sc->toward);
+			sc->toward = util_alloc(n, 1);
+			sc->toward_cells = n;
+		} else {
+			memset(sc->toward, 0, n);
 		}
 	}
+	if (sc->mask_cells != n || !sc->mask) {
+		free(sc->mask);
+		sc->mask = util_alloc(n, 1);
+		sc->mask_cells = n;
+	}
+	sc->built_valid = false;
+	pg->w = s->w;
+	pg->h = s->h;
+	pg->grid = g;
+	pg->skeleton = s;
+	pg->vertex_count = pg->edge_count = pg->cell_count = 0;
+	Builder b = {
+	    .pg = pg, .s = s, .sc = sc, .toward = sc->toward, .mask = sc->mask, .max_set = 1};
+	b.vcells = sc->built_vcells; /* its memory, reused */
+	b.vcells.count = 0;
+	b.vstart = sc->vstart;
+	b.vstart.count = 0;
+
+	builder_vertices(&b);
+	b.chain_left = s->count - b.vcells.count;
+	b.ref_base = pg->vertex_count;
+	builder_edges(&b);
+	builder_loops(&b);
+	pg->cell_count = b.count;
+
 	/* incidence lists */
-	pg->incident_start = util_alloc((size_t)pg->vertex_count + 1, sizeof *pg->incident_start);
-	pg->incident = util_alloc((size_t)pg->edge_count * 2 + 1, sizeof *pg->incident);
-	for (int32_t e = 0; e < pg->edge_count; e++) {
-		pg->incident_start[pg->edges[e].v0]++;
+	const int32_t nv = pg->vertex_count, ne = pg->edge_count;
+	pg->incident_start = util_grow(pg->incident_start, &sc->incident_start_cap, nv + 1,
+	                               sizeof *pg->incident_start);
+	pg->incident = util_grow(pg->incident, &sc->incident_cap, 2 * ne + 1, sizeof *pg->incident);
+	int32_t *start = pg->incident_start;
+	memset(start, 0, ((size_t)nv + 1) * sizeof *start);
+	for (int32_t e = 0; e < ne; e++) {
+		start[pg->edges[e].v0 + 1]++;
 		if (pg->edges[e].v1 != pg->edges[e].v0)
-			pg->incident_start[pg->edges[e].v1]++;
+			start[pg->edges[e].v1 + 1]++;
 	}
-	int32_t sum = 0;
-	for (int32_t v = 0; v < pg->vertex_count; v++) {
-		int32_t c = pg->incident_start[v];
-		pg->incident_start[v] = sum;
-		sum += c;
-	}
-	pg->incident_start[pg->vertex_count] = sum;
-	int32_t *fill = util_alloc((size_t)pg->vertex_count + 1, sizeof *fill);
-	for (int32_t e = 0; e < pg->edge_count; e++) {
+	for (int32_t v = 0; v < nv; v++)
+		start[v + 1] += start[v];
+	/* fill by the start entries, which move up to the next vertex's; then back */
+	for (int32_t e = 0; e < ne; e++) {
 		int32_t a = pg->edges[e].v0, c = pg->edges[e].v1;
-		pg->incident[pg->incident_start[a] + fill[a]++] = e;
+		pg->incident[start[a]++] = e;
 		if (c != a)
-			pg->incident[pg->incident_start[c] + fill[c]++] = e;
+			pg->incident[start[c]++] = e;
 	}
-	free(fill);
-	scratch->built_vcells = b.vcells;
-	scratch->built_valid = true;
-	free(b.vstart.v);
+	for (int32_t v = nv; v > 0; v--)
+		start[v] = start[v - 1];
+	start[0] = 0;
+	sc->built_vcells = b.vcells;
+	sc->vstart = b.vstart;
+	sc->built_valid = true;
 }
 
 /* ---------------------------------------------------------------- validation */
@@ -542,4 +713,3 @@ void pathgraph_dump(const Pathgraph *pg, FILE *out)
 		        ed->length, sqrt((double)ed->min_dist2), (int)ed->count);
 	}
 }
-

@@ -85,6 +85,15 @@ struct PathgraphScratch {
 	size_t toward_cells;
 	IntList built_vcells;
 	bool built_valid; /* cell_ref is -1 outside built_vcells and the edges' cells */
+	/* The capacities of the Pathgraph's arrays (vertices, edges, cells and cell_edge,
+	 * incident_start, incident), kept by the next build rather than freed and grown
+	 * again, and the builder's list of where each vertex's cells start. */
+	int vertex_cap, edge_cap, cells_cap, incident_start_cap, incident_cap;
+	IntList vstart;
+	/* The build's skeleton-neighbour masks (pathgraph.c, Builder.mask): w h bytes,
+	 * written by each build where it needs them, so never cleared. */
+	uint8_t *mask;
+	size_t mask_cells;
 };
 
 /* ---------------------------------------------------------------- lengths */
@@ -104,15 +113,17 @@ static inline int32_t pathgraph_cy(const Pathgraph *pg, int32_t i)
  * fourth cell of the 2x2 block that a, b, c span is inside the grid. */
 static inline bool pathgraph_corner_cut(const Pathgraph *pg, int32_t a, int32_t b, int32_t c)
 {
-	int32_t s1 = b - a, s2 = c - b, w = pg->w;
-	bool perpendicular = (s1 == 1 || s1 == -1) ? (s2 == w || s2 == -w) : (s2 == 1 || s2 == -1);
+	/* a step along x is +-1 and one along y +-w (a grid one cell wide has none
+	 * along x, so no corner); the test as the build's edgerun_push makes it */
+	int32_t s1 = b - a, s2 = c - b;
+	bool perpendicular = ((uint32_t)(s1 + 1) <= 2) != ((uint32_t)(s2 + 1) <= 2);
 	return perpendicular && pg->grid->cells[a + s2] == GRID_FREE;
 }
 
 /* pathgraph_run_length(pg, cells, count, step): the length of the polyline through the
  * cells cells[0], cells[step], ... (count of them; step 1 or -1), corners cut. */
 static inline double pathgraph_run_length(const Pathgraph *pg, const int32_t *cells, int32_t count,
-                                   int step)
+                                          int step)
 {
 	double len = 0;
 	int32_t i = 1;

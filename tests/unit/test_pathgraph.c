@@ -1,6 +1,7 @@
 /* test_pathgraph.c - the pathgraph and its search (pathgraph.h, paper 4.3): edges along
  * skeleton cells, the line test against hand cases and dense sampling, paths in free
- * space exactly when a flood fill joins the ends, k distinct paths round a ring. */
+ * space exactly when a flood fill joins the ends, k distinct paths round a ring, a
+ * rebuilt pathgraph equal to a fresh one. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -161,6 +162,86 @@ TEST_CASE(pathgraph_edges_on_random_grids)
 		skeleton_free(&s);
 		grid_free(&g);
 	}
+}
+
+/* Two pathgraphs alike, array for array (cell_ref over the whole grid). */
+static bool pathgraphs_equal(const Pathgraph *a, const Pathgraph *b)
+{
+	if (a->w != b->w || a->h != b->h || a->vertex_count != b->vertex_count ||
+	    a->edge_count != b->edge_count || a->cell_count != b->cell_count)
+		return false;
+	for (int v = 0; v < a->vertex_count; v++) {
+		const PathgraphVertex *p = &a->vertices[v], *q = &b->vertices[v];
+		if (p->x != q->x || p->y != q->y || p->kind != q->kind ||
+		    p->set_size != q->set_size || p->dist2 != q->dist2)
+			return false;
+	}
+	for (int e = 0; e < a->edge_count; e++) {
+		const PathgraphEdge *p = &a->edges[e], *q = &b->edges[e];
+		if (p->v0 != q->v0 || p->v1 != q->v1 || p->first != q->first ||
+		    p->count != q->count || p->length != q->length || p->min_dist2 != q->min_dist2)
+			return false;
+	}
+	for (int k = 0; k < a->cell_count; k++)
+		if (a->cells[k] != b->cells[k] || a->cell_edge[k] != b->cell_edge[k])
+			return false;
+	for (int v = 0; v <= a->vertex_count; v++)
+		if (a->incident_start[v] != b->incident_start[v])
+			return false;
+	for (int k = 0; k < a->incident_start[a->vertex_count]; k++)
+		if (a->incident[k] != b->incident[k])
+			return false;
+	for (int i = 0; i < a->w * a->h; i++)
+		if (a->cell_ref[i] != b->cell_ref[i])
+			return false;
+	return true;
+}
+
+/* A Pathgraph rebuilt again and again over grids of one size (keeping its memory and
+ * clearing only what the last build set) equals one built afresh on each: sparse and
+ * dense skeletons in turn, loops without a junction among them. */
+TEST_CASE(rebuilt_pathgraph_equals_a_fresh_one)
+{
+	oracle_seed = 31;
+	int loops = 0, builds = 0;
+	for (int size = 0; size < 12; size++) {
+		const int w = 2 + oracle_rand_below(70), h = 2 + oracle_rand_below(70);
+		Pathgraph kept;
+		pathgraph_init(&kept);
+		for (int trial = 0; trial < 12; trial++) {
+			Grid g;
+			if (trial % 3 == 2) { /* walled rooms, a block in each: loops */
+				grid_init(&g, w, h, GRID_FREE);
+				for (int y = 0; y < h; y++)
+					for (int x = 0; x < w; x++)
+						if (x % 12 == 0 || y % 12 == 0 ||
+						    (x % 12 >= 5 && x % 12 <= 7 && y % 12 >= 5 &&
+						     y % 12 <= 7))
+							g.cells[y * w + x] = GRID_BLOCKED;
+			} else {
+				oracle_random_grid(&g, w, h, oracle_rand_below(50),
+				                   oracle_rand_below(6));
+			}
+			Skeleton s;
+			Pathgraph fresh;
+			skeleton_init(&s);
+			pathgraph_init(&fresh);
+			skeleton_compute(&s, &g);
+			pathgraph_build(&kept, &s, &g);
+			pathgraph_build(&fresh, &s, &g);
+			TEST_CHECK(pathgraph_validate(&kept));
+			TEST_CHECK(pathgraphs_equal(&kept, &fresh));
+			for (int v = 0; v < fresh.vertex_count; v++)
+				loops += fresh.vertices[v].kind == PATHGRAPH_LOOP;
+			builds++;
+			pathgraph_free(&fresh);
+			skeleton_free(&s);
+			grid_free(&g);
+		}
+		pathgraph_free(&kept);
+	}
+	fprintf(stderr, "  %d builds, %d loop vertices\n", builds, loops);
+	TEST_CHECK(builds == 144 && loops > 20);
 }
 
 static Vec2 random_free_point(const Grid *g)
@@ -535,6 +616,7 @@ int main(void)
 	TEST_RUN(line_test_by_hand);
 	TEST_RUN(line_test_agrees_with_dense_sampling);
 	TEST_RUN(pathgraph_edges_on_random_grids);
+	TEST_RUN(rebuilt_pathgraph_equals_a_fresh_one);
 	TEST_RUN(paths_exist_iff_connected_and_lie_in_free_space);
 	TEST_RUN(two_distinct_paths_round_a_ring);
 	TEST_RUN(four_distinct_paths_round_two_obstacles);
