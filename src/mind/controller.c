@@ -201,16 +201,18 @@ static RoomDoubt corner_room_doubt(Controller *c)
 	return d;
 }
 
-/* corner_room_beyond(c): whether the start's room may go on past a door seen in
- * part, toward a better corner (roomdoubt_beyond); if so, c->room_look_at is where
+/* corner_room_look(c, check): whether the start's room may be other than the model
+ * shows toward a better corner, by roomdoubt.h's check (roomdoubt_beyond: past a
+ * door seen in part; roomdoubt_jambs: a door whose width is set by squares seen
+ * coarsely); if so, c->room_look_at is where
  * to look from. */
-static bool corner_room_beyond(Controller *c)
+static bool corner_room_look(Controller *c, RoomDoubt (*check)(const Controller *, const int32_t *, Vec2 *))
 {
 	int32_t ui, uj;
 	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
 	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
 	goals_reach(&c->screen.free, ui, uj, dist);
-	bool look = roomdoubt_beyond(c, dist, &c->room_look_at) == ROOMDOUBT_LOOK;
+	bool look = check(c, dist, &c->room_look_at) == ROOMDOUBT_LOOK;
 	free(dist);
 	return look;
 }
@@ -238,8 +240,10 @@ static void arrive(Controller *c)
 	case TASK_GO_CORNER:
 		if ((short_by = goals_corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
 			goals_corner_failed(c, short_by);
-		else if (corner_room_beyond(c))
+		else if (corner_room_look(c, roomdoubt_beyond))
 			c->room_look = true; /* the next goal: a look past the undecided door */
+		else if (corner_room_look(c, roomdoubt_jambs))
+			c->room_look = true; /* the next goal: a look at the door's coarse side */
 		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK)
 			c->phase = PHASE_DONE;
 		/* else not sure of the room: the next goal is a look at the wall between */

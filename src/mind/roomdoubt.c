@@ -7,7 +7,9 @@
  * where both sides are seen whole (carryroom_merge_seen); the start's and p's merged rooms are compared; if they differ,
  * every doubtful square with a free 8-neighbour in each of the two rooms is a
  * candidate, and the one whose nearest reachable cell (goals_near) is nearest Utak,
- * not yet looked at, is looked at.
+ * not yet looked at, is looked at. roomdoubt_jambs: for each door of the start's
+ * room toward a better corner, the coarse occupied squares facing floor near its
+ * run.
  * MEMORY: a grid and a room map of the screen, freed before returning.
  * COMPLEXITY: O(w h) for the map, O(w h) for the candidates, O(w h) for each
  * goals_near over at most the candidates kept (the nearest first). */
@@ -246,6 +248,109 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 			best = dd;
 			*goal = near;
 			verdict = ROOMDOUBT_LOOK;
+		}
+	}
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	return verdict;
+}
+
+/* seg_dist2(px, py, ax, ay, bx, by): the squared distance from (px, py) to the
+ * segment (ax, ay)-(bx, by). */
+static double seg_dist2(double px, double py, double ax, double ay, double bx, double by)
+{
+	double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+	double t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	double ex = px - (ax + t * dx), ey = py - (ay + t * dy);
+	return ex * ex + ey * ey;
+}
+
+/* jamb_wide(peak, c): the verdict's door rule (carryroom.h) for one side. */
+static bool jamb_wide(double peak, double c)
+{
+	return peak >= CARRYROOM_RATIO * c && peak >= c + CARRYROOM_MARGIN;
+}
+
+RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj;
+	if (!goals_cell_of(s, c->start, &si, &sj))
+		return ROOMDOUBT_NONE;
+	RoomMap rm;
+	goals_roommap_build(&rm, s);
+	CarryRooms cr;
+	carryroom_merge_seen(&rm, s, &cr);
+	int32_t a0 = rooms_at(&rm.rooms, si, sj), a = a0 >= 0 ? cr.merged[a0] : -1;
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	int64_t here = a0 >= 0 ? goals_room_corner_best(c, &rm, a0) : INT64_MAX;
+	double best = INFINITY;
+	for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count; q++) {
+		const RoomsDoor *d = &rm.rooms.doors[q];
+		int32_t ra = cr.merged[d->room_a], rb = cr.merged[d->room_b];
+		/* Doors the verdict's rule keeps on the model, out of the start's room,
+		 * undecided ones too: a look past one (roomdoubt_beyond) may leave it
+		 * undecided, its width still the coarse squares'. */
+		if (ra == rb || (ra != a && rb != a))
+			continue;
+		int32_t other = ra == a ? rb : ra;
+		bool better = false;
+		for (int32_t k = 0; k < s->w * s->h && !better; k++)
+			better = carryroom_at(&cr, &rm, k % s->w, k / s->w) == other &&
+				 goals_corner_score(c->task.corner, s->x0 + k % s->w, s->y0 + k / s->w) > here;
+		if (!better)
+			continue;
+		/* The squares that set the door's width: occupied, seen only coarsely,
+		 * facing floor, within half its width and a coarse cell of the run
+		 * across it. The coarse faces on each side may lie up to a cell less a
+		 * square back (roomdoubt.h), and the door's clearance grow by half of
+		 * each: if the start's room would still widen well beyond it by the
+		 * verdict's rule, they cannot matter. */
+		double reach = d->width / 2.0 + ROOMDOUBT_COARSE_CELL;
+		int32_t r = (int32_t)ceil(reach), coarsest[2] = {WORLDMODEL_RES_FOVEA, WORLDMODEL_RES_FOVEA};
+		int32_t i0 = (d->ax < d->bx ? d->ax : d->bx) - r, i1 = (d->ax > d->bx ? d->ax : d->bx) + r;
+		int32_t j0 = (d->ay < d->by ? d->ay : d->by) - r, j1 = (d->ay > d->by ? d->ay : d->by) + r;
+		i0 = i0 < 0 ? 0 : i0, j0 = j0 < 0 ? 0 : j0;
+		i1 = i1 >= s->w ? s->w - 1 : i1, j1 = j1 >= s->h ? s->h - 1 : j1;
+		for (int pass = 0; pass < 2; pass++) {
+			if (pass == 1) {
+				if (coarsest[0] == WORLDMODEL_RES_FOVEA && coarsest[1] == WORLDMODEL_RES_FOVEA)
+					break; /* no square seen coarsely sets its width */
+				double c1 = sqrt((double)rm.skeleton.dist2[d->y * s->w + d->x]);
+				for (int end = 0; end < 2; end++)
+					c1 += coarsest[end] == WORLDMODEL_RES_PERIPHERAL     ? (ROOMDOUBT_COARSE_CELL - 1) / 2.0
+					      : coarsest[end] == WORLDMODEL_RES_INTERMEDIATE ? 0.5
+											     : 0;
+				if (jamb_wide(cr.peak[a], c1))
+					break;
+				if (verdict == ROOMDOUBT_NONE)
+					verdict = ROOMDOUBT_STUCK;
+			}
+			for (int32_t j = j0; j <= j1; j++)
+				for (int32_t i = i0; i <= i1; i++) {
+					int32_t x = s->x0 + i, y = s->y0 + j;
+					Evidence e = worldmodel_evidence(&c->model, x, y);
+					if (e.res == WORLDMODEL_UNSEEN || e.res >= WORLDMODEL_RES_FOVEA ||
+					    worldmodel_belief(&c->model, x, y) != BELIEF_OCCUPIED ||
+					    seg_dist2(i, j, d->ax, d->ay, d->bx, d->by) > reach * reach)
+						continue;
+					bool faces = false;
+					for (int dd = 1; dd < 5 && !faces; dd++) {
+						int32_t u = i + (dd == 1) - (dd == 2), v = j + (dd == 3) - (dd == 4);
+						faces = u >= 0 && v >= 0 && u < s->w && v < s->h &&
+							worldmodel_belief(&c->model, s->x0 + u, s->y0 + v) == BELIEF_FLOOR;
+					}
+					if (!faces)
+						continue;
+					/* Each end of the run has its own side: the nearer one. */
+					int end = (i - d->ax) * (i - d->ax) + (j - d->ay) * (j - d->ay) >
+						  (i - d->bx) * (i - d->bx) + (j - d->by) * (j - d->by);
+					if (pass == 0)
+						coarsest[end] = e.res < coarsest[end] ? e.res : coarsest[end];
+					else if (look_at(c, dist, goals_centre(x, y), &best, goal))
+						verdict = ROOMDOUBT_LOOK;
+				}
 		}
 	}
 	carryroom_free(&cr);

@@ -35,6 +35,10 @@ typedef enum RoomDoubt {
 	ROOMDOUBT_STUCK /* it cannot tell, and there is nothing left to look at */
 } RoomDoubt;
 
+/* The side of the coarsest cell of the retina, in squares (4 x 4 in the periphery):
+ * how far a face seen so can lie from where it reads. */
+#define ROOMDOUBT_COARSE_CELL 4
+
 /* roomdoubt_check(c, dist, p, goal): whether the model can tell that point p lies in
  * the start's room (the rule above) on c->screen; dist the steps from Utak over the
  * free space (goals_reach). COMPLEXITY: O(w h) a room map of the screen. */
@@ -64,5 +68,23 @@ RoomDoubt roomdoubt_door(const Controller *c, const int32_t *dist, Vec2 *goal);
  * claim the corner of half a room. COMPLEXITY: O(w h) a room map of the screen,
  * O(w h) for each undecided door. */
 RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal);
+
+/* roomdoubt_jambs(c, dist, goal): at a corner Utak would claim, whether a door out of
+ * the start's room that the verdict's rule keeps on the model (decided or not),
+ * leading to space with a better corner, may owe its narrowness to squares seen only
+ * coarsely: occupied squares, never seen in the fovea, facing floor, within half the
+ * door's width and ROOMDOUBT_COARSE_CELL of the run across it. A coarse cell across
+ * a wall's face reads occupied over floor it shares, and such cells that join an
+ * object to the verge make the object part of the wall (paper 3.4.2): a passage as
+ * wide as the room then reads as a door, and Utak would claim the corner of half a
+ * room. The squares matter when, the coarse faces on each side of the run taken up
+ * to a cell less a square back (3 squares at 4 x 4, 1 at 2 x 2) and half of each
+ * added to the door's clearance, the start's room would no longer widen well beyond
+ * it by the verdict's rule (carryroom.h); the other side's peak is not asked, since
+ * a side seen in part is roomdoubt_beyond's. If so, *goal is where to look from at
+ * the nearest such square not yet looked at (roomdoubt_check's look);
+ * ROOMDOUBT_STUCK when none is left to look at. COMPLEXITY: O(w h) a room map of
+ * the screen, O(w h) for each door. */
+RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal);
 
 #endif
