@@ -102,63 +102,72 @@
 
 /* ---------------------------------------------------------------- distance transform */
 
-/* Phase 1 works on four columns at once, four 16-bit lanes in a uint64_t (SWAR: plain
- * C, so the same code on every compiler and at -O2, where GCC 12 does not vectorise
- * these loops). A lane holds a column distance, at most SKELETON_MAX_SIDE < 0x8000,
- * so adding 1 or 0x7fff to a lane never carries into the next. */
-#define EDT_ONES 0x0001000100010001u
-#define EDT_HIGH 0x8000800080008000u
-#define EDT_LOW 0x7fff7fff7fff7fffu
+/* Phase 2 takes each row in blocks of EDT_BLOCK cells. For a cell x of the row, no
+ * column u with (x - u)^2 >= b^2 can come strictly below a bound b^2 >= dist2(x), so
+ * the minimum lies within |x - u| < b: a window. Two bounds are at hand, g(x) itself
+ * and the row below's answer D': the nearest blocked cell of (x, y + 1) is at most
+ * 1 farther from (x, y), so b = min(g(x), ceil(sqrt(D')) + 1). A block whose bound
+ * (the larger over its cells) is at most EDT_WINDOW_BOUND is done by the window:
+ * min over k < b of g(x - k)^2 + k^2 and g(x + k)^2 + k^2, one k for all the cells
+ * of the block at once, in 16-bit lanes (EDT_BLOCK of them: plain C loops of a fixed
+ * count, which GCC and Clang vectorise at -O2). Other blocks, where some cell is far
+ * from every blocked cell (large open space), take the lower envelope (edt_envelope)
+ * over just the columns their window reaches. On the benchmark grids the bound of a
+ * block is on average 1 (maze) to about 20 (Boston_0_1024), while the envelope's
+ * per-cell cost is that of a window of about 40 to 80 offsets. */
+#define EDT_BLOCK 16
+#define EDT_WINDOW_BOUND 128
+/* g^2 in 16 bits, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window block every
+ * answer is at most EDT_CLIP, so a clipped term, still >= EDT_CLIP, cannot come below
+ * the answer, nor wrongly reach it (the term that reaches it is then g^2 = EDT_CLIP
+ * itself). EDT_CLIP + (EDT_WINDOW_BOUND - 1)^2 < 2^15: no lane overflows. */
+#define EDT_CLIP (EDT_WINDOW_BOUND * EDT_WINDOW_BOUND)
+_Static_assert(EDT_CLIP + (EDT_WINDOW_BOUND - 1) * (EDT_WINDOW_BOUND - 1) <= INT16_MAX,
+               "the window's 16-bit lanes must not overflow");
+/* The 16-bit squares are kept with this many zero columns on either side, so that a
+ * window never reads outside; a zero outside the grid stands for a blocked column,
+ * which changes nothing beyond columns -1 and w (those are nearer). */
+#define EDT_PAD EDT_WINDOW_BOUND
 
-/* edt_lanes_nonzero(v): 0xffff in each lane of v that is not 0, else 0 (lanes of v
- * below 0x8001). */
-static inline uint64_t edt_lanes_nonzero(uint64_t v)
-{
-	return (((v + EDT_LOW) & EDT_HIGH) >> 15) * 0xffffu;
-}
-
-/* The row pass's envelope (edt_row) lies on two guards: at the bottom a column far
- * to the left, which never drops column -1 (they cross near EDT_FAR / 2, and any
- * column u >= 0 crosses column -1 at (u - 1) / 2 or later); above the top a parabola
- * EDT_ABOVE + x^2, never lower than the last real column, w, which is at most
+/* The envelope (edt_envelope) keeps its first column at the bottom of its stack for
+ * good (as in Felzenszwalb and Huttenlocher, where z[0] = -infinity): that entry's
+ * differences make the drop test false, EDT_NEVER * (u - t) being below any
+ * (F(u) - F(t)) (|F| < 2^31, columns less than 2^16 apart). Above the top lies a
+ * parabola EDT_ABOVE + x^2, never lower than the last real column, which is at most
  * (SKELETON_MAX_SIDE + 1)^2 < EDT_ABOVE at any cell (and EDT_ABOVE + x^2 < 2^31). */
-#define EDT_FAR (-16384)
+#define EDT_NEVER (-((int64_t)1 << 40))
 #define EDT_ABOVE 0x40000000
 
-/* The envelope's stack (see edt_row), w + 4 entries a field. */
+/* The envelope's stack (see edt_envelope), w + 4 entries a field. */
 typedef struct EdtStack {
 	int32_t *u, *G, *L; /* column, its g^2, its distance from the entry below */
 	int64_t *F, *D;     /* F = u^2 + G, and F less the entry below's F */
 } EdtStack;
 
-/* edt_row(g, out, w, v, count, largest): phase 2 of one row: out[x] = min over the
- * columns u of (x - u)^2 + g[u]^2, with columns -1 and w blocked (g = 0; a blocked
- * cell of the row is simply a column with g = 0, so the row needs no splitting into
- * runs). With F(u) = u^2 + g(u)^2 the parabola of column u at x is F(u) - 2 u x + x^2,
- * and two parabolas a < b cross at (F(b) - F(a)) / (2 (b - a)). The lower envelope's
- * columns are kept on a stack; the top b is dropped when the new column u crosses it
- * no later than b crosses the one below (cross multiplied in 64 bits: exact, and no
- * division); each entry keeps its differences from the one below, so the test is two
- * multiplications of values already loaded. Then one sweep reads the envelope: the
- * entry lowest at x moves right as x does, and the next one is compared by value
- * (32 bits). Returns the larger of the row's largest value and largest, and counts each
- * value d in count[d + 1] (blocked cells too, at 0: the caller clears count[1]). */
-static inline int32_t edt_row(const uint16_t *restrict g, int32_t *restrict out, int32_t w,
-                              const EdtStack *v, int32_t *restrict count, int32_t largest)
+/* edt_envelope(g, a, b, x0, x1, out, v): out[x] = min over the columns a <= u <= b of
+ * (x - u)^2 + g[u]^2, for x0 <= x < x1 (g is read from a to b; -1 <= a, b <= w, and
+ * g[-1] = g[w] = 0: the blocked columns outside the grid). With F(u) = u^2 + g(u)^2
+ * the parabola of column u at x is F(u) - 2 u x + x^2, and two parabolas a < b cross
+ * at (F(b) - F(a)) / (2 (b - a)). The lower envelope's columns are kept on a stack;
+ * the top t is dropped when the new column u crosses it no later than t crosses the
+ * one below (cross multiplied in 64 bits: exact, and no division); each entry keeps
+ * its differences from the one below, so the test is two multiplications of values
+ * already loaded. Then one sweep reads the envelope: the entry lowest at x moves
+ * right as x does, and the next one is compared by value (32 bits). A blocked cell
+ * is one more column, with g = 0 (Meijster et al., Felzenszwalb and Huttenlocher). */
+static void edt_envelope(const uint16_t *restrict g, int32_t a, int32_t b, int32_t x0,
+                         int32_t x1, int32_t *restrict out, const EdtStack *v)
 {
 	int32_t *restrict vu = v->u, *restrict vG = v->G, *restrict vL = v->L;
 	int64_t *restrict vF = v->F, *restrict vD = v->D;
-	vu[0] = EDT_FAR;
-	vG[0] = 0;
-	vF[0] = (int64_t)EDT_FAR * EDT_FAR;
-	vu[1] = -1;
-	vG[1] = 0;
-	vF[1] = 1;
-	vD[1] = 1 - vF[0];
-	vL[1] = -1 - EDT_FAR;
-	int32_t top = 1;
-	for (int32_t u = 0; u <= w; u++) {
-		const int32_t gu = u < w ? g[u] : 0;
+	vu[0] = a;
+	vG[0] = g[a] * g[a];
+	vF[0] = (int64_t)a * a + vG[0];
+	vL[0] = 1;
+	vD[0] = EDT_NEVER;
+	int32_t top = 0;
+	for (int32_t u = a + 1; u <= b; u++) {
+		const int32_t gu = g[u];
 		const int32_t Gu = gu * gu;
 		const int64_t Fu = (int64_t)u * u + Gu;
 		/* the top is nowhere strictly lowest: cross(top, u) <= cross(below, top) */
@@ -173,8 +182,8 @@ static inline int32_t edt_row(const uint16_t *restrict g, int32_t *restrict out,
 	}
 	vu[top + 1] = 0;
 	vG[top + 1] = EDT_ABOVE;
-	int32_t k = 1;
-	for (int32_t x = 0; x < w; x++) {
+	int32_t k = 0;
+	for (int32_t x = x0; x < x1; x++) {
 		int32_t d = x - vu[k], e = x - vu[k + 1];
 		int32_t val = vG[k] + d * d, next = vG[k + 1] + e * e;
 		while (next <= val) {
@@ -184,9 +193,162 @@ static inline int32_t edt_row(const uint16_t *restrict g, int32_t *restrict out,
 			next = vG[k + 1] + e * e;
 		}
 		out[x] = val;
-		largest = val > largest ? val : largest;
-		if (count)
-			count[val + 1]++;
+	}
+}
+
+/* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach of sq[x0 + i + k] +
+ * k^2 (sq: the row's clipped squares, padded). */
+static inline void edt_window(const int16_t *restrict sq, int32_t x0, int32_t reach,
+                              int16_t *restrict best)
+{
+	const int16_t *restrict at = sq + x0;
+	for (int i = 0; i < EDT_BLOCK; i++)
+		best[i] = at[i];
+	for (int32_t k = 1; k <= reach; k++) {
+		const int16_t kk = (int16_t)(k * k);
+		const int16_t *restrict left = at - k, *restrict right = at + k;
+		for (int i = 0; i < EDT_BLOCK; i++) {
+			int16_t m = left[i] < right[i] ? left[i] : right[i];
+			m = (int16_t)(m + kk);
+			best[i] = m < best[i] ? m : best[i];
+		}
+	}
+}
+
+/* edt_ceil_sqrt(m): the least c with c^2 >= m (m >= 0; sqrt of a double is correctly
+ * rounded, so its floor is exact below 2^52). */
+static inline int32_t edt_ceil_sqrt(int32_t m)
+{
+	int32_t c = (int32_t)sqrt((double)m);
+	return (int64_t)c * c < m ? c + 1 : c;
+}
+
+/* The scratch of phase 2, O(w). */
+typedef struct EdtRow {
+	uint16_t *g;    /* the row's column distances, g[-1] and g[w .. wb] 0 */
+	int16_t *sq;    /* min(g^2, EDT_CLIP), EDT_PAD zeros either side */
+	uint16_t *dn;   /* per column: the distance to the blocked cell below */
+	int32_t *bound; /* per block: the largest answer of the row done last */
+	uint16_t *most; /* per block: the largest g */
+	EdtStack v;
+	int32_t w, blocks;
+} EdtRow;
+
+/* edt_columns_block(up, dn, g, sq): edt_columns on one block (the pointers at its
+ * first column); returns its largest g. */
+static inline uint16_t edt_columns_block(const uint16_t *restrict up, uint16_t *restrict dn,
+                                         uint16_t *restrict g, int16_t *restrict sq)
+{
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		const uint16_t d = up[i] ? (uint16_t)(dn[i] + 1) : 0;
+		dn[i] = d;
+		g[i] = d < up[i] ? d : up[i];
+	}
+	uint16_t m = 0;
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		sq[i] = (int16_t)(g[i] < EDT_WINDOW_BOUND ? g[i] * g[i] : EDT_CLIP);
+		m = g[i] > m ? g[i] : m;
+	}
+	return m;
+}
+
+/* edt_down_block(cells, prev, row): phase 1 down the grid on one block: row = prev + 1
+ * on a free cell, else 0. */
+static inline void edt_down_block(const uint8_t *restrict cells, const uint16_t *restrict prev,
+                                  uint16_t *restrict row)
+{
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		const uint16_t free_mask = (uint16_t)-(uint16_t)(cells[i] == GRID_FREE);
+		row[i] = (uint16_t)((prev[i] + 1) & free_mask);
+	}
+}
+
+/* edt_columns(r, up): the end of phase 1 for one row (up: its distances to the
+ * blocked cell above, 0 on a blocked cell): r->dn, the distance to the nearest
+ * blocked cell below (row h blocked), and r->g = min(up, dn), the column distance,
+ * with its clipped squares r->sq and each block's largest g. The loops over a block
+ * have a fixed count, so that compilers vectorise them at -O2 (GCC 12's cheap cost
+ * model takes only loops that need no scalar remainder). */
+static void edt_columns(EdtRow *r, const uint16_t *restrict up)
+{
+	const int32_t w = r->w, full = w / EDT_BLOCK;
+	uint16_t *restrict dn = r->dn, *restrict g = r->g, *restrict most = r->most;
+	int16_t *restrict sq = r->sq;
+	for (int32_t blk = 0; blk < full; blk++) {
+		const int32_t x0 = blk * EDT_BLOCK;
+		most[blk] = edt_columns_block(up + x0, dn + x0, g + x0, sq + x0);
+	}
+	if (full * EDT_BLOCK < w) {
+		uint16_t m = 0;
+		for (int32_t x = full * EDT_BLOCK; x < w; x++) {
+			const uint16_t a = up[x];
+			const uint16_t d = a ? (uint16_t)(dn[x] + 1) : 0;
+			const uint16_t c = d < a ? d : a;
+			dn[x] = d;
+			g[x] = c;
+			sq[x] = (int16_t)(c < EDT_WINDOW_BOUND ? c * c : EDT_CLIP);
+			m = c > m ? c : m;
+		}
+		most[full] = m;
+	}
+}
+
+/* edt_row(r, out): phase 2 of one row, from r->g, r->sq and r->most (edt_columns),
+ * into out (w values); r->bound is read as the row below's and left as this row's.
+ * Returns the row's largest value. */
+static int32_t edt_row(EdtRow *r, int32_t *restrict out)
+{
+	const int32_t w = r->w, blocks = r->blocks;
+	const uint16_t *restrict g = r->g;
+	const int16_t *restrict sq = r->sq;
+	int32_t *restrict bound = r->bound;
+	int32_t largest = 0;
+	int32_t run = -1, run_reach = 0; /* the first block of a run for the envelope */
+	for (int32_t blk = 0; blk <= blocks; blk++) {
+		const int32_t x0 = blk * EDT_BLOCK;
+		int32_t b = EDT_WINDOW_BOUND + 1; /* past the end: ends a run */
+		if (blk < blocks) {
+			const int32_t c = edt_ceil_sqrt(bound[blk]) + 1;
+			b = r->most[blk] < c ? r->most[blk] : c;
+		}
+		if (b > EDT_WINDOW_BOUND && blk < blocks) {
+			run = run < 0 ? blk : run;
+			run_reach = b - 1 > run_reach ? b - 1 : run_reach;
+			continue;
+		}
+		if (run >= 0) {
+			/* the blocks run .. blk - 1, by the envelope of the columns in reach */
+			const int32_t r0 = run * EDT_BLOCK, r1 = x0 < w ? x0 : w;
+			const int32_t a = r0 - run_reach > -1 ? r0 - run_reach : -1;
+			const int32_t z = r1 - 1 + run_reach < w ? r1 - 1 + run_reach : w;
+			edt_envelope(g, a, z, r0, r1, out, &r->v);
+			for (int32_t k = run; k < blk; k++) {
+				int32_t most = 0;
+				const int32_t e = (k + 1) * EDT_BLOCK < w ? (k + 1) * EDT_BLOCK : w;
+				for (int32_t x = k * EDT_BLOCK; x < e; x++)
+					most = out[x] > most ? out[x] : most;
+				bound[k] = most;
+				largest = most > largest ? most : largest;
+			}
+			run = -1;
+			run_reach = 0;
+		}
+		if (blk == blocks)
+			break;
+		int16_t best[EDT_BLOCK];
+		edt_window(sq, x0, b - 1, best);
+		int16_t most = 0;
+		for (int i = 0; i < EDT_BLOCK; i++)
+			most = best[i] > most ? best[i] : most;
+		bound[blk] = most;
+		largest = most > largest ? most : largest;
+		const int n = w - x0 < EDT_BLOCK ? w - x0 : EDT_BLOCK;
+		if (n == EDT_BLOCK)
+			for (int i = 0; i < EDT_BLOCK; i++)
+				out[x0 + i] = best[i];
+		else
+			for (int i = 0; i < n; i++)
+				out[x0 + i] = best[i];
 	}
 	return largest;
 }
@@ -204,76 +366,61 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 		return largest;
 	uint16_t *own = up ? NULL : util_alloc((size_t)w * h, sizeof *up);
 	up = up ? up : own;
-	uint16_t *dn = util_alloc((size_t)w, sizeof *dn);
-	uint16_t *g = util_alloc((size_t)w, sizeof *g);
-	EdtStack v;
+	EdtRow r = {.w = w, .blocks = (w + EDT_BLOCK - 1) / EDT_BLOCK};
+	const size_t wb = (size_t)r.blocks * EDT_BLOCK;
+	uint16_t *gmem = util_alloc(wb + 2, sizeof *gmem);
+	int16_t *sqmem = util_alloc(wb + 2 * EDT_PAD, sizeof *sqmem);
+	memset(gmem, 0, (wb + 2) * sizeof *gmem);
+	memset(sqmem, 0, (wb + 2 * EDT_PAD) * sizeof *sqmem);
+	r.g = gmem + 1;
+	r.sq = sqmem + EDT_PAD;
+	r.dn = util_alloc(wb, sizeof *r.dn);
+	memset(r.dn, 0, wb * sizeof *r.dn); /* row h is blocked */
+	r.bound = util_alloc((size_t)r.blocks, sizeof *r.bound);
+	memset(r.bound, 0, (size_t)r.blocks * sizeof *r.bound);
+	r.most = util_alloc((size_t)r.blocks, sizeof *r.most);
 	const size_t n = (size_t)w + 4;
-	v.u = util_alloc(n, sizeof *v.u);
-	v.G = util_alloc(n, sizeof *v.G);
-	v.L = util_alloc(n, sizeof *v.L);
-	v.F = util_alloc(n, sizeof *v.F);
-	v.D = util_alloc(n, sizeof *v.D);
+	r.v.u = util_alloc(n, sizeof *r.v.u);
+	r.v.G = util_alloc(n, sizeof *r.v.G);
+	r.v.L = util_alloc(n, sizeof *r.v.L);
+	r.v.F = util_alloc(n, sizeof *r.v.F);
+	r.v.D = util_alloc(n, sizeof *r.v.D);
 	/* Phase 1 down the grid, row by row so that the loops run along memory: up is the
 	 * distance along the column to the nearest blocked cell above (row -1 is
-	 * blocked), 0 on a blocked cell. A row's four cells come as one 32-bit load and
-	 * are spread to four lanes; the lanes equal to GRID_FREE keep up + 1. The stores
-	 * and loads go through memcpy, which keeps the lane of each column the same on
-	 * either byte order (the spread keeps the order of significance). */
-	const int32_t w4 = w & ~3;
-	memset(dn, 0, (size_t)w * sizeof *dn);
+	 * blocked), 0 on a blocked cell. Blocks of a fixed count, as in edt_columns. */
+	const int32_t w16 = w - w % EDT_BLOCK;
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *restrict c = gr->cells + (size_t)y * w;
 		uint16_t *restrict row = up + (size_t)y * w;
-		const uint16_t *restrict prev = y > 0 ? up + (size_t)(y - 1) * w : dn;
-		for (int32_t x = 0; x < w4; x += 4) {
-			uint32_t b;
-			uint64_t p;
-			memcpy(&b, c + x, sizeof b);
-			memcpy(&p, prev + x, sizeof p);
-			uint64_t bytes = b;
-			bytes = (bytes | bytes << 16) & 0x0000ffff0000ffffu;
-			bytes = (bytes | bytes << 8) & 0x00ff00ff00ff00ffu;
-			const uint64_t is_free = ~edt_lanes_nonzero(bytes ^ (EDT_ONES * GRID_FREE));
-			p = (p + EDT_ONES) & is_free;
-			memcpy(row + x, &p, sizeof p);
-		}
-		for (int32_t x = w4; x < w; x++)
-			row[x] = (uint16_t)((prev[x] + 1) & -(uint16_t)(c[x] == GRID_FREE));
+		const uint16_t *restrict prev = y > 0 ? up + (size_t)(y - 1) * w : r.dn;
+		for (int32_t x0 = 0; x0 < w16; x0 += EDT_BLOCK)
+			edt_down_block(c + x0, prev + x0, row + x0);
+		for (int32_t x = w16; x < w; x++)
+			row[x] = c[x] == GRID_FREE ? (uint16_t)(prev[x] + 1) : 0;
 	}
-	/* Then up the grid, row by row: dn, the distance to the nearest blocked cell below
-	 * (row h blocked; a cell is blocked where up is 0), and g = min(up, dn), the
-	 * column distance, made and used at once by the row pass (no second pass over
-	 * the grid). min of two lanes below 0x8000: (a | 0x8000) - d has its top bit set
-	 * where a >= d, with no borrow from the next lane. */
-	memset(dn, 0, (size_t)w * sizeof *dn);
+	/* Then up the grid, row by row: the column distances of a row (edt_columns), made
+	 * and used at once by the row pass (no second pass over the grid). */
 	for (int32_t y = h - 1; y >= 0; y--) {
-		const uint16_t *restrict u = up + (size_t)y * w;
-		for (int32_t x = 0; x < w4; x += 4) {
-			uint64_t a, d;
-			memcpy(&a, u + x, sizeof a);
-			memcpy(&d, dn + x, sizeof d);
-			d = (d + EDT_ONES) & edt_lanes_nonzero(a);
-			memcpy(dn + x, &d, sizeof d);
-			const uint64_t take_d = ((((a | EDT_HIGH) - d) & EDT_HIGH) >> 15) * 0xffffu;
-			const uint64_t m = (d & take_d) | (a & ~take_d);
-			memcpy(g + x, &m, sizeof m);
-		}
-		for (int32_t x = w4; x < w; x++) {
-			uint16_t d = (uint16_t)((dn[x] + 1) & -(uint16_t)(u[x] != 0));
-			dn[x] = d;
-			g[x] = d < u[x] ? d : u[x];
-		}
-		largest = edt_row(g, dist2 + (size_t)y * w, w, &v, count, largest);
+		edt_columns(&r, up + (size_t)y * w);
+		int32_t *restrict out = dist2 + (size_t)y * w;
+		const int32_t most = edt_row(&r, out);
+		largest = most > largest ? most : largest;
+		if (count)
+			for (int32_t x = 0; x < w; x++)
+				count[out[x] + 1]++;
 	}
 	if (count)
 		count[1] = 0; /* the blocked cells, counted at 0 */
-	free(v.u);
-	free(v.G);
-	free(v.L);
-	free(v.F);
-	free(v.D);
-	free(dn);
-	free(g);
+	free(r.v.u);
+	free(r.v.G);
+	free(r.v.L);
+	free(r.v.F);
+	free(r.v.D);
+	free(r.bound);
+	free(r.most);
+	free(r.dn);
+	free(gmem);
+	free(sqmem);
 	free(own);
 	return largest;
 }

@@ -72,6 +72,61 @@ TEST_CASE(edt_all_free_all_blocked_and_thin_grids)
 	grid_free(&g);
 }
 
+/* edt_matches_sparse(g): as edt_matches_brute, for grids too large for it: the
+ * oracle scans a list of the blocked cells, the ring outside the grid included. */
+static bool edt_matches_sparse(const Grid *g)
+{
+	int32_t *d = malloc(sizeof(int32_t) * (size_t)(g->w * g->h + 1));
+	int *bx = malloc(sizeof(int) * (size_t)((g->w + 2) * (g->h + 2)));
+	int *by = malloc(sizeof(int) * (size_t)((g->w + 2) * (g->h + 2)));
+	int nb = 0;
+	for (int y = -1; y <= g->h; y++)
+		for (int x = -1; x <= g->w; x++)
+			if (!grid_free_at(g, x, y)) {
+				bx[nb] = x;
+				by[nb++] = y;
+			}
+	int32_t largest = skeleton_edt(g, d), brute_largest = 0;
+	bool ok = true;
+	for (int y = 0; y < g->h && ok; y++)
+		for (int x = 0; x < g->w && ok; x++) {
+			int32_t best = INT32_MAX;
+			for (int k = 0; k < nb; k++) {
+				int32_t e = (bx[k] - x) * (bx[k] - x) + (by[k] - y) * (by[k] - y);
+				best = e < best ? e : best;
+			}
+			ok = d[y * g->w + x] == best;
+			brute_largest = best > brute_largest ? best : brute_largest;
+		}
+	free(d);
+	free(bx);
+	free(by);
+	return ok && largest == brute_largest;
+}
+
+/* Open spaces wider than the transform's windows (skeleton.c: rows whose cells are
+ * more than 128 from every blocked cell go by the lower envelope), next to narrow
+ * places, on grids of widths that are and are not a multiple of its blocks of 16. */
+TEST_CASE(edt_equals_brute_force_on_wide_open_grids)
+{
+	oracle_seed = 7;
+	int sizes[][2] = {{300, 290}, {333, 17}, {5, 600}, {290, 301}};
+	for (int k = 0; k < 4; k++)
+		for (int trial = 0; trial < 2; trial++) {
+			Grid g;
+			grid_init(&g, sizes[k][0], sizes[k][1], GRID_FREE);
+			for (int i = 0; i < (trial ? 40 : 3); i++) {
+				int x0 = oracle_rand_below(g.w), y0 = oracle_rand_below(g.h);
+				int rw = 1 + oracle_rand_below(12), rh = 1 + oracle_rand_below(12);
+				for (int y = y0; y < y0 + rh && y < g.h; y++)
+					for (int x = x0; x < x0 + rw && x < g.w; x++)
+						g.cells[y * g.w + x] = GRID_BLOCKED;
+			}
+			TEST_CHECK(edt_matches_sparse(&g));
+			grid_free(&g);
+		}
+}
+
 /* topology_matches(g, s): per free 4-component, exactly one skeleton 4-component,
  * and the same number of holes (each counted on that component alone). */
 static bool topology_matches(const Grid *g, const Skeleton *s)
@@ -350,6 +405,7 @@ int main(void)
 {
 	TEST_RUN(edt_equals_brute_force_on_random_grids);
 	TEST_RUN(edt_all_free_all_blocked_and_thin_grids);
+	TEST_RUN(edt_equals_brute_force_on_wide_open_grids);
 	TEST_RUN(skeleton_topology_on_random_grids);
 	TEST_RUN(skeleton_2x2_blocks_only_pinwheels);
 	TEST_RUN(skeleton_ring_has_one_loop_and_clearance);
