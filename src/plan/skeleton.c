@@ -116,6 +116,7 @@
  * block is on average 1 (maze) to about 20 (Boston_0_1024), while the envelope's
  * per-cell cost is that of a window of about 40 to 80 offsets. */
 #define EDT_BLOCK 16
+#define EDT_STEP 4
 #define EDT_WINDOW_BOUND 128
 /* g^2 in 16 bits, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window block every
  * answer is at most EDT_CLIP, so a clipped term, still >= EDT_CLIP, cannot come below
@@ -196,22 +197,30 @@ static void edt_envelope(const uint16_t *restrict g, int32_t a, int32_t b, int32
 	}
 }
 
+static inline void edt_window_step(const int16_t *restrict at, int32_t k, int16_t *restrict best)
+{
+	const int16_t kk = (int16_t)(k * k);
+	const int16_t *restrict left = at - k, *restrict right = at + k;
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		int16_t m = left[i] < right[i] ? left[i] : right[i];
+		m = (int16_t)(m + kk);
+		best[i] = m < best[i] ? m : best[i];
+	}
+}
+
 /* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach of sq[x0 + i + k] +
  * k^2 (sq: the row's clipped squares, padded). */
 static inline void edt_window(const int16_t *restrict sq, int32_t x0, int32_t reach,
                               int16_t *restrict best)
 {
 	const int16_t *restrict at = sq + x0;
+	/* k = 0 inside the loop rather than a copy before it: the copy, two 16-byte
+	 * stores read back as one 32-byte vector under AVX2, stalled every block */
 	for (int i = 0; i < EDT_BLOCK; i++)
-		best[i] = at[i];
-	for (int32_t k = 1; k <= reach; k++) {
-		const int16_t kk = (int16_t)(k * k);
-		const int16_t *restrict left = at - k, *restrict right = at + k;
-		for (int i = 0; i < EDT_BLOCK; i++) {
-			int16_t m = left[i] < right[i] ? left[i] : right[i];
-			m = (int16_t)(m + kk);
-			best[i] = m < best[i] ? m : best[i];
-		}
+		best[i] = INT16_MAX;
+	for (int32_t k = 0; k <= reach; k += 2) {
+		edt_window_step(at, k, best);
+		edt_window_step(at, k + 1, best);
 	}
 }
 
@@ -230,6 +239,7 @@ typedef struct EdtRow {
 	uint16_t *dn;   /* per column: the distance to the blocked cell below */
 	int32_t *bound; /* per block: the largest answer of the row done last */
 	uint16_t *most; /* per block: the largest g */
+	int32_t *reach; /* per block and one more: the bound b of the row being done */
 	EdtStack v;
 	int32_t w, blocks;
 } EdtRow;
@@ -293,10 +303,16 @@ static void edt_columns(EdtRow *r, const uint16_t *restrict up)
 	}
 }
 
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define EDT_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define EDT_CLONES
+#endif
+
 /* edt_row(r, out): phase 2 of one row, from r->g, r->sq and r->most (edt_columns),
  * into out (w values); r->bound is read as the row below's and left as this row's.
  * Returns the row's largest value. */
-static int32_t edt_row(EdtRow *r, int32_t *restrict out)
+EDT_CLONES static int32_t edt_row(EdtRow *r, int32_t *restrict out)
 {
 	const int32_t w = r->w, blocks = r->blocks;
 	const uint16_t *restrict g = r->g;
@@ -304,13 +320,17 @@ static int32_t edt_row(EdtRow *r, int32_t *restrict out)
 	int32_t *restrict bound = r->bound;
 	int32_t largest = 0;
 	int32_t run = -1, run_reach = 0; /* the first block of a run for the envelope */
+	/* the blocks' bounds first, in a loop of its own, where the square roots of
+	 * successive blocks overlap (in the loop below each waited for a branch) */
+	int32_t *restrict reach = r->reach;
+	for (int32_t blk = 0; blk < blocks; blk++) {
+		const int32_t c = edt_ceil_sqrt(bound[blk]) + 1;
+		reach[blk] = r->most[blk] < c ? r->most[blk] : c;
+	}
+	reach[blocks] = EDT_WINDOW_BOUND + 1; /* past the end: ends a run */
 	for (int32_t blk = 0; blk <= blocks; blk++) {
 		const int32_t x0 = blk * EDT_BLOCK;
-		int32_t b = EDT_WINDOW_BOUND + 1; /* past the end: ends a run */
-		if (blk < blocks) {
-			const int32_t c = edt_ceil_sqrt(bound[blk]) + 1;
-			b = r->most[blk] < c ? r->most[blk] : c;
-		}
+		const int32_t b = reach[blk];
 		if (b > EDT_WINDOW_BOUND && blk < blocks) {
 			run = run < 0 ? blk : run;
 			run_reach = b - 1 > run_reach ? b - 1 : run_reach;
@@ -336,7 +356,7 @@ static int32_t edt_row(EdtRow *r, int32_t *restrict out)
 		if (blk == blocks)
 			break;
 		int16_t best[EDT_BLOCK];
-		edt_window(sq, x0, b - 1, best);
+		edt_window(sq, x0, b > 0 ? b - 1 : 0, best);
 		int16_t most = 0;
 		for (int i = 0; i < EDT_BLOCK; i++)
 			most = best[i] > most ? best[i] : most;
@@ -379,6 +399,7 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	r.bound = util_alloc((size_t)r.blocks, sizeof *r.bound);
 	memset(r.bound, 0, (size_t)r.blocks * sizeof *r.bound);
 	r.most = util_alloc((size_t)r.blocks, sizeof *r.most);
+	r.reach = util_alloc((size_t)r.blocks + 1, sizeof *r.reach);
 	const size_t n = (size_t)w + 4;
 	r.v.u = util_alloc(n, sizeof *r.v.u);
 	r.v.G = util_alloc(n, sizeof *r.v.G);
@@ -418,6 +439,7 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	free(r.v.D);
 	free(r.bound);
 	free(r.most);
+	free(r.reach);
 	free(r.dn);
 	free(gmem);
 	free(sqmem);
