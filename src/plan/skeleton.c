@@ -246,9 +246,12 @@ typedef struct EdtRow {
 
 /* edt_columns_block(up, dn, g, sq): edt_columns on one block (the pointers at its
  * first column); returns its largest g. */
-static inline uint16_t edt_columns_block(const uint16_t *restrict up, uint16_t *restrict dn,
-                                         uint16_t *restrict g, int16_t *restrict sq)
+static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
+                                         uint16_t *restrict dn, uint16_t *restrict g,
+                                         int16_t *restrict sq)
 {
+	uint16_t up[EDT_BLOCK];
+	memcpy(up, up_bytes, sizeof up);
 	for (int i = 0; i < EDT_BLOCK; i++) {
 		const uint16_t d = up[i] ? (uint16_t)(dn[i] + 1) : 0;
 		dn[i] = d;
@@ -264,13 +267,17 @@ static inline uint16_t edt_columns_block(const uint16_t *restrict up, uint16_t *
 
 /* edt_down_block(cells, prev, row): phase 1 down the grid on one block: row = prev + 1
  * on a free cell, else 0. */
-static inline void edt_down_block(const uint8_t *restrict cells, const uint16_t *restrict prev,
-                                  uint16_t *restrict row)
+static inline void edt_down_block(const uint8_t *restrict cells,
+                                  const unsigned char *restrict prev_bytes,
+                                  unsigned char *restrict row_bytes)
 {
+	uint16_t prev[EDT_BLOCK], row[EDT_BLOCK];
+	memcpy(prev, prev_bytes, sizeof prev);
 	for (int i = 0; i < EDT_BLOCK; i++) {
 		const uint16_t free_mask = (uint16_t)-(uint16_t)(cells[i] == GRID_FREE);
 		row[i] = (uint16_t)((prev[i] + 1) & free_mask);
 	}
+	memcpy(row_bytes, row, sizeof row);
 }
 
 /* edt_columns(r, up): the end of phase 1 for one row (up: its distances to the
@@ -279,19 +286,20 @@ static inline void edt_down_block(const uint8_t *restrict cells, const uint16_t 
  * with its clipped squares r->sq and each block's largest g. The loops over a block
  * have a fixed count, so that compilers vectorise them at -O2 (GCC 12's cheap cost
  * model takes only loops that need no scalar remainder). */
-static void edt_columns(EdtRow *r, const uint16_t *restrict up)
+static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 {
 	const int32_t w = r->w, full = w / EDT_BLOCK;
 	uint16_t *restrict dn = r->dn, *restrict g = r->g, *restrict most = r->most;
 	int16_t *restrict sq = r->sq;
 	for (int32_t blk = 0; blk < full; blk++) {
 		const int32_t x0 = blk * EDT_BLOCK;
-		most[blk] = edt_columns_block(up + x0, dn + x0, g + x0, sq + x0);
+		most[blk] = edt_columns_block(up + 2 * x0, dn + x0, g + x0, sq + x0);
 	}
 	if (full * EDT_BLOCK < w) {
 		uint16_t m = 0;
 		for (int32_t x = full * EDT_BLOCK; x < w; x++) {
-			const uint16_t a = up[x];
+			uint16_t a;
+			memcpy(&a, up + 2 * x, sizeof a);
 			const uint16_t d = a ? (uint16_t)(dn[x] + 1) : 0;
 			const uint16_t c = d < a ? d : a;
 			dn[x] = d;
@@ -376,7 +384,7 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, int32_t *restrict out)
 /* skeleton_edt_count(g, dist2, count, up): skeleton_edt, also counting the free cells
  * of each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
  * histogram, gathered while the values are made rather than in a pass of its own).
- * up is scratch of 2 w h bytes, or NULL to allocate it here. */
+ * up is scratch of 2 w h bytes, or NULL to use dist2's own memory (see below). */
 static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint16_t *up)
 {
 	const int32_t w = gr->w, h = gr->h;
@@ -384,8 +392,14 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	int32_t largest = 0;
 	if (w == 0 || h == 0)
 		return largest;
-	uint16_t *own = up ? NULL : util_alloc((size_t)w * h, sizeof *up);
-	up = up ? up : own;
+	/* Phase 1's distances to the blocked cell above, 2 bytes a cell, are kept either
+	 * in up or in the first half of dist2: row k's at byte 2 w k, read (in row order
+	 * from the bottom) before the output of row y, which covers rows 2 y and 2 y + 1,
+	 * is written, and those are at or past y, so they have been read. No scratch the
+	 * size of the grid, hence no page faults for it on every call (32 MB at 4096).
+	 * They are stored and read through memcpy, so that no int32_t is accessed as a
+	 * uint16_t (the compilers turn the copies into plain vector loads and stores). */
+	unsigned char *above = up ? (unsigned char *)up : (unsigned char *)dist2;
 	EdtRow r = {.w = w, .blocks = (w + EDT_BLOCK - 1) / EDT_BLOCK};
 	const size_t wb = (size_t)r.blocks * EDT_BLOCK;
 	uint16_t *gmem = util_alloc(wb + 2, sizeof *gmem);
@@ -412,17 +426,22 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	const int32_t w16 = w - w % EDT_BLOCK;
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *restrict c = gr->cells + (size_t)y * w;
-		uint16_t *restrict row = up + (size_t)y * w;
-		const uint16_t *restrict prev = y > 0 ? up + (size_t)(y - 1) * w : r.dn;
+		unsigned char *restrict row = above + 2 * (size_t)y * w;
+		const unsigned char *restrict prev =
+		    y > 0 ? above + 2 * (size_t)(y - 1) * w : (const unsigned char *)r.dn;
 		for (int32_t x0 = 0; x0 < w16; x0 += EDT_BLOCK)
-			edt_down_block(c + x0, prev + x0, row + x0);
-		for (int32_t x = w16; x < w; x++)
-			row[x] = c[x] == GRID_FREE ? (uint16_t)(prev[x] + 1) : 0;
+			edt_down_block(c + x0, prev + 2 * x0, row + 2 * x0);
+		for (int32_t x = w16; x < w; x++) {
+			uint16_t a;
+			memcpy(&a, prev + 2 * x, sizeof a);
+			a = c[x] == GRID_FREE ? (uint16_t)(a + 1) : 0;
+			memcpy(row + 2 * x, &a, sizeof a);
+		}
 	}
 	/* Then up the grid, row by row: the column distances of a row (edt_columns), made
 	 * and used at once by the row pass (no second pass over the grid). */
 	for (int32_t y = h - 1; y >= 0; y--) {
-		edt_columns(&r, up + (size_t)y * w);
+		edt_columns(&r, above + 2 * (size_t)y * w);
 		int32_t *restrict out = dist2 + (size_t)y * w;
 		const int32_t most = edt_row(&r, out);
 		largest = most > largest ? most : largest;
@@ -443,7 +462,6 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	free(r.dn);
 	free(gmem);
 	free(sqmem);
-	free(own);
 	return largest;
 }
 
