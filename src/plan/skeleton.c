@@ -115,7 +115,7 @@
  * over just the columns their window reaches. On the benchmark grids the bound of a
  * block is on average 1 (maze) to about 20 (Boston_0_1024), while the envelope's
  * per-cell cost is that of a window of about 40 to 80 offsets. */
-#define EDT_BLOCK 16
+#define EDT_BLOCK 32
 #define EDT_STEP 4
 #define EDT_WINDOW_BOUND 128
 /* g^2 in 16 bits, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window block every
