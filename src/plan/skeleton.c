@@ -145,29 +145,46 @@ typedef struct EdtStack {
 	int64_t *F, *D;     /* F = u^2 + G, and F less the entry below's F */
 } EdtStack;
 
-/* edt_envelope(g, a, b, x0, x1, out, v): out[x] = min over the columns a <= u <= b of
- * (x - u)^2 + g[u]^2, for x0 <= x < x1 (g is read from a to b; -1 <= a, b <= w, and
- * g[-1] = g[w] = 0: the blocked columns outside the grid). With F(u) = u^2 + g(u)^2
- * the parabola of column u at x is F(u) - 2 u x + x^2, and two parabolas a < b cross
- * at (F(b) - F(a)) / (2 (b - a)). The lower envelope's columns are kept on a stack;
- * the top t is dropped when the new column u crosses it no later than t crosses the
- * one below (cross multiplied in 64 bits: exact, and no division); each entry keeps
- * its differences from the one below, so the test is two multiplications of values
- * already loaded. Then one sweep reads the envelope: the entry lowest at x moves
- * right as x does, and the next one is compared by value (32 bits). A blocked cell
- * is one more column, with g = 0 (Meijster et al., Felzenszwalb and Huttenlocher). */
-static void edt_envelope(const uint16_t *restrict g, int32_t a, int32_t b, int32_t x0,
-                         int32_t x1, int32_t *restrict out, const EdtStack *v)
+/* The lower envelope of the parabolas (x - u)^2 + g[u]^2 of the columns u pushed so
+ * far (Meijster et al., Felzenszwalb and Huttenlocher; a blocked cell is one more
+ * column, with g = 0). With F(u) = u^2 + g(u)^2 the parabola of column u at x is
+ * F(u) - 2 u x + x^2, and two parabolas a < b cross at (F(b) - F(a)) / (2 (b - a)).
+ * The envelope's columns are kept on a stack; the top t is dropped when the new
+ * column u crosses it no later than t crosses the one below (cross multiplied in 64
+ * bits: exact, and no division); each entry keeps its differences from the one below,
+ * so the test is two multiplications of values already loaded. A sweep reads the
+ * envelope: the entry lowest at x moves right as x does, and the next one is compared
+ * by value (32 bits). One row's runs of blocks share one stream of columns, pushed
+ * left to right, each column once: a run pushes the columns in its reach not pushed
+ * yet, then sweeps its cells; columns pushed for an earlier run are valid candidates
+ * too. A push that drops the entry the sweep stands on leaves that cell's place to
+ * the new top (the dropped entry was lowest only right of where the new one is). */
+typedef struct EdtCursor {
+	int32_t top;  /* the stack's top entry, -1 when empty */
+	int32_t k;    /* the entry lowest at the last cell swept */
+	int32_t last; /* the last column pushed */
+} EdtCursor;
+
+/* edt_envelope_push(v, c, g, a, z): pushes the columns a..z not pushed yet (g is
+ * read there; -1 <= a, z <= w, g[-1] = g[w] = 0: the blocked columns outside the
+ * grid); a gap after the last column pushed starts the stack afresh. */
+static void edt_envelope_push(const EdtStack *v, EdtCursor *c, const uint16_t *restrict g,
+                              int32_t a, int32_t z)
 {
 	int32_t *restrict vu = v->u, *restrict vG = v->G, *restrict vL = v->L;
 	int64_t *restrict vF = v->F, *restrict vD = v->D;
-	vu[0] = a;
-	vG[0] = g[a] * g[a];
-	vF[0] = (int64_t)a * a + vG[0];
-	vL[0] = 1;
-	vD[0] = EDT_NEVER;
-	int32_t top = 0;
-	for (int32_t u = a + 1; u <= b; u++) {
+	int32_t top = c->top;
+	if (top < 0 || a > c->last + 1) {
+		top = 0;
+		c->k = 0;
+		vu[0] = a;
+		vG[0] = g[a] * g[a];
+		vF[0] = (int64_t)a * a + vG[0];
+		vL[0] = 1;
+		vD[0] = EDT_NEVER;
+		c->last = a;
+	}
+	for (int32_t u = c->last + 1; u <= z; u++) {
 		const int32_t gu = g[u];
 		const int32_t Gu = gu * gu;
 		const int64_t Fu = (int64_t)u * u + Gu;
@@ -181,9 +198,20 @@ static void edt_envelope(const uint16_t *restrict g, int32_t a, int32_t b, int32
 		vG[top] = Gu;
 		vF[top] = Fu;
 	}
+	c->last = z > c->last ? z : c->last;
+	c->top = top;
+	c->k = c->k < top ? c->k : top;
 	vu[top + 1] = 0;
 	vG[top + 1] = EDT_ABOVE;
-	int32_t k = 0;
+}
+
+/* edt_envelope_sweep(v, c, x0, x1, out): out[x] for x0 <= x < x1, past the cells
+ * swept before, from the envelope (every column within reach of them pushed). */
+static void edt_envelope_sweep(const EdtStack *v, EdtCursor *c, int32_t x0, int32_t x1,
+                               int32_t *restrict out)
+{
+	const int32_t *restrict vu = v->u, *restrict vG = v->G;
+	int32_t k = c->k;
 	for (int32_t x = x0; x < x1; x++) {
 		int32_t d = x - vu[k], e = x - vu[k + 1];
 		int32_t val = vG[k] + d * d, next = vG[k + 1] + e * e;
@@ -195,6 +223,7 @@ static void edt_envelope(const uint16_t *restrict g, int32_t a, int32_t b, int32
 		}
 		out[x] = val;
 	}
+	c->k = k;
 }
 
 static inline void edt_window_step(const int16_t *restrict at, int32_t k, int16_t *restrict best)
@@ -317,17 +346,20 @@ static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 #define EDT_CLONES
 #endif
 
-/* edt_row(r, out): phase 2 of one row, from r->g, r->sq and r->most (edt_columns),
- * into out (w values); r->bound is read as the row below's and left as this row's.
- * Returns the row's largest value. */
-EDT_CLONES static int32_t edt_row(EdtRow *r, int32_t *restrict out)
+/* edt_row(r, up, out): one row: its column distances from up, its distances above
+ * (edt_columns), then phase 2 into out (w values; up may lie in out's first half,
+ * read before out is written, hence no restrict); r->bound is read as the row below's
+ * and left as this row's. Returns the row's largest value. */
+EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *out)
 {
+	edt_columns(r, up);
 	const int32_t w = r->w, blocks = r->blocks;
 	const uint16_t *restrict g = r->g;
 	const int16_t *restrict sq = r->sq;
 	int32_t *restrict bound = r->bound;
 	int32_t largest = 0;
 	int32_t run = -1, run_reach = 0; /* the first block of a run for the envelope */
+	EdtCursor cursor = {.top = -1};
 	/* the blocks' bounds first, in a loop of its own, where the square roots of
 	 * successive blocks overlap (in the loop below each waited for a branch) */
 	int32_t *restrict reach = r->reach;
@@ -349,7 +381,8 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, int32_t *restrict out)
 			const int32_t r0 = run * EDT_BLOCK, r1 = x0 < w ? x0 : w;
 			const int32_t a = r0 - run_reach > -1 ? r0 - run_reach : -1;
 			const int32_t z = r1 - 1 + run_reach < w ? r1 - 1 + run_reach : w;
-			edt_envelope(g, a, z, r0, r1, out, &r->v);
+			edt_envelope_push(&r->v, &cursor, g, a, z);
+			edt_envelope_sweep(&r->v, &cursor, r0, r1, out);
 			for (int32_t k = run; k < blk; k++) {
 				int32_t most = 0;
 				const int32_t e = (k + 1) * EDT_BLOCK < w ? (k + 1) * EDT_BLOCK : w;
@@ -441,9 +474,8 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	/* Then up the grid, row by row: the column distances of a row (edt_columns), made
 	 * and used at once by the row pass (no second pass over the grid). */
 	for (int32_t y = h - 1; y >= 0; y--) {
-		edt_columns(&r, above + 2 * (size_t)y * w);
-		int32_t *restrict out = dist2 + (size_t)y * w;
-		const int32_t most = edt_row(&r, out);
+		int32_t *out = dist2 + (size_t)y * w;
+		const int32_t most = edt_row(&r, above + 2 * (size_t)y * w, out);
 		largest = most > largest ? most : largest;
 		if (count)
 			for (int32_t x = 0; x < w; x++)
