@@ -117,13 +117,13 @@
  * per-cell cost is that of a window of about 40 to 80 offsets. */
 #define EDT_BLOCK 32
 #define EDT_STEP 4
-#define EDT_WINDOW_BOUND 128
+#define EDT_WINDOW_BOUND 181
 /* g^2 in 16 bits, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window block every
  * answer is at most EDT_CLIP, so a clipped term, still >= EDT_CLIP, cannot come below
  * the answer, nor wrongly reach it (the term that reaches it is then g^2 = EDT_CLIP
  * itself). EDT_CLIP + (EDT_WINDOW_BOUND - 1)^2 < 2^15: no lane overflows. */
 #define EDT_CLIP (EDT_WINDOW_BOUND * EDT_WINDOW_BOUND)
-_Static_assert(EDT_CLIP + (EDT_WINDOW_BOUND - 1) * (EDT_WINDOW_BOUND - 1) <= INT16_MAX,
+_Static_assert(EDT_CLIP + (EDT_WINDOW_BOUND - 1) * (EDT_WINDOW_BOUND - 1) <= UINT16_MAX,
                "the window's 16-bit lanes must not overflow");
 /* The 16-bit squares are kept with this many zero columns on either side, so that a
  * window never reads outside; a zero outside the grid stands for a blocked column,
@@ -226,27 +226,27 @@ static void edt_envelope_sweep(const EdtStack *v, EdtCursor *c, int32_t x0, int3
 	c->k = k;
 }
 
-static inline void edt_window_step(const int16_t *restrict at, int32_t k, int16_t *restrict best)
+static inline void edt_window_step(const uint16_t *restrict at, int32_t k, uint16_t *restrict best)
 {
-	const int16_t kk = (int16_t)(k * k);
-	const int16_t *restrict left = at - k, *restrict right = at + k;
+	const uint16_t kk = (uint16_t)(k * k);
+	const uint16_t *restrict left = at - k, *restrict right = at + k;
 	for (int i = 0; i < EDT_BLOCK; i++) {
-		int16_t m = left[i] < right[i] ? left[i] : right[i];
-		m = (int16_t)(m + kk);
+		uint16_t m = left[i] < right[i] ? left[i] : right[i];
+		m = (uint16_t)(m + kk);
 		best[i] = m < best[i] ? m : best[i];
 	}
 }
 
 /* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach of sq[x0 + i + k] +
  * k^2 (sq: the row's clipped squares, padded). */
-static inline void edt_window(const int16_t *restrict sq, int32_t x0, int32_t reach,
-                              int16_t *restrict best)
+static inline void edt_window(const uint16_t *restrict sq, int32_t x0, int32_t reach,
+                              uint16_t *restrict best)
 {
-	const int16_t *restrict at = sq + x0;
+	const uint16_t *restrict at = sq + x0;
 	/* k = 0 inside the loop rather than a copy before it: the copy, two 16-byte
 	 * stores read back as one 32-byte vector under AVX2, stalled every block */
 	for (int i = 0; i < EDT_BLOCK; i++)
-		best[i] = INT16_MAX;
+		best[i] = UINT16_MAX;
 	for (int32_t k = 0; k <= reach; k += 2) {
 		edt_window_step(at, k, best);
 		edt_window_step(at, k + 1, best);
@@ -264,7 +264,7 @@ static inline int32_t edt_ceil_sqrt(int32_t m)
 /* The scratch of phase 2, O(w). */
 typedef struct EdtRow {
 	uint16_t *g;    /* the row's column distances, g[-1] and g[w .. wb] 0 */
-	int16_t *sq;    /* min(g^2, EDT_CLIP), EDT_PAD zeros either side */
+	uint16_t *sq;    /* min(g^2, EDT_CLIP), EDT_PAD zeros either side */
 	uint16_t *dn;   /* per column: the distance to the blocked cell below */
 	int32_t *bound; /* per block: the largest answer of the row done last */
 	uint16_t *most; /* per block: the largest g */
@@ -277,7 +277,7 @@ typedef struct EdtRow {
  * first column); returns its largest g. */
 static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
                                          uint16_t *restrict dn, uint16_t *restrict g,
-                                         int16_t *restrict sq)
+                                         uint16_t *restrict sq)
 {
 	uint16_t up[EDT_BLOCK];
 	memcpy(up, up_bytes, sizeof up);
@@ -288,7 +288,7 @@ static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
 	}
 	uint16_t m = 0;
 	for (int i = 0; i < EDT_BLOCK; i++) {
-		sq[i] = (int16_t)(g[i] < EDT_WINDOW_BOUND ? g[i] * g[i] : EDT_CLIP);
+		sq[i] = (uint16_t)(g[i] < EDT_WINDOW_BOUND ? g[i] * g[i] : EDT_CLIP);
 		m = g[i] > m ? g[i] : m;
 	}
 	return m;
@@ -319,7 +319,7 @@ static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 {
 	const int32_t w = r->w, full = w / EDT_BLOCK;
 	uint16_t *restrict dn = r->dn, *restrict g = r->g, *restrict most = r->most;
-	int16_t *restrict sq = r->sq;
+	uint16_t *restrict sq = r->sq;
 	for (int32_t blk = 0; blk < full; blk++) {
 		const int32_t x0 = blk * EDT_BLOCK;
 		most[blk] = edt_columns_block(up + 2 * x0, dn + x0, g + x0, sq + x0);
@@ -333,7 +333,7 @@ static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 			const uint16_t c = d < a ? d : a;
 			dn[x] = d;
 			g[x] = c;
-			sq[x] = (int16_t)(c < EDT_WINDOW_BOUND ? c * c : EDT_CLIP);
+			sq[x] = (uint16_t)(c < EDT_WINDOW_BOUND ? c * c : EDT_CLIP);
 			m = c > m ? c : m;
 		}
 		most[full] = m;
@@ -355,7 +355,7 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 	edt_columns(r, up);
 	const int32_t w = r->w, blocks = r->blocks;
 	const uint16_t *restrict g = r->g;
-	const int16_t *restrict sq = r->sq;
+	const uint16_t *restrict sq = r->sq;
 	int32_t *restrict bound = r->bound;
 	int32_t largest = 0;
 	int32_t run = -1, run_reach = 0; /* the first block of a run for the envelope */
@@ -396,9 +396,9 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 		}
 		if (blk == blocks)
 			break;
-		int16_t best[EDT_BLOCK];
+		uint16_t best[EDT_BLOCK];
 		edt_window(sq, x0, b > 0 ? b - 1 : 0, best);
-		int16_t most = 0;
+		uint16_t most = 0;
 		for (int i = 0; i < EDT_BLOCK; i++)
 			most = best[i] > most ? best[i] : most;
 		bound[blk] = most;
@@ -436,7 +436,7 @@ static int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count
 	EdtRow r = {.w = w, .blocks = (w + EDT_BLOCK - 1) / EDT_BLOCK};
 	const size_t wb = (size_t)r.blocks * EDT_BLOCK;
 	uint16_t *gmem = util_alloc(wb + 2, sizeof *gmem);
-	int16_t *sqmem = util_alloc(wb + 2 * EDT_PAD, sizeof *sqmem);
+	uint16_t *sqmem = util_alloc(wb + 2 * EDT_PAD, sizeof *sqmem);
 	memset(gmem, 0, (wb + 2) * sizeof *gmem);
 	memset(sqmem, 0, (wb + 2 * EDT_PAD) * sizeof *sqmem);
 	r.g = gmem + 1;
