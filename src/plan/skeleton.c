@@ -6,15 +6,20 @@
  *    computing distance transforms in linear time" (Mathematical Morphology and its
  *    Applications to Image and Signal Processing, 2000). Phase 1 finds, for every cell,
  *    the distance g to the nearest blocked cell in its column: one pass down the grid
- *    (the distance to the blocked cell above, 16 bits a cell, four columns at once in
- *    a 64-bit word), then one pass up that takes the distance below and the minimum
- *    and hands each row at once to phase 2, which takes the lower envelope of the
- *    parabolas (x - u)^2 + g(u)^2 along the row, found as in Felzenszwalb and
- *    Huttenlocher ("Distance transforms of sampled functions", Theory of Computing 8,
- *    2012) but with exact integer comparisons in place of divisions; a blocked cell
- *    is one more parabola, with g = 0. The cells just outside the grid are blocked:
- *    phase 1 starts each column at distance 1 from the rows -1 and h, and phase 2 has
- *    a blocked column at -1 and at w.
+ *    (the distance to the blocked cell above, 16 bits a cell), then one pass up that
+ *    takes the distance below and the minimum and hands each row at once to phase 2:
+ *    dist2(x) = min over the columns u of (x - u)^2 + g(u)^2. Phase 2 goes by blocks of
+ *    32 cells. A block whose cells are all near a blocked cell (a bound b from g and
+ *    from the row below, see edt_row) takes the minimum over the window |x - u| < b
+ *    directly, one offset for the 32 cells at once in 16-bit lanes; the others, far
+ *    from every blocked cell, take the lower envelope of the parabolas, as in
+ *    Felzenszwalb and Huttenlocher ("Distance transforms of sampled functions", Theory
+ *    of Computing 8, 2012) but with exact integer comparisons in place of divisions,
+ *    over the columns in their reach. A blocked cell is one more column, with g = 0.
+ *    The cells just outside the grid are blocked: phase 1 starts each column at
+ *    distance 1 from the rows -1 and h, and phase 2 has a blocked column at -1 and w.
+ *    The loops over a block have a fixed count, which compilers vectorise at -O2;
+ *    on x86-64 Linux the row pass is also compiled for AVX2 and chosen at load time.
  * 2. Thinning: distance-ordered homotopic thinning (Pudney, "Distance-ordered homotopic
  *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
  *    here in 2D with the (4, 8) topology. Free cells are visited in order of
@@ -50,10 +55,13 @@
  *    order and a stack (4 bytes a cell each; the stack holds the transform's 2 bytes a
  *    cell of column distances before the thinning uses it), and the counting-sort
  *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
- *    quarter of the cells). skeleton_edt alone allocates its 2 bytes a cell.
+ *    quarter of the cells). skeleton_edt alone keeps them in dist2's first half; the
+ *    transform's other scratch is a few arrays of one row.
  *
- * COMPLEXITY  O(w h): the transform is two passes down the columns and two along
- *    the rows; the sort is two passes;
+ * COMPLEXITY  O(w h) but for the windows: the transform is one pass down the grid and
+ *    one up, each row's envelope pushing each column at most once; a window block
+ *    costs b offsets (b <= 181), each two loads, an addition and two minima for its
+ *    32 cells; the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
  *    a free cell on the benchmark grids); pruning walks each branch once.
  *
@@ -73,21 +81,24 @@
  *    15-34 times for 16 times the cells: the visits of the 4096 grids miss the cache
  *    (state, 17 MB, no longer fits), most on the random rectangles, whose many
  *    distance levels each sweep the whole grid.
- *    The transform (the same values) went, on the 1024 grids, from 130, 115 and 104
- *    million instructions (rooms, rects, maze; valgrind --tool=cachegrind) to 80,
- *    80 and 80, and its mispredicted branches (cachegrind's model) on the maze from
- *    627 000 to 522 000; in thread CPU time, best of 21 alternating with the former
- *    code in one process on the loaded machine, rooms 8.5 -> 6.1 ms, rects 7.8 ->
- *    6.5, maze 7.6 -> 7.0, Boston_0_1024 9.2 -> 7.4, but den520d 5.5 -> 6.0 (much
- *    of it blocked: the former code skipped blocked cells, the envelope now takes
- *    each as a parabola). Of that, the 16-bit four-lane phase 1 took 25 million
- *    instructions to 12 (at -O3, where GCC vectorises it, phase 1 is 3 times faster
- *    than the scalar loop); the envelope without runs and with each entry's
- *    differences kept, 26 to 17 in the test. A one-step advance without a branch in
- *    the envelope's sweep cut the maze's mispredictions to 318 000 but was 10-30%
- *    slower (the select lengthens the sweep's chain of dependences); not kept. What
- *    is left is the envelope's two data-dependent branches (pop, advance), which on
- *    the maze's rows of short runs mispredict about once in two cells.
+ *    The transform (the same values throughout): from the former code's envelope over
+ *    whole rows (one data-dependent branch mispredicted about every two cells) to the
+ *    windows, valgrind counts (exact; bench driver, one transform) of 82.4, 82.7,
+ *    82.3, 82.5 and 82.1 million instructions on the 1024 grids rooms, rects, maze,
+ *    Boston_0_1024 and den520d fell to 18.7, 19.1, 12.4, 21.7 and 18.0 (11.8 to 20.7
+ *    a cell). Each step, in thread CPU time against the code before it in one process
+ *    (best of 5 to 15, on the loaded machine): the windows in 16-cell blocks with the
+ *    SSE2 build, 1.7-2.6 times faster; an AVX2 clone with the window's copy taken
+ *    into its loop (it had stalled on store forwarding), two offsets a turn and the
+ *    bounds in a loop of their own, 1.2-1.5 more; phase 1 kept in dist2 instead of a
+ *    grid-sized allocation, 1.4 at 4096 (a page fault every 4 KB before); 32-cell
+ *    blocks, 1.2-1.4 (half the loop exits; the SSE2 build alone is 0.8-1.07 as fast
+ *    with them); unsigned lanes taking bounds to 181, 1.04-1.1 at 4096. Tried and
+ *    not kept: 64-cell blocks and four offsets a turn (slower: lanes kept in
+ *    memory), a switch to the envelope at bounds 48 or 72 (1.1-1.4 slower: the
+ *    envelope's mispredictions cost more than long windows), AVX2 for phase 1 too
+ *    (no change). Against OpenCV (cv2.distanceTransform, DIST_L2, DIST_MASK_PRECISE,
+ *    one thread; FIGURES_1024). At 4096: FIGURES_4096.
  *    The visit's neighbourhood masks written out (thinner_visit) took the skeleton,
  *    transform included, from 23.0, 22.7 and 23.0 ms to 21.9, 20.5 and 21.9 (rooms,
  *    rects, maze; `skelbench 5 1024`, the two builds alternating, loaded machine). */
@@ -110,27 +121,33 @@
  * (the larger over its cells) is at most EDT_WINDOW_BOUND is done by the window:
  * min over k < b of g(x - k)^2 + k^2 and g(x + k)^2 + k^2, one k for all the cells
  * of the block at once, in 16-bit lanes (EDT_BLOCK of them: plain C loops of a fixed
- * count, which GCC and Clang vectorise at -O2). Other blocks, where some cell is far
- * from every blocked cell (large open space), take the lower envelope (edt_envelope)
- * over just the columns their window reaches. On the benchmark grids the bound of a
- * block is on average 1 (maze) to about 20 (Boston_0_1024), while the envelope's
- * per-cell cost is that of a window of about 40 to 80 offsets. */
+ * count, which GCC and Clang vectorise at -O2; 32 cells are two AVX2 vectors). Other
+ * blocks, where some cell may be farther than EDT_WINDOW_BOUND from every blocked
+ * cell (large open space), take the lower envelope (edt_envelope_push, _sweep) over
+ * just the columns their window reaches. On the 1024 benchmark grids the bound of a
+ * block is on average about 1 (maze) to 21 (Boston_0_1024); even at the largest
+ * bound a window costs less time than the envelope, whose pops mispredict (a switch
+ * at 48 or 72 was slower: see MEASURED above), so the bound is as large as the lanes
+ * allow. */
 #define EDT_BLOCK 32
-#define EDT_STEP 4
 #define EDT_WINDOW_BOUND 181
-/* g^2 in 16 bits, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window block every
- * answer is at most EDT_CLIP, so a clipped term, still >= EDT_CLIP, cannot come below
- * the answer, nor wrongly reach it (the term that reaches it is then g^2 = EDT_CLIP
- * itself). EDT_CLIP + (EDT_WINDOW_BOUND - 1)^2 < 2^15: no lane overflows. */
+/* g^2 in unsigned 16-bit lanes, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window
+ * block every answer is at most EDT_CLIP, so a clipped term, still >= EDT_CLIP, cannot
+ * come below the answer, nor wrongly reach it (the term that reaches it is then g^2 =
+ * EDT_CLIP itself). The window's loop takes two offsets a turn, so k reaches
+ * EDT_WINDOW_BOUND at most (one past a reach of EDT_WINDOW_BOUND - 1: a term of
+ * the minimum all the same), and EDT_CLIP + EDT_WINDOW_BOUND^2 < 2^16: no lane
+ * overflows. */
 #define EDT_CLIP (EDT_WINDOW_BOUND * EDT_WINDOW_BOUND)
-_Static_assert(EDT_CLIP + (EDT_WINDOW_BOUND - 1) * (EDT_WINDOW_BOUND - 1) <= UINT16_MAX,
+_Static_assert(EDT_CLIP + EDT_WINDOW_BOUND * EDT_WINDOW_BOUND <= UINT16_MAX,
                "the window's 16-bit lanes must not overflow");
 /* The 16-bit squares are kept with this many zero columns on either side, so that a
- * window never reads outside; a zero outside the grid stands for a blocked column,
- * which changes nothing beyond columns -1 and w (those are nearer). */
+ * window (k <= EDT_WINDOW_BOUND) never reads outside; a zero outside the grid stands
+ * for a blocked column, which changes nothing beyond columns -1 and w (those are
+ * nearer). */
 #define EDT_PAD EDT_WINDOW_BOUND
 
-/* The envelope (edt_envelope) keeps its first column at the bottom of its stack for
+/* The envelope (edt_envelope_push) keeps its first column at the bottom of its stack for
  * good (as in Felzenszwalb and Huttenlocher, where z[0] = -infinity): that entry's
  * differences make the drop test false, EDT_NEVER * (u - t) being below any
  * (F(u) - F(t)) (|F| < 2^31, columns less than 2^16 apart). Above the top lies a
@@ -139,7 +156,7 @@ _Static_assert(EDT_CLIP + (EDT_WINDOW_BOUND - 1) * (EDT_WINDOW_BOUND - 1) <= UIN
 #define EDT_NEVER (-((int64_t)1 << 40))
 #define EDT_ABOVE 0x40000000
 
-/* The envelope's stack (see edt_envelope), w + 4 entries a field. */
+/* The envelope's stack (see edt_envelope_push), w + 4 entries a field. */
 typedef struct EdtStack {
 	int32_t *u, *G, *L; /* column, its g^2, its distance from the entry below */
 	int64_t *F, *D;     /* F = u^2 + G, and F less the entry below's F */
@@ -226,6 +243,8 @@ static void edt_envelope_sweep(const EdtStack *v, EdtCursor *c, int32_t x0, int3
 	c->k = k;
 }
 
+/* edt_window_step(at, k, best): best[i] = min(best[i], at[i - k] + k^2, at[i + k] + k^2)
+ * for the cells of a block. */
 static inline void edt_window_step(const uint16_t *restrict at, int32_t k, uint16_t *restrict best)
 {
 	const uint16_t kk = (uint16_t)(k * k);
@@ -237,8 +256,9 @@ static inline void edt_window_step(const uint16_t *restrict at, int32_t k, uint1
 	}
 }
 
-/* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach of sq[x0 + i + k] +
- * k^2 (sq: the row's clipped squares, padded). */
+/* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach (or reach + 1: two
+ * offsets a turn, half the loop's branches) of sq[x0 + i + k] + k^2 (sq: the row's
+ * clipped squares, padded). */
 static inline void edt_window(const uint16_t *restrict sq, int32_t x0, int32_t reach,
                               uint16_t *restrict best)
 {
@@ -264,7 +284,7 @@ static inline int32_t edt_ceil_sqrt(int32_t m)
 /* The scratch of phase 2, O(w). */
 typedef struct EdtRow {
 	uint16_t *g;    /* the row's column distances, g[-1] and g[w .. wb] 0 */
-	uint16_t *sq;    /* min(g^2, EDT_CLIP), EDT_PAD zeros either side */
+	uint16_t *sq;   /* min(g^2, EDT_CLIP), EDT_PAD zeros either side */
 	uint16_t *dn;   /* per column: the distance to the blocked cell below */
 	int32_t *bound; /* per block: the largest answer of the row done last */
 	uint16_t *most; /* per block: the largest g */
@@ -303,7 +323,7 @@ static inline void edt_down_block(const uint8_t *restrict cells,
 	uint16_t prev[EDT_BLOCK], row[EDT_BLOCK];
 	memcpy(prev, prev_bytes, sizeof prev);
 	for (int i = 0; i < EDT_BLOCK; i++) {
-		const uint16_t free_mask = (uint16_t)-(uint16_t)(cells[i] == GRID_FREE);
+		const uint16_t free_mask = (uint16_t)(0u - (cells[i] == GRID_FREE));
 		row[i] = (uint16_t)((prev[i] + 1) & free_mask);
 	}
 	memcpy(row_bytes, row, sizeof row);

@@ -121,7 +121,8 @@ static bool edt_matches_sparse(const Grid *g)
 TEST_CASE(edt_equals_brute_force_on_wide_open_grids)
 {
 	oracle_seed = 7;
-	int sizes[][3] = {{700, 420, 3}, {391, 400, 12}, {333, 17, 40}, {5, 600, 40}, {600, 400, 0}};
+	int sizes[][3] = {
+	    {700, 420, 3}, {391, 400, 12}, {333, 17, 40}, {5, 600, 40}, {600, 400, 0}};
 	for (int k = 0; k < 5; k++) {
 		Grid g;
 		grid_init(&g, sizes[k][0], sizes[k][1], GRID_FREE);
