@@ -97,8 +97,17 @@
  *    not kept: 64-cell blocks and four offsets a turn (slower: lanes kept in
  *    memory), a switch to the envelope at bounds 48 or 72 (1.1-1.4 slower: the
  *    envelope's mispredictions cost more than long windows), AVX2 for phase 1 too
- *    (no change). Against OpenCV (cv2.distanceTransform, DIST_L2, DIST_MASK_PRECISE,
- *    one thread; FIGURES_1024). At 4096: FIGURES_4096.
+ *    (no change); a narrower window where the columns around have large g (a least
+ *    g a block; 1.1-1.4 slower everywhere). Against OpenCV (cv2.distanceTransform,
+ *    DIST_L2, DIST_MASK_PRECISE, one thread), `make bench-compare SIDE=1024`, one run,
+ *    medians: rooms, rects, maze, Boston_0_1024, den520d at 1024 took 1.42, 1.39, 1.16,
+ *    1.63 and 1.37 ms (3-5 read passes of the grid), OpenCV 14.9, 11.0, 11.4, 12.9 and
+ *    9.7: 10.5, 7.9, 9.8, 7.9 and 7.1 times faster. At 4096 (medians of 5, utak timed
+ *    before and after OpenCV's 7 in one session): 22.5-23.7, 23.6, 17.6-18.9, 47.3-52.0
+ *    and 40.2-41.0 ms against 213, 215, 238, 198 and 180: 9.0-9.4, 9.1, 12.6-13.5,
+ *    3.8-4.2 and 4.4-4.5 times. The scaled maps at 4096 miss the issue's 5: their
+ *    open spaces are 4 times as wide, so their windows 4 times as long (or past 181,
+ *    the envelope): the windows' cost grows with the clearance, not only the cells.
  *    The visit's neighbourhood masks written out (thinner_visit) took the skeleton,
  *    transform included, from 23.0, 22.7 and 23.0 ms to 21.9, 20.5 and 21.9 (rooms,
  *    rects, maze; `skelbench 5 1024`, the two builds alternating, loaded machine). */
