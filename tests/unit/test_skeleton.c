@@ -72,6 +72,74 @@ TEST_CASE(edt_all_free_all_blocked_and_thin_grids)
 	grid_free(&g);
 }
 
+/* edt_matches_sparse(g): as edt_matches_brute, for grids too large for it: the
+ * oracle scans a list of the blocked cells of the grid that have a free 4-neighbour
+ * (a blocked cell with none is never nearest: one of its 4-neighbours, blocked too,
+ * is nearer to any free cell), and takes the ring outside the grid, a whole
+ * rectangle, at its perpendicular distance. */
+static bool edt_matches_sparse(const Grid *g)
+{
+	int32_t *d = malloc(sizeof(int32_t) * (size_t)(g->w * g->h + 1));
+	int *bx = malloc(sizeof(int) * (size_t)(g->w * g->h + 1));
+	int *by = malloc(sizeof(int) * (size_t)(g->w * g->h + 1));
+	int nb = 0;
+	for (int y = 0; y < g->h; y++)
+		for (int x = 0; x < g->w; x++)
+			if (!grid_free_at(g, x, y) &&
+			    (grid_free_at(g, x - 1, y) || grid_free_at(g, x + 1, y) ||
+			     grid_free_at(g, x, y - 1) || grid_free_at(g, x, y + 1))) {
+				bx[nb] = x;
+				by[nb++] = y;
+			}
+	int32_t largest = skeleton_edt(g, d), brute_largest = 0;
+	bool ok = true;
+	for (int y = 0; y < g->h && ok; y++)
+		for (int x = 0; x < g->w && ok; x++) {
+			int ring = x + 1;
+			ring = y + 1 < ring ? y + 1 : ring;
+			ring = g->w - x < ring ? g->w - x : ring;
+			ring = g->h - y < ring ? g->h - y : ring;
+			int32_t best = grid_free_at(g, x, y) ? ring * ring : 0;
+			for (int k = 0; k < nb && best > 0; k++) {
+				int32_t e = (bx[k] - x) * (bx[k] - x) + (by[k] - y) * (by[k] - y);
+				best = e < best ? e : best;
+			}
+			ok = d[y * g->w + x] == best;
+			brute_largest = best > brute_largest ? best : brute_largest;
+		}
+	free(d);
+	free(bx);
+	free(by);
+	return ok && largest == brute_largest;
+}
+
+/* Open spaces wider than the transform's windows (skeleton.c: blocks of cells that may
+ * be more than 181 from every blocked cell go by the lower envelope), next to narrow
+ * places, on grids of widths that are and are not a multiple of its blocks of 32; and
+ * a cell whose nearest blocked cell is far along its row: (100, 200) for the cells
+ * about (290, 200) of a free 600 x 400 grid, nearer than the border. */
+TEST_CASE(edt_equals_brute_force_on_wide_open_grids)
+{
+	oracle_seed = 7;
+	int sizes[][3] = {
+	    {700, 420, 3}, {391, 400, 12}, {333, 17, 40}, {5, 600, 40}, {600, 400, 0}};
+	for (int k = 0; k < 5; k++) {
+		Grid g;
+		grid_init(&g, sizes[k][0], sizes[k][1], GRID_FREE);
+		for (int i = 0; i < sizes[k][2]; i++) {
+			int x0 = oracle_rand_below(g.w), y0 = oracle_rand_below(g.h);
+			int rw = 1 + oracle_rand_below(12), rh = 1 + oracle_rand_below(12);
+			for (int y = y0; y < y0 + rh && y < g.h; y++)
+				for (int x = x0; x < x0 + rw && x < g.w; x++)
+					g.cells[y * g.w + x] = GRID_BLOCKED;
+		}
+		if (sizes[k][2] == 0)
+			g.cells[200 * g.w + 100] = GRID_BLOCKED;
+		TEST_CHECK(edt_matches_sparse(&g));
+		grid_free(&g);
+	}
+}
+
 /* topology_matches(g, s): per free 4-component, exactly one skeleton 4-component,
  * and the same number of holes (each counted on that component alone). */
 static bool topology_matches(const Grid *g, const Skeleton *s)
@@ -350,6 +418,7 @@ int main(void)
 {
 	TEST_RUN(edt_equals_brute_force_on_random_grids);
 	TEST_RUN(edt_all_free_all_blocked_and_thin_grids);
+	TEST_RUN(edt_equals_brute_force_on_wide_open_grids);
 	TEST_RUN(skeleton_topology_on_random_grids);
 	TEST_RUN(skeleton_2x2_blocks_only_pinwheels);
 	TEST_RUN(skeleton_ring_has_one_loop_and_clearance);
