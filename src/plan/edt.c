@@ -1,0 +1,480 @@
+/* edt.c - the exact distance transform of a grid (paper 4.2: the clearance the
+ * skeleton is the ridge of), squared Euclidean, in integers: skeleton_edt, and
+ * skeleton_edt_count, which also gathers the histogram skeleton.c's counting sort needs.
+ *
+ * ALGORITHM
+ *    Meijster, Roerdink and Hesselink, "A general algorithm for
+ *    computing distance transforms in linear time" (Mathematical Morphology and its
+ *    Applications to Image and Signal Processing, 2000). Phase 1 finds, for every cell,
+ *    the distance g to the nearest blocked cell in its column: one pass down the grid
+ *    (the distance to the blocked cell above, 16 bits a cell), then one pass up that
+ *    takes the distance below and the minimum and hands each row at once to phase 2:
+ *    dist2(x) = min over the columns u of (x - u)^2 + g(u)^2. Phase 2 goes by blocks of
+ *    32 cells. A block whose cells are all near a blocked cell (a bound b from g and
+ *    from the row below, see edt_row) takes the minimum over the window |x - u| < b
+ *    directly, one offset for the 32 cells at once in 16-bit lanes; the others, far
+ *    from every blocked cell, take the lower envelope of the parabolas, as in
+ *    Felzenszwalb and Huttenlocher ("Distance transforms of sampled functions", Theory
+ *    of Computing 8, 2012) but with exact integer comparisons in place of divisions,
+ *    over the columns in their reach. A blocked cell is one more column, with g = 0.
+ *    The cells just outside the grid are blocked: phase 1 starts each column at
+ *    distance 1 from the rows -1 and h, and phase 2 has a blocked column at -1 and w.
+ *    The loops over a block have a fixed count, which compilers vectorise at -O2;
+ *    on x86-64 Linux the row pass is also compiled for AVX2 and chosen at load time.
+ *
+ * MEMORY  dist2 (4 bytes a cell); phase 1's column distances (2 bytes a cell) in the
+ *    caller's scratch, or in dist2's own first half; a few arrays of one row.
+ *
+ * COMPLEXITY  O(w h) but for the windows: one pass down the grid and one up, each
+ *    row's envelope pushing each column at most once; a window block costs b offsets
+ *    (b <= 181), each two loads, an addition and two minima for its 32 cells.
+ *
+ * MEASURED  (issue 16; thread CPU time on this 2-core machine, shared, so +-15%;
+ *    `make bench-compare` for the table against the peers)
+ *    The transform (the same values throughout): from the former code's envelope over
+ *    whole rows (one data-dependent branch mispredicted about every two cells) to the
+ *    windows, valgrind counts (exact; bench driver, one transform) of 82.4, 82.7,
+ *    82.3, 82.5 and 82.1 million instructions on the 1024 grids rooms, rects, maze,
+ *    Boston_0_1024 and den520d fell to 18.7, 19.1, 12.4, 21.7 and 18.0 (11.8 to 20.7
+ *    a cell). Each step, in thread CPU time against the code before it in one process
+ *    (best of 5 to 15, on the loaded machine): the windows in 16-cell blocks with the
+ *    SSE2 build, 1.7-2.6 times faster; an AVX2 clone with the window's copy taken
+ *    into its loop (it had stalled on store forwarding), two offsets a turn and the
+ *    bounds in a loop of their own, 1.2-1.5 more; phase 1 kept in dist2 instead of a
+ *    grid-sized allocation, 1.4 at 4096 (a page fault every 4 KB before); 32-cell
+ *    blocks, 1.2-1.4 (half the loop exits; the SSE2 build alone is 0.8-1.07 as fast
+ *    with them); unsigned lanes taking bounds to 181, 1.04-1.1 at 4096. Tried and
+ *    not kept: 64-cell blocks and four offsets a turn (slower: lanes kept in
+ *    memory), a switch to the envelope at bounds 48 or 72 (1.1-1.4 slower: the
+ *    envelope's mispredictions cost more than long windows), AVX2 for phase 1 too
+ *    (no change), an AVX-512 clone (x86-64-v4: no change); a narrower window where
+ *    the columns around have large g (a least g a block; 1.1-1.4 slower everywhere). Against OpenCV (cv2.distanceTransform,
+ *    DIST_L2, DIST_MASK_PRECISE, one thread), `make bench-compare SIDE=1024`, one run,
+ *    medians: rooms, rects, maze, Boston_0_1024, den520d at 1024 took 1.42, 1.39, 1.16,
+ *    1.63 and 1.37 ms (3-5 read passes of the grid), OpenCV 14.9, 11.0, 11.4, 12.9 and
+ *    9.7: 10.5, 7.9, 9.8, 7.9 and 7.1 times faster. At 4096 (medians of 5, utak timed
+ *    before and after OpenCV's 7 in one session): 22.5-23.7, 23.6, 17.6-18.9, 47.3-52.0
+ *    and 40.2-41.0 ms against 213, 215, 238, 198 and 180: 9.0-9.4, 9.1, 12.6-13.5,
+ *    3.8-4.2 and 4.4-4.5 times. The scaled maps at 4096 miss the issue's 5: their
+ *    open spaces are 4 times as wide, so their windows 4 times as long (or past 181,
+ *    the envelope): the windows' cost grows with the clearance, not only the cells. */
+#include "edt_work.h"
+
+#include <assert.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/util.h"
+#include "utak/plan/skeleton.h"
+
+/* ---------------------------------------------------------------- distance transform */
+
+/* Phase 2 takes each row in blocks of EDT_BLOCK cells. For a cell x of the row, no
+ * column u with (x - u)^2 >= b^2 can come strictly below a bound b^2 >= dist2(x), so
+ * the minimum lies within |x - u| < b: a window. Two bounds are at hand, g(x) itself
+ * and the row below's answer D': the nearest blocked cell of (x, y + 1) is at most
+ * 1 farther from (x, y), so b = min(g(x), ceil(sqrt(D')) + 1). A block whose bound
+ * (the larger over its cells) is at most EDT_WINDOW_BOUND is done by the window:
+ * min over k < b of g(x - k)^2 + k^2 and g(x + k)^2 + k^2, one k for all the cells
+ * of the block at once, in 16-bit lanes (EDT_BLOCK of them: plain C loops of a fixed
+ * count, which GCC and Clang vectorise at -O2; 32 cells are two AVX2 vectors). Other
+ * blocks, where some cell may be farther than EDT_WINDOW_BOUND from every blocked
+ * cell (large open space), take the lower envelope (edt_envelope_push, _sweep) over
+ * just the columns their window reaches. On the 1024 benchmark grids the bound of a
+ * block is on average about 1 (maze) to 21 (Boston_0_1024); even at the largest
+ * bound a window costs less time than the envelope, whose pops mispredict (a switch
+ * at 48 or 72 was slower: see MEASURED above), so the bound is as large as the lanes
+ * allow. */
+#define EDT_BLOCK 32
+#define EDT_WINDOW_BOUND 181
+/* g^2 in unsigned 16-bit lanes, clipped at EDT_CLIP = EDT_WINDOW_BOUND^2: in a window
+ * block every answer is at most EDT_CLIP, so a clipped term, still >= EDT_CLIP, cannot
+ * come below the answer, nor wrongly reach it (the term that reaches it is then g^2 =
+ * EDT_CLIP itself). The window's loop takes two offsets a turn, so k reaches
+ * EDT_WINDOW_BOUND at most (one past a reach of EDT_WINDOW_BOUND - 1: a term of
+ * the minimum all the same), and EDT_CLIP + EDT_WINDOW_BOUND^2 < 2^16: no lane
+ * overflows. */
+#define EDT_CLIP (EDT_WINDOW_BOUND * EDT_WINDOW_BOUND)
+_Static_assert(EDT_CLIP + EDT_WINDOW_BOUND * EDT_WINDOW_BOUND <= UINT16_MAX,
+               "the window's 16-bit lanes must not overflow");
+/* The 16-bit squares are kept with this many zero columns on either side, so that a
+ * window (k <= EDT_WINDOW_BOUND) never reads outside; a zero outside the grid stands
+ * for a blocked column, which changes nothing beyond columns -1 and w (those are
+ * nearer). */
+#define EDT_PAD EDT_WINDOW_BOUND
+
+/* The envelope (edt_envelope_push) keeps its first column at the bottom of its stack for
+ * good (as in Felzenszwalb and Huttenlocher, where z[0] = -infinity): that entry's
+ * differences make the drop test false, EDT_NEVER * (u - t) being below any
+ * (F(u) - F(t)) (|F| < 2^31, columns less than 2^16 apart). Above the top lies a
+ * parabola EDT_ABOVE + x^2, never lower than the last real column, which is at most
+ * (SKELETON_MAX_SIDE + 1)^2 < EDT_ABOVE at any cell (and EDT_ABOVE + x^2 < 2^31). */
+#define EDT_NEVER (-((int64_t)1 << 40))
+#define EDT_ABOVE 0x40000000
+
+/* The envelope's stack (see edt_envelope_push), w + 4 entries a field. */
+typedef struct EdtStack {
+	int32_t *u, *G, *L; /* column, its g^2, its distance from the entry below */
+	int64_t *F, *D;     /* F = u^2 + G, and F less the entry below's F */
+} EdtStack;
+
+/* The lower envelope of the parabolas (x - u)^2 + g[u]^2 of the columns u pushed so
+ * far (Meijster et al., Felzenszwalb and Huttenlocher; a blocked cell is one more
+ * column, with g = 0). With F(u) = u^2 + g(u)^2 the parabola of column u at x is
+ * F(u) - 2 u x + x^2, and two parabolas a < b cross at (F(b) - F(a)) / (2 (b - a)).
+ * The envelope's columns are kept on a stack; the top t is dropped when the new
+ * column u crosses it no later than t crosses the one below (cross multiplied in 64
+ * bits: exact, and no division); each entry keeps its differences from the one below,
+ * so the test is two multiplications of values already loaded. A sweep reads the
+ * envelope: the entry lowest at x moves right as x does, and the next one is compared
+ * by value (32 bits). One row's runs of blocks share one stream of columns, pushed
+ * left to right, each column once: a run pushes the columns in its reach not pushed
+ * yet, then sweeps its cells; columns pushed for an earlier run are valid candidates
+ * too. A push that drops the entry the sweep stands on leaves that cell's place to
+ * the new top (the dropped entry was lowest only right of where the new one is). */
+typedef struct EdtCursor {
+	int32_t top;  /* the stack's top entry, -1 when empty */
+	int32_t k;    /* the entry lowest at the last cell swept */
+	int32_t last; /* the last column pushed */
+} EdtCursor;
+
+/* edt_envelope_push(v, c, g, a, z): pushes the columns a..z not pushed yet (g is
+ * read there; -1 <= a, z <= w, g[-1] = g[w] = 0: the blocked columns outside the
+ * grid); a gap after the last column pushed starts the stack afresh. */
+static void edt_envelope_push(const EdtStack *v, EdtCursor *c, const uint16_t *restrict g,
+                              int32_t a, int32_t z)
+{
+	int32_t *restrict vu = v->u, *restrict vG = v->G, *restrict vL = v->L;
+	int64_t *restrict vF = v->F, *restrict vD = v->D;
+	int32_t top = c->top;
+	if (top < 0 || a > c->last + 1) {
+		top = 0;
+		c->k = 0;
+		vu[0] = a;
+		vG[0] = g[a] * g[a];
+		vF[0] = (int64_t)a * a + vG[0];
+		vL[0] = 1;
+		vD[0] = EDT_NEVER;
+		c->last = a;
+	}
+	for (int32_t u = c->last + 1; u <= z; u++) {
+		const int32_t gu = g[u];
+		const int32_t Gu = gu * gu;
+		const int64_t Fu = (int64_t)u * u + Gu;
+		/* the top is nowhere strictly lowest: cross(top, u) <= cross(below, top) */
+		while ((Fu - vF[top]) * vL[top] <= vD[top] * (u - vu[top]))
+			top--;
+		vD[top + 1] = Fu - vF[top];
+		vL[top + 1] = u - vu[top];
+		top++;
+		vu[top] = u;
+		vG[top] = Gu;
+		vF[top] = Fu;
+	}
+	c->last = z > c->last ? z : c->last;
+	c->top = top;
+	c->k = c->k < top ? c->k : top;
+	vu[top + 1] = 0;
+	vG[top + 1] = EDT_ABOVE;
+}
+
+/* edt_envelope_sweep(v, c, x0, x1, out): out[x] for x0 <= x < x1, past the cells
+ * swept before, from the envelope (every column within reach of them pushed). */
+static void edt_envelope_sweep(const EdtStack *v, EdtCursor *c, int32_t x0, int32_t x1,
+                               int32_t *restrict out)
+{
+	const int32_t *restrict vu = v->u, *restrict vG = v->G;
+	int32_t k = c->k;
+	for (int32_t x = x0; x < x1; x++) {
+		int32_t d = x - vu[k], e = x - vu[k + 1];
+		int32_t val = vG[k] + d * d, next = vG[k + 1] + e * e;
+		while (next <= val) {
+			k++;
+			val = next;
+			e = x - vu[k + 1];
+			next = vG[k + 1] + e * e;
+		}
+		out[x] = val;
+	}
+	c->k = k;
+}
+
+/* edt_window_step(at, k, best): best[i] = min(best[i], at[i - k] + k^2, at[i + k] + k^2)
+ * for the cells of a block. */
+static inline void edt_window_step(const uint16_t *restrict at, int32_t k, uint16_t *restrict best)
+{
+	const uint16_t kk = (uint16_t)(k * k);
+	const uint16_t *restrict left = at - k, *restrict right = at + k;
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		uint16_t m = left[i] < right[i] ? left[i] : right[i];
+		m = (uint16_t)(m + kk);
+		best[i] = m < best[i] ? m : best[i];
+	}
+}
+
+/* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach (or reach + 1: two
+ * offsets a turn, half the loop's branches) of sq[x0 + i + k] + k^2 (sq: the row's
+ * clipped squares, padded). */
+static inline void edt_window(const uint16_t *restrict sq, int32_t x0, int32_t reach,
+                              uint16_t *restrict best)
+{
+	const uint16_t *restrict at = sq + x0;
+	/* k = 0 inside the loop rather than a copy before it: the copy, two 16-byte
+	 * stores read back as one 32-byte vector under AVX2, stalled every block */
+	for (int i = 0; i < EDT_BLOCK; i++)
+		best[i] = UINT16_MAX;
+	for (int32_t k = 0; k <= reach; k += 2) {
+		edt_window_step(at, k, best);
+		edt_window_step(at, k + 1, best);
+	}
+}
+
+/* edt_ceil_sqrt(m): the least c with c^2 >= m (m >= 0; sqrt of a double is correctly
+ * rounded, so its floor is exact below 2^52). */
+static inline int32_t edt_ceil_sqrt(int32_t m)
+{
+	int32_t c = (int32_t)sqrt((double)m);
+	return (int64_t)c * c < m ? c + 1 : c;
+}
+
+/* The scratch of phase 2, O(w). */
+typedef struct EdtRow {
+	uint16_t *g;    /* the row's column distances, g[-1] and g[w .. wb] 0 */
+	uint16_t *sq;   /* min(g^2, EDT_CLIP), EDT_PAD zeros either side */
+	uint16_t *dn;   /* per column: the distance to the blocked cell below */
+	int32_t *bound; /* per block: the largest answer of the row done last */
+	uint16_t *most; /* per block: the largest g */
+	int32_t *reach; /* per block and one more: the bound b of the row being done */
+	EdtStack v;
+	int32_t w, blocks;
+} EdtRow;
+
+/* edt_columns_block(up, dn, g, sq): edt_columns on one block (the pointers at its
+ * first column); returns its largest g. */
+static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
+                                         uint16_t *restrict dn, uint16_t *restrict g,
+                                         uint16_t *restrict sq)
+{
+	uint16_t up[EDT_BLOCK];
+	memcpy(up, up_bytes, sizeof up);
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		const uint16_t d = up[i] ? (uint16_t)(dn[i] + 1) : 0;
+		dn[i] = d;
+		g[i] = d < up[i] ? d : up[i];
+	}
+	uint16_t m = 0;
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		sq[i] = (uint16_t)(g[i] < EDT_WINDOW_BOUND ? g[i] * g[i] : EDT_CLIP);
+		m = g[i] > m ? g[i] : m;
+	}
+	return m;
+}
+
+/* edt_down_block(cells, prev, row): phase 1 down the grid on one block: row = prev + 1
+ * on a free cell, else 0. */
+static inline void edt_down_block(const uint8_t *restrict cells,
+                                  const unsigned char *restrict prev_bytes,
+                                  unsigned char *restrict row_bytes)
+{
+	uint16_t prev[EDT_BLOCK], row[EDT_BLOCK];
+	memcpy(prev, prev_bytes, sizeof prev);
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		const uint16_t free_mask = (uint16_t)(0u - (cells[i] == GRID_FREE));
+		row[i] = (uint16_t)((prev[i] + 1) & free_mask);
+	}
+	memcpy(row_bytes, row, sizeof row);
+}
+
+/* edt_columns(r, up): the end of phase 1 for one row (up: its distances to the
+ * blocked cell above, 0 on a blocked cell): r->dn, the distance to the nearest
+ * blocked cell below (row h blocked), and r->g = min(up, dn), the column distance,
+ * with its clipped squares r->sq and each block's largest g. The loops over a block
+ * have a fixed count, so that compilers vectorise them at -O2 (GCC 12's cheap cost
+ * model takes only loops that need no scalar remainder). */
+static void edt_columns(EdtRow *r, const unsigned char *restrict up)
+{
+	const int32_t w = r->w, full = w / EDT_BLOCK;
+	uint16_t *restrict dn = r->dn, *restrict g = r->g, *restrict most = r->most;
+	uint16_t *restrict sq = r->sq;
+	for (int32_t blk = 0; blk < full; blk++) {
+		const int32_t x0 = blk * EDT_BLOCK;
+		most[blk] = edt_columns_block(up + 2 * x0, dn + x0, g + x0, sq + x0);
+	}
+	if (full * EDT_BLOCK < w) {
+		uint16_t m = 0;
+		for (int32_t x = full * EDT_BLOCK; x < w; x++) {
+			uint16_t a;
+			memcpy(&a, up + 2 * x, sizeof a);
+			const uint16_t d = a ? (uint16_t)(dn[x] + 1) : 0;
+			const uint16_t c = d < a ? d : a;
+			dn[x] = d;
+			g[x] = c;
+			sq[x] = (uint16_t)(c < EDT_WINDOW_BOUND ? c * c : EDT_CLIP);
+			m = c > m ? c : m;
+		}
+		most[full] = m;
+	}
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define EDT_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define EDT_CLONES
+#endif
+
+/* edt_row(r, up, out): one row: its column distances from up, its distances above
+ * (edt_columns), then phase 2 into out (w values; up may lie in out's first half,
+ * read before out is written, hence no restrict); r->bound is read as the row below's
+ * and left as this row's. Returns the row's largest value. */
+EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *out)
+{
+	edt_columns(r, up);
+	const int32_t w = r->w, blocks = r->blocks;
+	const uint16_t *restrict g = r->g;
+	const uint16_t *restrict sq = r->sq;
+	int32_t *restrict bound = r->bound;
+	int32_t largest = 0;
+	int32_t run = -1, run_reach = 0; /* the first block of a run for the envelope */
+	EdtCursor cursor = {.top = -1};
+	/* the blocks' bounds first, in a loop of its own, where the square roots of
+	 * successive blocks overlap (in the loop below each waited for a branch) */
+	int32_t *restrict reach = r->reach;
+	for (int32_t blk = 0; blk < blocks; blk++) {
+		const int32_t c = edt_ceil_sqrt(bound[blk]) + 1;
+		reach[blk] = r->most[blk] < c ? r->most[blk] : c;
+	}
+	reach[blocks] = EDT_WINDOW_BOUND + 1; /* past the end: ends a run */
+	for (int32_t blk = 0; blk <= blocks; blk++) {
+		const int32_t x0 = blk * EDT_BLOCK;
+		const int32_t b = reach[blk];
+		if (b > EDT_WINDOW_BOUND && blk < blocks) {
+			run = run < 0 ? blk : run;
+			run_reach = b - 1 > run_reach ? b - 1 : run_reach;
+			continue;
+		}
+		if (run >= 0) {
+			/* the blocks run .. blk - 1, by the envelope of the columns in reach */
+			const int32_t r0 = run * EDT_BLOCK, r1 = x0 < w ? x0 : w;
+			const int32_t a = r0 - run_reach > -1 ? r0 - run_reach : -1;
+			const int32_t z = r1 - 1 + run_reach < w ? r1 - 1 + run_reach : w;
+			edt_envelope_push(&r->v, &cursor, g, a, z);
+			edt_envelope_sweep(&r->v, &cursor, r0, r1, out);
+			for (int32_t k = run; k < blk; k++) {
+				int32_t most = 0;
+				const int32_t e = (k + 1) * EDT_BLOCK < w ? (k + 1) * EDT_BLOCK : w;
+				for (int32_t x = k * EDT_BLOCK; x < e; x++)
+					most = out[x] > most ? out[x] : most;
+				bound[k] = most;
+				largest = most > largest ? most : largest;
+			}
+			run = -1;
+			run_reach = 0;
+		}
+		if (blk == blocks)
+			break;
+		uint16_t best[EDT_BLOCK];
+		edt_window(sq, x0, b > 0 ? b - 1 : 0, best);
+		uint16_t most = 0;
+		for (int i = 0; i < EDT_BLOCK; i++)
+			most = best[i] > most ? best[i] : most;
+		bound[blk] = most;
+		largest = most > largest ? most : largest;
+		const int n = w - x0 < EDT_BLOCK ? w - x0 : EDT_BLOCK;
+		if (n == EDT_BLOCK)
+			for (int i = 0; i < EDT_BLOCK; i++)
+				out[x0 + i] = best[i];
+		else
+			for (int i = 0; i < n; i++)
+				out[x0 + i] = best[i];
+	}
+	return largest;
+}
+
+/* skeleton_edt_count(g, dist2, count, up): skeleton_edt, also counting the free cells
+ * of each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
+ * histogram, gathered while the values are made rather than in a pass of its own).
+ * up is scratch of 2 w h bytes, or NULL to use dist2's own memory (see below). */
+int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint16_t *up)
+{
+	const int32_t w = gr->w, h = gr->h;
+	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
+	int32_t largest = 0;
+	if (w == 0 || h == 0)
+		return largest;
+	/* Phase 1's distances to the blocked cell above, 2 bytes a cell, are kept either
+	 * in up or in the first half of dist2: row k's at byte 2 w k, read (in row order
+	 * from the bottom) before the output of row y, which covers rows 2 y and 2 y + 1,
+	 * is written, and those are at or past y, so they have been read. No scratch the
+	 * size of the grid, hence no page faults for it on every call (32 MB at 4096).
+	 * They are stored and read through memcpy, so that no int32_t is accessed as a
+	 * uint16_t (the compilers turn the copies into plain vector loads and stores). */
+	unsigned char *above = up ? (unsigned char *)up : (unsigned char *)dist2;
+	EdtRow r = {.w = w, .blocks = (w + EDT_BLOCK - 1) / EDT_BLOCK};
+	const size_t wb = (size_t)r.blocks * EDT_BLOCK;
+	uint16_t *gmem = util_alloc(wb + 2, sizeof *gmem);
+	uint16_t *sqmem = util_alloc(wb + 2 * EDT_PAD, sizeof *sqmem);
+	memset(gmem, 0, (wb + 2) * sizeof *gmem);
+	memset(sqmem, 0, (wb + 2 * EDT_PAD) * sizeof *sqmem);
+	r.g = gmem + 1;
+	r.sq = sqmem + EDT_PAD;
+	r.dn = util_alloc(wb, sizeof *r.dn);
+	memset(r.dn, 0, wb * sizeof *r.dn); /* row h is blocked */
+	r.bound = util_alloc((size_t)r.blocks, sizeof *r.bound);
+	memset(r.bound, 0, (size_t)r.blocks * sizeof *r.bound);
+	r.most = util_alloc((size_t)r.blocks, sizeof *r.most);
+	r.reach = util_alloc((size_t)r.blocks + 1, sizeof *r.reach);
+	const size_t n = (size_t)w + 4;
+	r.v.u = util_alloc(n, sizeof *r.v.u);
+	r.v.G = util_alloc(n, sizeof *r.v.G);
+	r.v.L = util_alloc(n, sizeof *r.v.L);
+	r.v.F = util_alloc(n, sizeof *r.v.F);
+	r.v.D = util_alloc(n, sizeof *r.v.D);
+	/* Phase 1 down the grid, row by row so that the loops run along memory: up is the
+	 * distance along the column to the nearest blocked cell above (row -1 is
+	 * blocked), 0 on a blocked cell. Blocks of a fixed count, as in edt_columns. */
+	const int32_t w16 = w - w % EDT_BLOCK;
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *restrict c = gr->cells + (size_t)y * w;
+		unsigned char *restrict row = above + 2 * (size_t)y * w;
+		const unsigned char *restrict prev =
+		    y > 0 ? above + 2 * (size_t)(y - 1) * w : (const unsigned char *)r.dn;
+		for (int32_t x0 = 0; x0 < w16; x0 += EDT_BLOCK)
+			edt_down_block(c + x0, prev + 2 * x0, row + 2 * x0);
+		for (int32_t x = w16; x < w; x++) {
+			uint16_t a;
+			memcpy(&a, prev + 2 * x, sizeof a);
+			a = c[x] == GRID_FREE ? (uint16_t)(a + 1) : 0;
+			memcpy(row + 2 * x, &a, sizeof a);
+		}
+	}
+	/* Then up the grid, row by row: the column distances of a row (edt_columns), made
+	 * and used at once by the row pass (no second pass over the grid). */
+	for (int32_t y = h - 1; y >= 0; y--) {
+		int32_t *out = dist2 + (size_t)y * w;
+		const int32_t most = edt_row(&r, above + 2 * (size_t)y * w, out);
+		largest = most > largest ? most : largest;
+		if (count)
+			for (int32_t x = 0; x < w; x++)
+				count[out[x] + 1]++;
+	}
+	if (count)
+		count[1] = 0; /* the blocked cells, counted at 0 */
+	free(r.v.u);
+	free(r.v.G);
+	free(r.v.L);
+	free(r.v.F);
+	free(r.v.D);
+	free(r.bound);
+	free(r.most);
+	free(r.reach);
+	free(r.dn);
+	free(gmem);
+	free(sqmem);
+	return largest;
+}
+
+int32_t skeleton_edt(const Grid *g, int32_t *dist2)
+{
+	return skeleton_edt_count(g, dist2, NULL, NULL);
+}
