@@ -78,6 +78,9 @@
  * Empty buckets are skipped 64 at a time by the nonempty bits. */
 #define GRIDPATH_PAGE 4096
 #define GRIDPATH_WORDS (GRIDPATH_PAGE / 64)
+/* Plain A*'s ring (see gridpath.h): buckets per unit of f, and how many. */
+#define GRIDPATH_RING_PER_UNIT 64
+#define GRIDPATH_RING_WORDS (GRIDPATH_RING / 64)
 /* GridPathNode.from of a start: no step reached it. */
 #define GRIDPATH_NO_PARENT 8
 
@@ -180,6 +183,10 @@ void gridpath_free(GridPathSearch *s)
 		for (int i = 0; i < GRIDPATH_PAGE; i++)
 			free(s->bucket[i].e);
 	free(s->bucket);
+	if (s->ring)
+		for (int i = 0; i < GRIDPATH_RING; i++)
+			free(s->ring[i].e);
+	free(s->ring);
 	free(s->nonempty);
 	free(s->overflow);
 	free(s->stack);
@@ -321,6 +328,79 @@ static bool gridpath_pop(GridPathSearch *s, GridPathOpen *e)
 	else
 		s->nonempty[next / 64] &= ~((uint64_t)1 << (next % 64));
 	return true;
+}
+
+/* ------------------------------------------------------- plain A*'s open list
+ *
+ * A ring of GRIDPATH_RING buckets of f, GRIDPATH_RING_PER_UNIT to a unit: plain
+ * A* offers a neighbour at most 2 sqrt 2 above the f being expanded (a step of
+ * cost c changes h by at most c), so the open entries span less than 3 units and a
+ * ring of 4 units holds them all, with no overflow. The current bucket, ring_now,
+ * is a binary heap (made by Floyd's bottom-up build when the bucket becomes
+ * current); later buckets are unsorted arrays. */
+
+/* gridpath_ring_push(s, e): files e in the bucket of its f (never before ring_now:
+ * f never decreases, the clamp only guards rounding). */
+static inline void gridpath_ring_push(GridPathSearch *s, GridPathOpen e)
+{
+	const double rel = (e.f - s->f_start) * GRIDPATH_RING_PER_UNIT;
+	const int64_t b = rel < (double)s->ring_now ? s->ring_now : (int64_t)rel;
+	const unsigned slot = (unsigned)b & (GRIDPATH_RING - 1);
+	GridPathBucket *k = &s->ring[slot];
+	k->e = gridpath_room(k->e, k->count, &k->cap);
+	s->ring_bits[slot / 64] |= (uint64_t)1 << (slot % 64);
+	int i = k->count++;
+	if (b == s->ring_now) /* the current bucket: a heap */
+		for (; i > 0 && gridpath_before(&e, &k->e[(i - 1) / 2]); i = (i - 1) / 2)
+			k->e[i] = k->e[(i - 1) / 2];
+	k->e[i] = e;
+}
+
+/* gridpath_ring_pop(s, e): the first entry into *e; false when the list is empty. */
+static inline bool gridpath_ring_pop(GridPathSearch *s, GridPathOpen *e)
+{
+	unsigned slot = (unsigned)s->ring_now & (GRIDPATH_RING - 1);
+	GridPathBucket *k = &s->ring[slot];
+	if (k->count == 0) {
+		/* the next nonempty bucket, cyclically after slot */
+		unsigned next = GRIDPATH_RING;
+		for (unsigned w = 0; w <= GRIDPATH_RING_WORDS; w++) {
+			const unsigned word = (slot / 64 + w) % GRIDPATH_RING_WORDS;
+			uint64_t bits = s->ring_bits[word];
+			if (w == 0)
+				bits &= ~(uint64_t)0 << (slot % 64);
+			if (bits) {
+				next = word * 64 + (unsigned)gridpath_ctz64(bits);
+				break;
+			}
+		}
+		if (next == GRIDPATH_RING)
+			return false;
+		s->ring_now += (next - slot) & (GRIDPATH_RING - 1);
+		slot = next;
+		k = &s->ring[slot];
+		for (int i = k->count / 2 - 1; i >= 0; i--)
+			gridpath_sift_down(k->e, k->count, i, k->e[i]);
+	}
+	*e = k->e[0];
+	if (--k->count > 0)
+		gridpath_sift_down(k->e, k->count, 0, k->e[k->count]);
+	else
+		s->ring_bits[slot / 64] &= ~((uint64_t)1 << (slot % 64));
+	return true;
+}
+
+/* gridpath_ring_reset(s): an empty ring for a new query, bucket 0 current. */
+static void gridpath_ring_reset(GridPathSearch *s)
+{
+	if (!s->ring) {
+		s->ring = util_alloc(GRIDPATH_RING, sizeof *s->ring);
+		memset(s->ring, 0, GRIDPATH_RING * sizeof *s->ring);
+	}
+	for (unsigned i = 0; i < GRIDPATH_RING; i++)
+		s->ring[i].count = 0;
+	memset(s->ring_bits, 0, sizeof s->ring_bits);
+	s->ring_now = 0;
 }
 
 /* gridpath_open_reset(s): an empty open list for a new query. */
@@ -649,7 +729,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	GridPathNode *node = s->node;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
 
-	gridpath_open_reset(s);
+	gridpath_ring_reset(s);
 	node[start].mark = open_mark;
 	node[start].straight = node[start].diagonal = 0;
 	node[start].from = GRIDPATH_NO_PARENT;
@@ -657,7 +737,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		int32_t ax = abs(goal_x - (sx + 1)), ay = abs(goal_y - (sy + 1));
 		int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
 		s->f_start = gridpath_cost(hi - lo, lo);
-		gridpath_push(s, (GridPathOpen){s->f_start, 0, start});
+		gridpath_ring_push(s, (GridPathOpen){s->f_start, 0, start});
 	}
 	int64_t expanded = 0;
 	int found = 0;
@@ -666,7 +746,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	for (;;) {
 		if (s->stack_count > 0)
 			e = s->stack[--s->stack_count];
-		else if (!gridpath_pop(s, &e))
+		else if (!gridpath_ring_pop(s, &e))
 			break;
 		int32_t c = e.cell;
 		/* Stale entries need no test of their own: a cell's entries leave the heap
@@ -711,7 +791,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
 				s->stack[s->stack_count++] = ne;
 			} else
-				gridpath_push(s, ne);
+				gridpath_ring_push(s, ne);
 		}
 	}
 	path->expanded = expanded;

@@ -65,6 +65,9 @@ typedef struct GridPathOpen {
 	int32_t cell; /* index into the padded grid */
 } GridPathOpen;
 
+/* Buckets in plain A*'s ring (gridpath.c): a power of two. */
+#define GRIDPATH_RING 256
+
 /* One bucket of the open list (opaque, see below). */
 typedef struct GridPathBucket {
 	GridPathOpen *e;
@@ -104,6 +107,10 @@ typedef struct GridPathSearch {
 	 * list: they may be expanded next in any order, so they skip the heap. */
 	GridPathOpen *stack;
 	int stack_count, stack_cap;
+	/* Plain A*'s open list: a ring of GRIDPATH_RING buckets of f (gridpath.c). */
+	GridPathBucket *ring;                     /* NULL before the first query */
+	uint64_t ring_bits[GRIDPATH_RING / 64];   /* bit i: ring[i] holds entries */
+	int64_t ring_now;                         /* the current bucket's number */
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
 	 * search. The jump search scans the grid along rows and columns, so it keeps the
 	 * free cells twice more, a byte each: row-major (rows) and column-major (cols),
