@@ -201,7 +201,7 @@ static inline int gridpath_before(const GridPathOpen *a, const GridPathOpen *b)
 
 /* gridpath_sift_down(h, n, i, e): puts e at position i of heap h[0..n) and sifts it
  * down to where it belongs. */
-static void gridpath_sift_down(GridPathOpen *h, int n, int i, GridPathOpen e)
+static inline void gridpath_sift_down(GridPathOpen *h, int n, int i, GridPathOpen e)
 {
 	for (;;) {
 		int c = 2 * i + 1;
@@ -742,10 +742,11 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	int64_t expanded = 0;
 	int found = 0;
 	GridPathOpen e;
-	s->stack_count = 0;
+	GridPathOpen *stack = s->stack; /* s->stack, in locals (see below) */
+	int stack_count = 0, stack_cap = s->stack_cap;
 	for (;;) {
-		if (s->stack_count > 0)
-			e = s->stack[--s->stack_count];
+		if (stack_count > 0)
+			e = stack[--stack_count];
 		else if (!gridpath_ring_pop(s, &e))
 			break;
 		int32_t c = e.cell;
@@ -761,39 +762,44 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			found = 1;
 			break;
 		}
-		int32_t cx = c % pw, cy = c / pw;
 		/* the legal steps from one byte (gridpath_init), in order of d as before:
 		 * the order of pushes decides ties, and so the path */
 		unsigned m = nc->moves;
 		if (nc->from != GRIDPATH_NO_PARENT)
 			m &= ~(unsigned)s->skip[nc->from][node[c - offset[nc->from]].moves];
+		/* locals: the stores of a byte below (from) may alias anything, so fields
+		 * read through pointers would be read again after each */
+		const int32_t cs = nc->straight, cd = nc->diagonal;
+		const int32_t rx = goal_x - c % pw, ry = goal_y - c / pw; /* goal - c */
 		for (; m; m &= m - 1) {
 			const int d = gridpath_ctz64(m);
-			int32_t n = c + offset[d];
+			const int32_t n = c + offset[d];
 			GridPathNode *nn = &node[n];
-			if (nn->mark == closed_mark)
+			const uint32_t mark = nn->mark;
+			if (mark == closed_mark)
 				continue;
-			int32_t ns = nc->straight + (d < 4), nd = nc->diagonal + (d >= 4);
-			double ng = gridpath_cost(ns, nd);
-			if (nn->mark == open_mark &&
-			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
+			const int32_t ns = cs + (d < 4), nd = cd + (d >= 4);
+			const double ng = gridpath_cost(ns, nd);
+			if (mark == open_mark && !(ng < gridpath_cost(nn->straight, nn->diagonal)))
 				continue;
 			nn->mark = open_mark;
 			nn->straight = ns;
 			nn->diagonal = nd;
 			nn->from = (uint8_t)d;
-			int32_t ax = abs(goal_x - (cx + gridpath_dx[d]));
-			int32_t ay = abs(goal_y - (cy + gridpath_dy[d]));
-			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
+			const int32_t ax = abs(rx - gridpath_dx[d]), ay = abs(ry - gridpath_dy[d]);
+			const int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
+			const GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
 			if (ne.f == e.f) {
 				/* As good as the best open entry: expand it next, no heap. */
-				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
-				s->stack[s->stack_count++] = ne;
+				if (stack_count == stack_cap)
+					stack = util_grow(stack, &stack_cap, stack_count + 1, sizeof *stack);
+				stack[stack_count++] = ne;
 			} else
 				gridpath_ring_push(s, ne);
 		}
 	}
+	s->stack = stack;
+	s->stack_cap = stack_cap;
 	path->expanded = expanded;
 	if (!found)
 		return GRIDPATH_NO_PATH;
