@@ -119,6 +119,8 @@ typedef struct GridPathSearch {
 	int32_t ph;     /* padded height: h + 2 */
 	uint8_t *rows;  /* pw * ph: rows[y * pw + x] = 1 when (x - 1, y - 1) is free */
 	uint8_t *cols;  /* ph * pw: cols[x * ph + y], the same transposed */
+	uint8_t *moves; /* pw * ph: each cell's legal steps (GridPathNode.moves), for the
+	                   jump search's diagonal runs */
 	/* skip[d][m]: the steps an expansion of a cell reached by step d need not try,
 	 * when its parent's legal steps are m (see gridpath.c); d = 8 for a start. */
 	uint8_t skip[9][256];
