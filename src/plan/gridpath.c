@@ -193,6 +193,7 @@ void gridpath_free(GridPathSearch *s)
 	free(s->nonempty);
 	free(s->overflow);
 	free(s->stack);
+	free(s->scratch);
 	*s = (GridPathSearch){0};
 }
 
@@ -227,6 +228,12 @@ static inline int64_t gridpath_bucket_of(const GridPathSearch *s, double f)
 {
 	double rel = (f - s->f_start) * GRIDPATH_BUCKETS_PER_UNIT;
 	return rel < (double)s->bucket_now ? s->bucket_now : (int64_t)rel;
+}
+
+/* gridpath_room_for(p, need, cap): p with room for need entries. */
+static inline GridPathOpen *gridpath_room_for(GridPathOpen *p, int need, int *cap)
+{
+	return need <= *cap ? p : util_grow(p, cap, need, sizeof *p);
 }
 
 /* gridpath_room(p, count, cap): p with room for one more entry. The test is inline,
@@ -338,9 +345,40 @@ static bool gridpath_pop(GridPathSearch *s, GridPathOpen *e)
  * A ring of GRIDPATH_RING buckets of f, GRIDPATH_RING_PER_UNIT to a unit: plain
  * A* offers a neighbour at most 2 sqrt 2 above the f being expanded (a step of
  * cost c changes h by at most c), so the open entries span less than 3 units and a
- * ring of 4 units holds them all, with no overflow. The current bucket, ring_now,
- * is a binary heap (made by Floyd's bottom-up build when the bucket becomes
- * current); later buckets are unsorted arrays. */
+ * ring of 4 units holds them all, with no overflow. Later buckets are unsorted
+ * arrays; the current one, ring_now, is sorted (by gridpath_ring_sort when it
+ * becomes current) from the entry to leave last to the one to leave first, so a
+ * pop takes its last entry, and a push into it is an insertion from the end. In
+ * the maze most buckets hold one to three entries: a sorted array beat the binary
+ * heap kept before (see PERFORMANCE). */
+
+/* gridpath_ring_sort(a, n, tmp): sorts a[0..n) so that a[n - 1] leaves first
+ * (gridpath_before), stable: of entries that tie in f and g, the later in a leaves
+ * first. Insertion for short arrays, else merging halves through tmp (n entries). */
+static void gridpath_ring_sort(GridPathOpen *a, int n, GridPathOpen *tmp)
+{
+	if (n <= 16) {
+		for (int i = 1; i < n; i++) {
+			const GridPathOpen x = a[i];
+			int j = i;
+			for (; j > 0 && gridpath_before(&a[j - 1], &x); j--)
+				a[j] = a[j - 1];
+			a[j] = x;
+		}
+		return;
+	}
+	const int h = n / 2;
+	gridpath_ring_sort(a, h, tmp);
+	gridpath_ring_sort(a + h, n - h, tmp);
+	int i = 0, j = h, k = 0;
+	while (i < h && j < n) /* the one that leaves later first; on a tie, the left */
+		tmp[k++] = gridpath_before(&a[i], &a[j]) ? a[j++] : a[i++];
+	while (i < h)
+		tmp[k++] = a[i++];
+	while (j < n)
+		tmp[k++] = a[j++];
+	memcpy(a, tmp, (size_t)n * sizeof *a);
+}
 
 /* gridpath_ring_push(s, e): files e in the bucket of its f (never before ring_now:
  * f never decreases, the clamp only guards rounding). */
@@ -353,9 +391,9 @@ static inline void gridpath_ring_push(GridPathSearch *s, GridPathOpen e)
 	k->e = gridpath_room(k->e, k->count, &k->cap);
 	s->ring_bits[slot / 64] |= (uint64_t)1 << (slot % 64);
 	int i = k->count++;
-	if (b == s->ring_now) /* the current bucket: a heap */
-		for (; i > 0 && gridpath_before(&e, &k->e[(i - 1) / 2]); i = (i - 1) / 2)
-			k->e[i] = k->e[(i - 1) / 2];
+	if (b == s->ring_now) /* the current bucket: sorted, leaving from the end */
+		for (; i > 0 && gridpath_before(&k->e[i - 1], &e); i--)
+			k->e[i] = k->e[i - 1];
 	k->e[i] = e;
 }
 
@@ -382,13 +420,14 @@ static inline bool gridpath_ring_pop(GridPathSearch *s, GridPathOpen *e)
 		s->ring_now += (next - slot) & (GRIDPATH_RING - 1);
 		slot = next;
 		k = &s->ring[slot];
-		for (int i = k->count / 2 - 1; i >= 0; i--)
-			gridpath_sift_down(k->e, k->count, i, k->e[i]);
+		if (k->count > 1) {
+			if (k->count > 16)
+				s->scratch = gridpath_room_for(s->scratch, k->count, &s->scratch_cap);
+			gridpath_ring_sort(k->e, k->count, s->scratch);
+		}
 	}
-	*e = k->e[0];
-	if (--k->count > 0)
-		gridpath_sift_down(k->e, k->count, 0, k->e[k->count]);
-	else
+	*e = k->e[--k->count];
+	if (k->count == 0)
 		s->ring_bits[slot / 64] &= ~((uint64_t)1 << (slot % 64));
 	return true;
 }

@@ -111,6 +111,8 @@ typedef struct GridPathSearch {
 	GridPathBucket *ring;                     /* NULL before the first query */
 	uint64_t ring_bits[GRIDPATH_RING / 64];   /* bit i: ring[i] holds entries */
 	int64_t ring_now;                         /* the current bucket's number */
+	GridPathOpen *scratch;                    /* for sorting a bucket */
+	int scratch_cap;
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
 	 * search. The jump search scans the grid along rows and columns, so it keeps the
 	 * free cells twice more, a byte each: row-major (rows) and column-major (cols),
