@@ -420,7 +420,13 @@ static inline bool gridpath_ring_pop(GridPathSearch *s, GridPathOpen *e)
 		s->ring_now += (next - slot) & (GRIDPATH_RING - 1);
 		slot = next;
 		k = &s->ring[slot];
-		if (k->count > 1) {
+		if (k->count == 2) { /* the usual case in the maze, inline */
+			if (gridpath_before(&k->e[0], &k->e[1])) {
+				const GridPathOpen t = k->e[0];
+				k->e[0] = k->e[1];
+				k->e[1] = t;
+			}
+		} else if (k->count > 2) {
 			if (k->count > 16)
 				s->scratch = gridpath_room_for(s->scratch, k->count, &s->scratch_cap);
 			gridpath_ring_sort(k->e, k->count, s->scratch);
@@ -540,8 +546,10 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 #if GRIDPATH_SCAN_WORDS
 	/* Words of positions i + 1 .. i + 8 (or i - 8 .. i - 1) while they lie in the
 	 * line and hold no stop; the rest cell by cell below. */
-	if (dir > 0)
-		for (int32_t p = i + 1; p + 8 <= len && !(stop >= p && stop < p + 8); p += 8) {
+	/* words hold no stop: they end before it (dir > 0) or start after it */
+	if (dir > 0) {
+		const int32_t end = stop > i ? stop : len;
+		for (int32_t p = i + 1; p + 8 <= end; p += 8) {
 			uint64_t ev = ~gridpath_load8(cur + p) |
 			              (gridpath_load8(a + p) & ~gridpath_load8(a + p - 1)) |
 			              (gridpath_load8(b + p) & ~gridpath_load8(b + p - 1));
@@ -552,8 +560,9 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 			}
 			i = p + 7;
 		}
-	else
-		for (int32_t p = i - 8; p >= 0 && !(stop >= p && stop < p + 8); p -= 8) {
+	} else {
+		const int32_t first = stop >= 0 && stop < i ? stop + 1 : 0;
+		for (int32_t p = i - 8; p >= first; p -= 8) {
 			uint64_t ev = ~gridpath_load8(cur + p) |
 			              (gridpath_load8(a + p) & ~gridpath_load8(a + p + 1)) |
 			              (gridpath_load8(b + p) & ~gridpath_load8(b + p + 1));
@@ -564,6 +573,7 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 			}
 			i = p;
 		}
+	}
 #else
 	(void)len;
 #endif
@@ -688,7 +698,8 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			break;
 		}
 		const int32_t cx = c % pw, cy = c / pw;
-		unsigned dirs = gridpath_successor_dirs(nc->from);
+		/* a run whose first step is illegal finds nothing: not tried */
+		unsigned dirs = gridpath_successor_dirs(nc->from) & s->moves[c];
 		for (int d = 0; d < 8; d++) {
 			if (!((dirs >> d) & 1))
 				continue;
