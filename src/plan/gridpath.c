@@ -98,6 +98,14 @@ static inline int gridpath_ctz64(uint64_t bits)
 #endif
 }
 
+/* GRIDPATH_PREFETCH(p): asks for p's cache line ahead of use, where the compiler
+ * can (a hint only: no effect on results). */
+#if defined(__GNUC__)
+#define GRIDPATH_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define GRIDPATH_PREFETCH(p) ((void)(p))
+#endif
+
 /* The 8 steps: 0..3 straight (E, N, W, S), 4..7 diagonal (NE, NW, SW, SE); a
  * diagonal d = 4 + k lies between straight steps k and (k + 1) mod 4. "N" is +y. */
 static const int8_t gridpath_dx[8] = {1, 0, -1, 0, 1, -1, -1, 1};
@@ -700,6 +708,11 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		const int32_t cx = c % pw, cy = c / pw;
 		/* a run whose first step is illegal finds nothing: not tried */
 		unsigned dirs = gridpath_successor_dirs(nc->from) & s->moves[c];
+		/* All the runs first, then their jump points in order of d: the runs read
+		 * only rows, cols and moves, so the nodes of the jump points (a cache miss
+		 * each, most of the maze's time) are fetched while the next runs scan. */
+		int32_t found_n[8], found_steps[8];
+		int found_d[8], runs = 0;
 		for (int d = 0; d < 8; d++) {
 			if (!((dirs >> d) & 1))
 				continue;
@@ -707,6 +720,14 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			int32_t n = gridpath_jump(s, cx, cy, d, gx, gy, &steps);
 			if (n < 0)
 				continue;
+			GRIDPATH_PREFETCH(&node[n]);
+			found_n[runs] = n;
+			found_steps[runs] = steps;
+			found_d[runs++] = d;
+		}
+		for (int k = 0; k < runs; k++) {
+			const int32_t n = found_n[k], steps = found_steps[k];
+			const int d = found_d[k];
 			GridPathNode *nn = &node[n];
 			if (nn->mark == closed_mark)
 				continue;
@@ -738,7 +759,7 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 	int32_t steps = node[goal].straight + node[goal].diagonal;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
 	path->count = steps + 1; /* every point is written below */
-	int32_t c = goal, i = steps;
+	int32_t c = goal, i = steps, x = gx, y = gy; /* c = y pw + x: no division */
 	path->pts[i] = vec2((double)(gx - 1) + 0.5, (double)(gy - 1) + 0.5);
 	while (c != start) {
 		const int d = node[c].from;
@@ -748,8 +769,9 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		const int32_t known = node[c].run;
 		for (int32_t k = 1;; k++) {
 			int32_t r = c - k * back;
-			path->pts[i - k] =
-			    vec2((double)(r % pw - 1) + 0.5, (double)(r / pw - 1) + 0.5);
+			x -= gridpath_dx[d];
+			y -= gridpath_dy[d];
+			path->pts[i - k] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
 			const GridPathNode *nr = &node[r];
 			bool run_start = known ? k == known
 			                       : nr->mark == closed_mark &&
@@ -869,11 +891,15 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	int32_t steps = node[goal].straight + node[goal].diagonal;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
 	path->count = steps + 1; /* every point is written below */
-	int32_t c = goal;
+	int32_t c = goal, x = goal_x, y = goal_y; /* c = y pw + x: no division */
 	for (int32_t i = steps; i >= 0; i--) {
-		path->pts[i] = vec2((double)(c % pw - 1) + 0.5, (double)(c / pw - 1) + 0.5);
-		if (i > 0)
-			c -= offset[node[c].from];
+		path->pts[i] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
+		if (i > 0) {
+			const int d = node[c].from;
+			c -= offset[d];
+			x -= gridpath_dx[d];
+			y -= gridpath_dy[d];
+		}
 	}
 	*length = gridpath_cost(node[goal].straight, node[goal].diagonal);
 	return GRIDPATH_FOUND;
