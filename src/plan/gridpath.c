@@ -9,25 +9,36 @@
  * is consistent: a cell is final when it is first closed and is never reopened.
  * The open list uses lazy deletion: an improved cell is pushed again and stale
  * entries are skipped when popped (cheaper than decrease-key, whose position index
- * costs a random memory access per swap). It is a bucketed heap: since f never
- * decreases during the search, entries are filed in buckets of f (1/64 of a unit,
- * GRIDPATH_BUCKETS_PER_UNIT) and only the current bucket is kept as a binary heap,
- * so heap operations work on tens of entries that stay in cache instead of
- * a heap of the whole frontier; one page of GRIDPATH_PAGE buckets is kept at a
- * time, with the entries beyond it in an overflow (see GRIDPATH_PAGE). A neighbour
- * whose f equals the f being expanded (the least in the list) skips the heap
- * through a stack. Measured on the 1024 x
- * 1024 maps, the buckets made the search about 1.5 times faster than one binary
- * heap and the stack about 10% more (the machine was shared: +-20% noise).
- * Each free cell's legal steps are one byte of its node (made once by
- * gridpath_init), so an expansion walks the set bits in order of d instead of
- * testing eight neighbours and two corners each; with the bit scan of the buckets
- * by ctz and growth tests inline, instructions per corner-to-corner query at 1024
- * (callgrind, gridpath_find) fell from 438 to 337 million on the maze (688 000
- * cells expanded, about 490 instructions each), 258 to 237 on rooms, 166 to 153 on
- * rects, 215 to 198 on Boston_0_1024, 57 to 52 on den520d; the same paths, point
- * for point.
+ * costs a random memory access per swap). Since f never decreases during the
+ * search, entries are filed in buckets of f (1/64 of a unit), and only the current
+ * bucket is ordered. Plain A* keeps its buckets in a ring of 4 units (its open
+ * entries never span more than 2 sqrt 2: "plain A*'s open list" below), the current one a sorted
+ * array; the jump search, whose jumps are long, keeps a page of GRIDPATH_PAGE
+ * buckets with an overflow beyond it (see GRIDPATH_PAGE), the current bucket a
+ * binary heap. A neighbour whose f equals the f being expanded (the least in the
+ * list) skips the buckets through a stack. Each free cell's legal steps are one
+ * byte of its node (made once by gridpath_init), so an expansion walks the set
+ * bits in order of d instead of testing eight neighbours and two corners each.
  *
+ * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
+ * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
+ * before = the tree before this round of work, which kept the paged heap for
+ * both searches):
+ *   plain A*    rooms 230 -> 145 M, rects 149 -> 93, maze 333 -> 209 (688 000 cells
+ *               expanded: 485 -> 304 instructions a cell), Boston_0_1024 192 -> 119,
+ *               den520d (x2) 51 -> 32;
+ *   jump points rooms 6.7 -> 6.1 M, rects 5.6 -> 4.8, maze 47.2 -> 43.6,
+ *               Boston 11.3 -> 9.9, den520d 3.3 -> 2.7.
+ * The steps, maze plain A*: the parent's neighbours skipped 337 -> 292 M; the ring
+ * for the paged heap 292 -> 232; locals instead of fields re-read after byte stores
+ * and the sift inline 232 -> 225; the sorted current bucket 225 -> 209 (rooms 172
+ * -> 145, and its time about halved: the heap's branches mispredicted). Times and
+ * the ratios to libtcod: see gridpath.h. Where the time goes now (perf): the maze's
+ * plain A* is bound by instructions (about 2 a cycle), spread over the bucket
+ * work, the cost conversions and the neighbour loop; its jump search by the loads
+ * of the nodes of jump points (a cache miss each in a 16 MB array: about 30% of
+ * its time) and the path's walk back from node to node (about 12%).
+
  * PARENT'S NEIGHBOURS: a cell c reached from its parent p need not try a step to p,
  * nor to any cell n one legal step from p: p was expanded, so n already holds a
  * cost at most g(p) + |pn| <= g(p) + |pc| + |cn| = g(c) + |cn| (one step is never
@@ -50,10 +61,10 @@
  *
  * MEMORY: see gridpath.h. COMPLEXITY: O(n log n) for n cells expanded, n <= free
  * cells, plus O(L) for a path of length L to skip the empty buckets (64 to a word
- * of nonempty bits), and each overflow entry once per page it waits through;
- * initialisation O(w h) once per
- * grid, and a query touches only what it expands (the round counter replaces
- * clearing the marks). */
+ * of nonempty bits), and for the jump search each overflow entry once per page it
+ * waits through; initialisation O(w h) once per grid, and a query touches only
+ * what it expands (the round counter replaces clearing the marks) and, for plain
+ * A*, the ring's GRIDPATH_RING buckets. */
 #include "utak/plan/gridpath.h"
 
 #include <math.h>
@@ -78,9 +89,17 @@
  * Empty buckets are skipped 64 at a time by the nonempty bits. */
 #define GRIDPATH_PAGE 4096
 #define GRIDPATH_WORDS (GRIDPATH_PAGE / 64)
-/* Plain A*'s ring (see gridpath.h): buckets per unit of f, and how many. */
+/* Plain A*'s ring (GRIDPATH_RING buckets, gridpath.h): buckets per unit of f. Of
+ * 64, 256 and 1024 (rings of 4 units), 64 ran the maze's query in the fewest
+ * instructions (232, 236 and 242 million, callgrind), and it files entries as the
+ * jump search's pages do. */
 #define GRIDPATH_RING_PER_UNIT 64
 #define GRIDPATH_RING_WORDS (GRIDPATH_RING / 64)
+/* The ring must hold the open entries' span, 2 sqrt 2 units and a bucket each side,
+ * and be a power of two of whole words. */
+_Static_assert(GRIDPATH_RING >= 3 * GRIDPATH_RING_PER_UNIT + 2 && GRIDPATH_RING % 64 == 0 &&
+                   (GRIDPATH_RING & (GRIDPATH_RING - 1)) == 0,
+               "GRIDPATH_RING too small for GRIDPATH_RING_PER_UNIT, or not a power of two");
 /* GridPathNode.from of a start: no step reached it. */
 #define GRIDPATH_NO_PARENT 8
 

@@ -22,19 +22,24 @@
  * runs as a jump-point search (gridpath.c): the same length, path.expanded then
  * counts the jump points expanded.
  *
- * MEMORY: 18 bytes per cell of the grid with a one-cell border, plus the open list
- * (16 bytes per pushed entry; at most 8 pushes per cell, far fewer in practice),
- * kept between queries.
+ * MEMORY: 19 bytes per cell of the grid with a one-cell border (the node, and a
+ * byte each in rows, cols and moves), plus the open list (16 bytes per pushed entry;
+ * at most 8 pushes per cell, far fewer in practice), kept between queries.
  *
- * PERFORMANCE (make bench-compare, issue 16: this 2-core machine, one thread, thread
- * CPU time, median of 5; corner to corner, the ends as skelbench picks them): on the
- * 1024 grids plain A* 5.6 ms (den520d scaled 4 times) to 57 ms (the maze, 688 000
- * cells expanded), the jump search 0.54 to 11.4 ms (rooms 1.3, Boston_0_1024 1.7);
- * at 4096, A* 114-542 ms and the jump search 5-104 ms. Against libtcod's A* on the
- * same problems: plain A* 8.9-28 times faster except on the maze (1.3-1.4), the jump
- * search 94-501 times except on the maze (6.7-7.4). Each cell's legal steps in a
- * byte of its node (see GridPathNode.moves) cut the maze's instructions from 438 to
- * 337 million (README, Benchmarks). */
+ * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
+ * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
+ * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.7
+ * ms, rects 10.0, maze 42.2 (688 000 cells expanded), Boston_0_1024 13.3, den520d
+ * 3.2; libtcod's A* over these 26.4, 33.4, 2.08, 20.6 and 17.5 times (before this
+ * work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 1.35, 1.16, 10.8, 1.76 and
+ * 0.54 ms, libtcod over it 327, 286, 8.16, 155 and 103 times. At 4096 (utak by
+ * skelbench --compare --side 4096, libtcod by tcodpath in an earlier run on the same
+ * grids): plain A* rooms 326 ms, rects 195, maze 431, libtcod over it 89, 93 and
+ * 2.3 times; the jump search 40, 46 and 119 ms, 729, 398 and 8.4 times. Goals of
+ * the issue still unmet: plain A* 5 times libtcod on the maze (2.1-2.3: it expands
+ * every cell at about 300 instructions each, see gridpath.c), the jump search 10
+ * times there (8.2-8.4: its time is mostly cache misses at the jump points' nodes).
+ * Instructions a query (callgrind): gridpath.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
 
