@@ -176,7 +176,8 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 				continue;
 			unsigned m = 0;
 			for (int d = 0; d < 4; d++)
-				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]] << d;
+				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]]
+				     << d;
 			for (int k = 0; k < 4; k++) {
 				const int d = 4 + k;
 				if ((m >> k & 1) && (m >> ((k + 1) & 3) & 1) &&
@@ -455,7 +456,8 @@ static inline bool gridpath_ring_pop(GridPathSearch *s, GridPathOpen *e)
 			}
 		} else if (k->count > 2) {
 			if (k->count > 16)
-				s->scratch = gridpath_room_for(s->scratch, k->count, &s->scratch_cap);
+				s->scratch =
+				    gridpath_room_for(s->scratch, k->count, &s->scratch_cap);
 			gridpath_ring_sort(k->e, k->count, s->scratch);
 		}
 	}
@@ -540,7 +542,6 @@ static void gridpath_next_round(GridPathSearch *s)
  * closed cell whose step counts are exactly the run's steps fewer: the run's start,
  * or another cell of the run as near the start, which serves as well (its cost is
  * final and the rest of the run from it is free). */
-
 
 /* A start has no run that reached it: all eight directions are its successors. */
 #define GRIDPATH_FROM_START GRIDPATH_NO_PARENT
@@ -678,7 +679,8 @@ static unsigned gridpath_successor_dirs(int from)
 		return 0xffu;
 	int dx = gridpath_dx[from], dy = gridpath_dy[from];
 	if (dx != 0 && dy != 0)
-		return 1u << from | 1u << gridpath_dir_of[1][dx + 1] | 1u << gridpath_dir_of[dy + 1][1];
+		return 1u << from | 1u << gridpath_dir_of[1][dx + 1] |
+		       1u << gridpath_dir_of[dy + 1][1];
 	if (dy == 0) /* along x: on, both sides, both forward diagonals */
 		return 1u << from | 1u << 1 | 1u << 3 | 1u << gridpath_dir_of[2][dx + 1] |
 		       1u << gridpath_dir_of[0][dx + 1];
@@ -753,7 +755,8 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			int32_t ns = nc->straight + (d < 4 ? steps : 0);
 			int32_t nd = nc->diagonal + (d < 4 ? 0 : steps);
 			double ng = gridpath_cost(ns, nd);
-			if (nn->mark == open_mark && !(ng < gridpath_cost(nn->straight, nn->diagonal)))
+			if (nn->mark == open_mark &&
+			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
 				continue;
 			nn->mark = open_mark;
 			nn->straight = ns;
@@ -777,7 +780,7 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 	/* Walk back run by run (see PATH above), filling the path from its end. */
 	int32_t steps = node[goal].straight + node[goal].diagonal;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
-	path->count = steps + 1; /* every point is written below */
+	path->count = steps + 1;                     /* every point is written below */
 	int32_t c = goal, i = steps, x = gx, y = gy; /* c = y pw + x: no division */
 	path->pts[i] = vec2((double)(gx - 1) + 0.5, (double)(gy - 1) + 0.5);
 	while (c != start) {
@@ -890,11 +893,13 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			nn->from = (uint8_t)d;
 			const int32_t ax = abs(rx - gridpath_dx[d]), ay = abs(ry - gridpath_dy[d]);
 			const int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			const GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
+			const GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng,
+			                         n};
 			if (ne.f == e.f) {
 				/* As good as the best open entry: expand it next, no heap. */
 				if (stack_count == stack_cap)
-					stack = util_grow(stack, &stack_cap, stack_count + 1, sizeof *stack);
+					stack = util_grow(stack, &stack_cap, stack_count + 1,
+					                  sizeof *stack);
 				stack[stack_count++] = ne;
 			} else
 				gridpath_ring_push(s, ne);
@@ -909,7 +914,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	/* Walk back along from[], then reverse: the path runs start to goal. */
 	int32_t steps = node[goal].straight + node[goal].diagonal;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
-	path->count = steps + 1; /* every point is written below */
+	path->count = steps + 1;                  /* every point is written below */
 	int32_t c = goal, x = goal_x, y = goal_y; /* c = y pw + x: no division */
 	for (int32_t i = steps; i >= 0; i--) {
 		path->pts[i] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);

@@ -113,10 +113,10 @@ typedef struct GridPathSearch {
 	GridPathOpen *stack;
 	int stack_count, stack_cap;
 	/* Plain A*'s open list: a ring of GRIDPATH_RING buckets of f (gridpath.c). */
-	GridPathBucket *ring;                     /* NULL before the first query */
-	uint64_t ring_bits[GRIDPATH_RING / 64];   /* bit i: ring[i] holds entries */
-	int64_t ring_now;                         /* the current bucket's number */
-	GridPathOpen *scratch;                    /* for sorting a bucket */
+	GridPathBucket *ring;                   /* NULL before the first query */
+	uint64_t ring_bits[GRIDPATH_RING / 64]; /* bit i: ring[i] holds entries */
+	int64_t ring_now;                       /* the current bucket's number */
+	GridPathOpen *scratch;                  /* for sorting a bucket */
 	int scratch_cap;
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
 	 * search. The jump search scans the grid along rows and columns, so it keeps the
