@@ -9,24 +9,44 @@
  * is consistent: a cell is final when it is first closed and is never reopened.
  * The open list uses lazy deletion: an improved cell is pushed again and stale
  * entries are skipped when popped (cheaper than decrease-key, whose position index
- * costs a random memory access per swap). It is a bucketed heap: since f never
- * decreases during the search, entries are filed in buckets of f (1/64 of a unit,
- * GRIDPATH_BUCKETS_PER_UNIT) and only the current bucket is kept as a binary heap,
- * so heap operations work on tens of entries that stay in cache instead of
- * a heap of the whole frontier; one page of GRIDPATH_PAGE buckets is kept at a
- * time, with the entries beyond it in an overflow (see GRIDPATH_PAGE). A neighbour
- * whose f equals the f being expanded (the least in the list) skips the heap
- * through a stack. Measured on the 1024 x
- * 1024 maps, the buckets made the search about 1.5 times faster than one binary
- * heap and the stack about 10% more (the machine was shared: +-20% noise).
- * Each free cell's legal steps are one byte of its node (made once by
- * gridpath_init), so an expansion walks the set bits in order of d instead of
- * testing eight neighbours and two corners each; with the bit scan of the buckets
- * by ctz and growth tests inline, instructions per corner-to-corner query at 1024
- * (callgrind, gridpath_find) fell from 438 to 337 million on the maze (688 000
- * cells expanded, about 490 instructions each), 258 to 237 on rooms, 166 to 153 on
- * rects, 215 to 198 on Boston_0_1024, 57 to 52 on den520d; the same paths, point
- * for point.
+ * costs a random memory access per swap). Since f never decreases during the
+ * search, entries are filed in buckets of f (1/64 of a unit), and only the current
+ * bucket is ordered. Plain A* keeps its buckets in a ring of 4 units (its open
+ * entries never span more than 2 sqrt 2: "plain A*'s open list" below), the current one a sorted
+ * array; the jump search, whose jumps are long, keeps a page of GRIDPATH_PAGE
+ * buckets with an overflow beyond it (see GRIDPATH_PAGE), the current bucket a
+ * binary heap. A neighbour whose f equals the f being expanded (the least in the
+ * list) skips the buckets through a stack. Each free cell's legal steps are one
+ * byte of its node (made once by gridpath_init), so an expansion walks the set
+ * bits in order of d instead of testing eight neighbours and two corners each.
+ *
+ * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
+ * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
+ * before = the tree before this round of work, which kept the paged heap for
+ * both searches):
+ *   plain A*    rooms 230 -> 145 M, rects 149 -> 93, maze 333 -> 209 (688 000 cells
+ *               expanded: 485 -> 304 instructions a cell), Boston_0_1024 192 -> 119,
+ *               den520d (x2) 51 -> 32;
+ *   jump points rooms 6.7 -> 6.1 M, rects 5.6 -> 4.8, maze 47.2 -> 43.6,
+ *               Boston 11.3 -> 9.9, den520d 3.3 -> 2.7.
+ * The steps, maze plain A*: the parent's neighbours skipped 337 -> 292 M; the ring
+ * for the paged heap 292 -> 232; locals instead of fields re-read after byte stores
+ * and the sift inline 232 -> 225; the sorted current bucket 225 -> 209 (rooms 172
+ * -> 145, and its time about halved: the heap's branches mispredicted). Times and
+ * the ratios to libtcod: see gridpath.h. Where the time goes now (perf): the maze's
+ * plain A* is bound by instructions (about 2 a cycle), spread over the bucket
+ * work, the cost conversions and the neighbour loop; its jump search by the loads
+ * of the nodes of jump points (a cache miss each in a 16 MB array: about 30% of
+ * its time) and the path's walk back from node to node (about 12%).
+
+ * PARENT'S NEIGHBOURS: a cell c reached from its parent p need not try a step to p,
+ * nor to any cell n one legal step from p: p was expanded, so n already holds a
+ * cost at most g(p) + |pn| <= g(p) + |pc| + |cn| = g(c) + |cn| (one step is never
+ * longer than two), and c's offer would be refused; likewise by induction when p
+ * itself skipped n. So skip[from][moves of p] (gridpath_init) removes these steps
+ * before the loop, which changes no push and no path: 3 of the 8 neighbours are
+ * left to a cell entered straight along a corridor. Maze at 1024: 337 to 292
+ * million instructions (callgrind, gridpath_find).
  *
  * EXACT TIES: a cost is kept as two integers, straight and diagonal step counts,
  * and turned into a double by one fixed expression. Since sqrt 2 is irrational,
@@ -41,10 +61,10 @@
  *
  * MEMORY: see gridpath.h. COMPLEXITY: O(n log n) for n cells expanded, n <= free
  * cells, plus O(L) for a path of length L to skip the empty buckets (64 to a word
- * of nonempty bits), and each overflow entry once per page it waits through;
- * initialisation O(w h) once per
- * grid, and a query touches only what it expands (the round counter replaces
- * clearing the marks). */
+ * of nonempty bits), and for the jump search each overflow entry once per page it
+ * waits through; initialisation O(w h) once per grid, and a query touches only
+ * what it expands (the round counter replaces clearing the marks) and, for plain
+ * A*, the ring's GRIDPATH_RING buckets. */
 #include "utak/plan/gridpath.h"
 
 #include <math.h>
@@ -69,6 +89,19 @@
  * Empty buckets are skipped 64 at a time by the nonempty bits. */
 #define GRIDPATH_PAGE 4096
 #define GRIDPATH_WORDS (GRIDPATH_PAGE / 64)
+/* Plain A*'s ring (GRIDPATH_RING buckets, gridpath.h): buckets per unit of f. Of
+ * 64, 256 and 1024 (rings of 4 units), 64 ran the maze's query in the fewest
+ * instructions (232, 236 and 242 million, callgrind), and it files entries as the
+ * jump search's pages do. */
+#define GRIDPATH_RING_PER_UNIT 64
+#define GRIDPATH_RING_WORDS (GRIDPATH_RING / 64)
+/* The ring must hold the open entries' span, 2 sqrt 2 units and a bucket each side,
+ * and be a power of two of whole words. */
+_Static_assert(GRIDPATH_RING >= 3 * GRIDPATH_RING_PER_UNIT + 2 && GRIDPATH_RING % 64 == 0 &&
+                   (GRIDPATH_RING & (GRIDPATH_RING - 1)) == 0,
+               "GRIDPATH_RING too small for GRIDPATH_RING_PER_UNIT, or not a power of two");
+/* GridPathNode.from of a start: no step reached it. */
+#define GRIDPATH_NO_PARENT 8
 
 /* gridpath_ctz64(bits): the index of the lowest set bit of bits != 0 (one
  * instruction where the compiler has it; the loop cost a tenth of the maze's A*). */
@@ -84,10 +117,21 @@ static inline int gridpath_ctz64(uint64_t bits)
 #endif
 }
 
+/* GRIDPATH_PREFETCH(p): asks for p's cache line ahead of use, where the compiler
+ * can (a hint only: no effect on results). */
+#if defined(__GNUC__)
+#define GRIDPATH_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define GRIDPATH_PREFETCH(p) ((void)(p))
+#endif
+
 /* The 8 steps: 0..3 straight (E, N, W, S), 4..7 diagonal (NE, NW, SW, SE); a
  * diagonal d = 4 + k lies between straight steps k and (k + 1) mod 4. "N" is +y. */
 static const int8_t gridpath_dx[8] = {1, 0, -1, 0, 1, -1, -1, 1};
 static const int8_t gridpath_dy[8] = {0, 1, 0, -1, 1, 1, -1, -1};
+
+/* gridpath_dir_of[dy + 1][dx + 1]: the step index of (dx, dy) (-1 for (0, 0)). */
+static const int8_t gridpath_dir_of[3][3] = {{6, 3, 7}, {2, -1, 0}, {5, 1, 4}};
 
 double gridpath_octile(int32_t dx, int32_t dy)
 {
@@ -114,6 +158,8 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 	s->node = util_alloc(n, sizeof *s->node);
 	s->rows = util_alloc(n, 1);
 	s->cols = util_alloc(n, 1);
+	s->moves = util_alloc(n, 1);
+	memset(s->moves, 0, n);
 	memset(s->rows, 0, n);
 	memset(s->cols, 0, n);
 	for (int32_t y = 0; y < grid->h; y++)
@@ -130,14 +176,31 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 				continue;
 			unsigned m = 0;
 			for (int d = 0; d < 4; d++)
-				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]] << d;
+				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]]
+				     << d;
 			for (int k = 0; k < 4; k++) {
 				const int d = 4 + k;
 				if ((m >> k & 1) && (m >> ((k + 1) & 3) & 1) &&
 				    s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]])
 					m |= 1u << d;
 			}
-			s->node[c].moves = (uint8_t)m;
+			s->node[c].moves = s->moves[c] = (uint8_t)m;
+		}
+	/* the steps an expansion may skip (see PARENT'S NEIGHBOURS in gridpath_find) */
+	for (int d = 0; d <= 8; d++)
+		for (unsigned mp = 0; mp < 256; mp++) {
+			unsigned skip = 0;
+			for (int e = 0; d < 8 && e < 8; e++) {
+				/* n = c + step e, seen from the parent p = c - step d */
+				const int rx = gridpath_dx[e] + gridpath_dx[d];
+				const int ry = gridpath_dy[e] + gridpath_dy[d];
+				if (rx == 0 && ry == 0)
+					skip |= 1u << e; /* n is p itself */
+				else if (abs(rx) <= 1 && abs(ry) <= 1 &&
+				         (mp >> gridpath_dir_of[ry + 1][rx + 1] & 1))
+					skip |= 1u << e; /* one legal step from p */
+			}
+			s->skip[d][mp] = (uint8_t)skip;
 		}
 }
 
@@ -146,13 +209,19 @@ void gridpath_free(GridPathSearch *s)
 	free(s->node);
 	free(s->rows);
 	free(s->cols);
+	free(s->moves);
 	if (s->bucket)
 		for (int i = 0; i < GRIDPATH_PAGE; i++)
 			free(s->bucket[i].e);
 	free(s->bucket);
+	if (s->ring)
+		for (int i = 0; i < GRIDPATH_RING; i++)
+			free(s->ring[i].e);
+	free(s->ring);
 	free(s->nonempty);
 	free(s->overflow);
 	free(s->stack);
+	free(s->scratch);
 	*s = (GridPathSearch){0};
 }
 
@@ -164,7 +233,7 @@ static inline int gridpath_before(const GridPathOpen *a, const GridPathOpen *b)
 
 /* gridpath_sift_down(h, n, i, e): puts e at position i of heap h[0..n) and sifts it
  * down to where it belongs. */
-static void gridpath_sift_down(GridPathOpen *h, int n, int i, GridPathOpen e)
+static inline void gridpath_sift_down(GridPathOpen *h, int n, int i, GridPathOpen e)
 {
 	for (;;) {
 		int c = 2 * i + 1;
@@ -187,6 +256,12 @@ static inline int64_t gridpath_bucket_of(const GridPathSearch *s, double f)
 {
 	double rel = (f - s->f_start) * GRIDPATH_BUCKETS_PER_UNIT;
 	return rel < (double)s->bucket_now ? s->bucket_now : (int64_t)rel;
+}
+
+/* gridpath_room_for(p, need, cap): p with room for need entries. */
+static inline GridPathOpen *gridpath_room_for(GridPathOpen *p, int need, int *cap)
+{
+	return need <= *cap ? p : util_grow(p, cap, need, sizeof *p);
 }
 
 /* gridpath_room(p, count, cap): p with room for one more entry. The test is inline,
@@ -293,6 +368,118 @@ static bool gridpath_pop(GridPathSearch *s, GridPathOpen *e)
 	return true;
 }
 
+/* ------------------------------------------------------- plain A*'s open list
+ *
+ * A ring of GRIDPATH_RING buckets of f, GRIDPATH_RING_PER_UNIT to a unit: plain
+ * A* offers a neighbour at most 2 sqrt 2 above the f being expanded (a step of
+ * cost c changes h by at most c), so the open entries span less than 3 units and a
+ * ring of 4 units holds them all, with no overflow. Later buckets are unsorted
+ * arrays; the current one, ring_now, is sorted (by gridpath_ring_sort when it
+ * becomes current) from the entry to leave last to the one to leave first, so a
+ * pop takes its last entry, and a push into it is an insertion from the end. In
+ * the maze most buckets hold one to three entries: a sorted array beat the binary
+ * heap kept before (see PERFORMANCE). */
+
+/* gridpath_ring_sort(a, n, tmp): sorts a[0..n) so that a[n - 1] leaves first
+ * (gridpath_before), stable: of entries that tie in f and g, the later in a leaves
+ * first. Insertion for short arrays, else merging halves through tmp (n entries). */
+static void gridpath_ring_sort(GridPathOpen *a, int n, GridPathOpen *tmp)
+{
+	if (n <= 16) {
+		for (int i = 1; i < n; i++) {
+			const GridPathOpen x = a[i];
+			int j = i;
+			for (; j > 0 && gridpath_before(&a[j - 1], &x); j--)
+				a[j] = a[j - 1];
+			a[j] = x;
+		}
+		return;
+	}
+	const int h = n / 2;
+	gridpath_ring_sort(a, h, tmp);
+	gridpath_ring_sort(a + h, n - h, tmp);
+	int i = 0, j = h, k = 0;
+	while (i < h && j < n) /* the one that leaves later first; on a tie, the left */
+		tmp[k++] = gridpath_before(&a[i], &a[j]) ? a[j++] : a[i++];
+	while (i < h)
+		tmp[k++] = a[i++];
+	while (j < n)
+		tmp[k++] = a[j++];
+	memcpy(a, tmp, (size_t)n * sizeof *a);
+}
+
+/* gridpath_ring_push(s, e): files e in the bucket of its f (never before ring_now:
+ * f never decreases, the clamp only guards rounding). */
+static inline void gridpath_ring_push(GridPathSearch *s, GridPathOpen e)
+{
+	const double rel = (e.f - s->f_start) * GRIDPATH_RING_PER_UNIT;
+	const int64_t b = rel < (double)s->ring_now ? s->ring_now : (int64_t)rel;
+	const unsigned slot = (unsigned)b & (GRIDPATH_RING - 1);
+	GridPathBucket *k = &s->ring[slot];
+	k->e = gridpath_room(k->e, k->count, &k->cap);
+	s->ring_bits[slot / 64] |= (uint64_t)1 << (slot % 64);
+	int i = k->count++;
+	if (b == s->ring_now) /* the current bucket: sorted, leaving from the end */
+		for (; i > 0 && gridpath_before(&k->e[i - 1], &e); i--)
+			k->e[i] = k->e[i - 1];
+	k->e[i] = e;
+}
+
+/* gridpath_ring_pop(s, e): the first entry into *e; false when the list is empty. */
+static inline bool gridpath_ring_pop(GridPathSearch *s, GridPathOpen *e)
+{
+	unsigned slot = (unsigned)s->ring_now & (GRIDPATH_RING - 1);
+	GridPathBucket *k = &s->ring[slot];
+	if (k->count == 0) {
+		/* the next nonempty bucket, cyclically after slot */
+		unsigned next = GRIDPATH_RING;
+		for (unsigned w = 0; w <= GRIDPATH_RING_WORDS; w++) {
+			const unsigned word = (slot / 64 + w) % GRIDPATH_RING_WORDS;
+			uint64_t bits = s->ring_bits[word];
+			if (w == 0)
+				bits &= ~(uint64_t)0 << (slot % 64);
+			if (bits) {
+				next = word * 64 + (unsigned)gridpath_ctz64(bits);
+				break;
+			}
+		}
+		if (next == GRIDPATH_RING)
+			return false;
+		s->ring_now += (next - slot) & (GRIDPATH_RING - 1);
+		slot = next;
+		k = &s->ring[slot];
+		if (k->count == 2) { /* the usual case in the maze, inline */
+			if (gridpath_before(&k->e[0], &k->e[1])) {
+				const GridPathOpen t = k->e[0];
+				k->e[0] = k->e[1];
+				k->e[1] = t;
+			}
+		} else if (k->count > 2) {
+			if (k->count > 16)
+				s->scratch =
+				    gridpath_room_for(s->scratch, k->count, &s->scratch_cap);
+			gridpath_ring_sort(k->e, k->count, s->scratch);
+		}
+	}
+	*e = k->e[--k->count];
+	if (k->count == 0)
+		s->ring_bits[slot / 64] &= ~((uint64_t)1 << (slot % 64));
+	return true;
+}
+
+/* gridpath_ring_reset(s): an empty ring for a new query, bucket 0 current. */
+static void gridpath_ring_reset(GridPathSearch *s)
+{
+	if (!s->ring) {
+		s->ring = util_alloc(GRIDPATH_RING, sizeof *s->ring);
+		memset(s->ring, 0, GRIDPATH_RING * sizeof *s->ring);
+	}
+	for (unsigned i = 0; i < GRIDPATH_RING; i++)
+		s->ring[i].count = 0;
+	memset(s->ring_bits, 0, sizeof s->ring_bits);
+	s->ring_now = 0;
+}
+
 /* gridpath_open_reset(s): an empty open list for a new query. */
 static void gridpath_open_reset(GridPathSearch *s)
 {
@@ -356,11 +543,8 @@ static void gridpath_next_round(GridPathSearch *s)
  * or another cell of the run as near the start, which serves as well (its cost is
  * final and the rest of the run from it is free). */
 
-/* gridpath_dir_of[dy + 1][dx + 1]: the step index of (dx, dy) (-1 for (0, 0)). */
-static const int8_t gridpath_dir_of[3][3] = {{6, 3, 7}, {2, -1, 0}, {5, 1, 4}};
-
 /* A start has no run that reached it: all eight directions are its successors. */
-#define GRIDPATH_FROM_START 8
+#define GRIDPATH_FROM_START GRIDPATH_NO_PARENT
 
 /* Eight cells at a time: where the compiler has bit-scan builtins and stores bytes
  * little-end first, gridpath_scan tests a word of 8 cells of each line at once
@@ -390,8 +574,10 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 #if GRIDPATH_SCAN_WORDS
 	/* Words of positions i + 1 .. i + 8 (or i - 8 .. i - 1) while they lie in the
 	 * line and hold no stop; the rest cell by cell below. */
-	if (dir > 0)
-		for (int32_t p = i + 1; p + 8 <= len && !(stop >= p && stop < p + 8); p += 8) {
+	/* words hold no stop: they end before it (dir > 0) or start after it */
+	if (dir > 0) {
+		const int32_t end = stop > i ? stop : len;
+		for (int32_t p = i + 1; p + 8 <= end; p += 8) {
 			uint64_t ev = ~gridpath_load8(cur + p) |
 			              (gridpath_load8(a + p) & ~gridpath_load8(a + p - 1)) |
 			              (gridpath_load8(b + p) & ~gridpath_load8(b + p - 1));
@@ -402,8 +588,9 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 			}
 			i = p + 7;
 		}
-	else
-		for (int32_t p = i - 8; p >= 0 && !(stop >= p && stop < p + 8); p -= 8) {
+	} else {
+		const int32_t first = stop >= 0 && stop < i ? stop + 1 : 0;
+		for (int32_t p = i - 8; p >= first; p -= 8) {
 			uint64_t ev = ~gridpath_load8(cur + p) |
 			              (gridpath_load8(a + p) & ~gridpath_load8(a + p + 1)) |
 			              (gridpath_load8(b + p) & ~gridpath_load8(b + p + 1));
@@ -414,6 +601,7 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 			}
 			i = p;
 		}
+	}
 #else
 	(void)len;
 #endif
@@ -459,18 +647,26 @@ static int32_t gridpath_jump(const GridPathSearch *s, int32_t x, int32_t y, int 
 		*steps = abs(jy - y);
 		return jy < 0 ? -1 : jy * pw + x;
 	}
-	const uint8_t *rows = s->rows;
+	/* The legal steps of each cell (one byte, gridpath_init): the diagonal step
+	 * is legal when bit d is set, and a straight run whose first cell is blocked
+	 * finds nothing, so it is not scanned (in the 1024 maze's corridors, 3 cells
+	 * wide, most are not). */
+	const uint8_t *moves = s->moves;
+	const int along_x = gridpath_dir_of[1][dx + 1], along_y = gridpath_dir_of[dy + 1][1];
+	const int32_t step = dy * pw + dx;
+	int32_t c = y * pw + x;
 	for (int32_t n = 1;; n++) {
-		/* the step to (x + dx, y + dy), legal only with both orthogonal cells free */
-		if (!rows[y * pw + x + dx] || !rows[(y + dy) * pw + x] ||
-		    !rows[(y + dy) * pw + x + dx])
+		if (!(moves[c] >> d & 1))
 			return -1;
+		c += step;
 		x += dx;
 		y += dy;
-		if ((x == gx && y == gy) || gridpath_run_x(s, x, y, dx, gx, gy) >= 0 ||
-		    gridpath_run_y(s, x, y, dy, gx, gy) >= 0) {
+		const unsigned m = moves[c];
+		if ((x == gx && y == gy) ||
+		    ((m >> along_x & 1) && gridpath_run_x(s, x, y, dx, gx, gy) >= 0) ||
+		    ((m >> along_y & 1) && gridpath_run_y(s, x, y, dy, gx, gy) >= 0)) {
 			*steps = n;
-			return y * pw + x;
+			return c;
 		}
 	}
 }
@@ -483,7 +679,8 @@ static unsigned gridpath_successor_dirs(int from)
 		return 0xffu;
 	int dx = gridpath_dx[from], dy = gridpath_dy[from];
 	if (dx != 0 && dy != 0)
-		return 1u << from | 1u << gridpath_dir_of[1][dx + 1] | 1u << gridpath_dir_of[dy + 1][1];
+		return 1u << from | 1u << gridpath_dir_of[1][dx + 1] |
+		       1u << gridpath_dir_of[dy + 1][1];
 	if (dy == 0) /* along x: on, both sides, both forward diagonals */
 		return 1u << from | 1u << 1 | 1u << 3 | 1u << gridpath_dir_of[2][dx + 1] |
 		       1u << gridpath_dir_of[0][dx + 1];
@@ -530,7 +727,13 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			break;
 		}
 		const int32_t cx = c % pw, cy = c / pw;
-		unsigned dirs = gridpath_successor_dirs(nc->from);
+		/* a run whose first step is illegal finds nothing: not tried */
+		unsigned dirs = gridpath_successor_dirs(nc->from) & s->moves[c];
+		/* All the runs first, then their jump points in order of d: the runs read
+		 * only rows, cols and moves, so the nodes of the jump points (a cache miss
+		 * each, most of the maze's time) are fetched while the next runs scan. */
+		int32_t found_n[8], found_steps[8];
+		int found_d[8], runs = 0;
 		for (int d = 0; d < 8; d++) {
 			if (!((dirs >> d) & 1))
 				continue;
@@ -538,13 +741,22 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			int32_t n = gridpath_jump(s, cx, cy, d, gx, gy, &steps);
 			if (n < 0)
 				continue;
+			GRIDPATH_PREFETCH(&node[n]);
+			found_n[runs] = n;
+			found_steps[runs] = steps;
+			found_d[runs++] = d;
+		}
+		for (int k = 0; k < runs; k++) {
+			const int32_t n = found_n[k], steps = found_steps[k];
+			const int d = found_d[k];
 			GridPathNode *nn = &node[n];
 			if (nn->mark == closed_mark)
 				continue;
 			int32_t ns = nc->straight + (d < 4 ? steps : 0);
 			int32_t nd = nc->diagonal + (d < 4 ? 0 : steps);
 			double ng = gridpath_cost(ns, nd);
-			if (nn->mark == open_mark && !(ng < gridpath_cost(nn->straight, nn->diagonal)))
+			if (nn->mark == open_mark &&
+			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
 				continue;
 			nn->mark = open_mark;
 			nn->straight = ns;
@@ -567,9 +779,9 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 
 	/* Walk back run by run (see PATH above), filling the path from its end. */
 	int32_t steps = node[goal].straight + node[goal].diagonal;
-	for (int32_t i = 0; i <= steps; i++)
-		path_push(path, vec2(0, 0));
-	int32_t c = goal, i = steps;
+	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
+	path->count = steps + 1;                     /* every point is written below */
+	int32_t c = goal, i = steps, x = gx, y = gy; /* c = y pw + x: no division */
 	path->pts[i] = vec2((double)(gx - 1) + 0.5, (double)(gy - 1) + 0.5);
 	while (c != start) {
 		const int d = node[c].from;
@@ -579,8 +791,9 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		const int32_t known = node[c].run;
 		for (int32_t k = 1;; k++) {
 			int32_t r = c - k * back;
-			path->pts[i - k] =
-			    vec2((double)(r % pw - 1) + 0.5, (double)(r / pw - 1) + 0.5);
+			x -= gridpath_dx[d];
+			y -= gridpath_dy[d];
+			path->pts[i - k] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
 			const GridPathNode *nr = &node[r];
 			bool run_start = known ? k == known
 			                       : nr->mark == closed_mark &&
@@ -621,23 +834,25 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	GridPathNode *node = s->node;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
 
-	gridpath_open_reset(s);
+	gridpath_ring_reset(s);
 	node[start].mark = open_mark;
 	node[start].straight = node[start].diagonal = 0;
+	node[start].from = GRIDPATH_NO_PARENT;
 	{
 		int32_t ax = abs(goal_x - (sx + 1)), ay = abs(goal_y - (sy + 1));
 		int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
 		s->f_start = gridpath_cost(hi - lo, lo);
-		gridpath_push(s, (GridPathOpen){s->f_start, 0, start});
+		gridpath_ring_push(s, (GridPathOpen){s->f_start, 0, start});
 	}
 	int64_t expanded = 0;
 	int found = 0;
 	GridPathOpen e;
-	s->stack_count = 0;
+	GridPathOpen *stack = s->stack; /* s->stack, in locals (see below) */
+	int stack_count = 0, stack_cap = s->stack_cap;
 	for (;;) {
-		if (s->stack_count > 0)
-			e = s->stack[--s->stack_count];
-		else if (!gridpath_pop(s, &e))
+		if (stack_count > 0)
+			e = stack[--stack_count];
+		else if (!gridpath_ring_pop(s, &e))
 			break;
 		int32_t c = e.cell;
 		/* Stale entries need no test of their own: a cell's entries leave the heap
@@ -652,49 +867,63 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			found = 1;
 			break;
 		}
-		int32_t cx = c % pw, cy = c / pw;
 		/* the legal steps from one byte (gridpath_init), in order of d as before:
 		 * the order of pushes decides ties, and so the path */
-		for (unsigned m = nc->moves; m; m &= m - 1) {
+		unsigned m = nc->moves;
+		if (nc->from != GRIDPATH_NO_PARENT)
+			m &= ~(unsigned)s->skip[nc->from][node[c - offset[nc->from]].moves];
+		/* locals: the stores of a byte below (from) may alias anything, so fields
+		 * read through pointers would be read again after each */
+		const int32_t cs = nc->straight, cd = nc->diagonal;
+		const int32_t rx = goal_x - c % pw, ry = goal_y - c / pw; /* goal - c */
+		for (; m; m &= m - 1) {
 			const int d = gridpath_ctz64(m);
-			int32_t n = c + offset[d];
+			const int32_t n = c + offset[d];
 			GridPathNode *nn = &node[n];
-			if (nn->mark == closed_mark)
+			const uint32_t mark = nn->mark;
+			if (mark == closed_mark)
 				continue;
-			int32_t ns = nc->straight + (d < 4), nd = nc->diagonal + (d >= 4);
-			double ng = gridpath_cost(ns, nd);
-			if (nn->mark == open_mark &&
-			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
+			const int32_t ns = cs + (d < 4), nd = cd + (d >= 4);
+			const double ng = gridpath_cost(ns, nd);
+			if (mark == open_mark && !(ng < gridpath_cost(nn->straight, nn->diagonal)))
 				continue;
 			nn->mark = open_mark;
 			nn->straight = ns;
 			nn->diagonal = nd;
 			nn->from = (uint8_t)d;
-			int32_t ax = abs(goal_x - (cx + gridpath_dx[d]));
-			int32_t ay = abs(goal_y - (cy + gridpath_dy[d]));
-			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
+			const int32_t ax = abs(rx - gridpath_dx[d]), ay = abs(ry - gridpath_dy[d]);
+			const int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
+			const GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng,
+			                         n};
 			if (ne.f == e.f) {
 				/* As good as the best open entry: expand it next, no heap. */
-				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
-				s->stack[s->stack_count++] = ne;
+				if (stack_count == stack_cap)
+					stack = util_grow(stack, &stack_cap, stack_count + 1,
+					                  sizeof *stack);
+				stack[stack_count++] = ne;
 			} else
-				gridpath_push(s, ne);
+				gridpath_ring_push(s, ne);
 		}
 	}
+	s->stack = stack;
+	s->stack_cap = stack_cap;
 	path->expanded = expanded;
 	if (!found)
 		return GRIDPATH_NO_PATH;
 
 	/* Walk back along from[], then reverse: the path runs start to goal. */
 	int32_t steps = node[goal].straight + node[goal].diagonal;
-	for (int32_t i = 0; i <= steps; i++)
-		path_push(path, vec2(0, 0));
-	int32_t c = goal;
+	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
+	path->count = steps + 1;                  /* every point is written below */
+	int32_t c = goal, x = goal_x, y = goal_y; /* c = y pw + x: no division */
 	for (int32_t i = steps; i >= 0; i--) {
-		path->pts[i] = vec2((double)(c % pw - 1) + 0.5, (double)(c / pw - 1) + 0.5);
-		if (i > 0)
-			c -= offset[node[c].from];
+		path->pts[i] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
+		if (i > 0) {
+			const int d = node[c].from;
+			c -= offset[d];
+			x -= gridpath_dx[d];
+			y -= gridpath_dy[d];
+		}
 	}
 	*length = gridpath_cost(node[goal].straight, node[goal].diagonal);
 	return GRIDPATH_FOUND;

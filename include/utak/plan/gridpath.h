@@ -22,19 +22,24 @@
  * runs as a jump-point search (gridpath.c): the same length, path.expanded then
  * counts the jump points expanded.
  *
- * MEMORY: 18 bytes per cell of the grid with a one-cell border, plus the open list
- * (16 bytes per pushed entry; at most 8 pushes per cell, far fewer in practice),
- * kept between queries.
+ * MEMORY: 19 bytes per cell of the grid with a one-cell border (the node, and a
+ * byte each in rows, cols and moves), plus the open list (16 bytes per pushed entry;
+ * at most 8 pushes per cell, far fewer in practice), kept between queries.
  *
- * PERFORMANCE (make bench-compare, issue 16: this 2-core machine, one thread, thread
- * CPU time, median of 5; corner to corner, the ends as skelbench picks them): on the
- * 1024 grids plain A* 5.6 ms (den520d scaled 4 times) to 57 ms (the maze, 688 000
- * cells expanded), the jump search 0.54 to 11.4 ms (rooms 1.3, Boston_0_1024 1.7);
- * at 4096, A* 114-542 ms and the jump search 5-104 ms. Against libtcod's A* on the
- * same problems: plain A* 8.9-28 times faster except on the maze (1.3-1.4), the jump
- * search 94-501 times except on the maze (6.7-7.4). Each cell's legal steps in a
- * byte of its node (see GridPathNode.moves) cut the maze's instructions from 438 to
- * 337 million (README, Benchmarks). */
+ * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
+ * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
+ * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.7
+ * ms, rects 10.0, maze 42.2 (688 000 cells expanded), Boston_0_1024 13.3, den520d
+ * 3.2; libtcod's A* over these 26.4, 33.4, 2.08, 20.6 and 17.5 times (before this
+ * work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 1.35, 1.16, 10.8, 1.76 and
+ * 0.54 ms, libtcod over it 327, 286, 8.16, 155 and 103 times. At 4096 (utak by
+ * skelbench --compare --side 4096, libtcod by tcodpath in an earlier run on the same
+ * grids): plain A* rooms 326 ms, rects 195, maze 431, libtcod over it 89, 93 and
+ * 2.3 times; the jump search 40, 46 and 119 ms, 729, 398 and 8.4 times. Goals of
+ * the issue still unmet: plain A* 5 times libtcod on the maze (2.1-2.3: it expands
+ * every cell at about 300 instructions each, see gridpath.c), the jump search 10
+ * times there (8.2-8.4: its time is mostly cache misses at the jump points' nodes).
+ * Instructions a query (callgrind): gridpath.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
 
@@ -64,6 +69,9 @@ typedef struct GridPathOpen {
 	                 entry at 16 bytes; it only orders ties, so rounding is harmless) */
 	int32_t cell; /* index into the padded grid */
 } GridPathOpen;
+
+/* Buckets in plain A*'s ring (gridpath.c): a power of two. */
+#define GRIDPATH_RING 256
 
 /* One bucket of the open list (opaque, see below). */
 typedef struct GridPathBucket {
@@ -104,6 +112,12 @@ typedef struct GridPathSearch {
 	 * list: they may be expanded next in any order, so they skip the heap. */
 	GridPathOpen *stack;
 	int stack_count, stack_cap;
+	/* Plain A*'s open list: a ring of GRIDPATH_RING buckets of f (gridpath.c). */
+	GridPathBucket *ring;                   /* NULL before the first query */
+	uint64_t ring_bits[GRIDPATH_RING / 64]; /* bit i: ring[i] holds entries */
+	int64_t ring_now;                       /* the current bucket's number */
+	GridPathOpen *scratch;                  /* for sorting a bucket */
+	int scratch_cap;
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
 	 * search. The jump search scans the grid along rows and columns, so it keeps the
 	 * free cells twice more, a byte each: row-major (rows) and column-major (cols),
@@ -112,6 +126,11 @@ typedef struct GridPathSearch {
 	int32_t ph;     /* padded height: h + 2 */
 	uint8_t *rows;  /* pw * ph: rows[y * pw + x] = 1 when (x - 1, y - 1) is free */
 	uint8_t *cols;  /* ph * pw: cols[x * ph + y], the same transposed */
+	uint8_t *moves; /* pw * ph: each cell's legal steps (GridPathNode.moves), for the
+	                   jump search's diagonal runs */
+	/* skip[d][m]: the steps an expansion of a cell reached by step d need not try,
+	 * when its parent's legal steps are m (see gridpath.c); d = 8 for a start. */
+	uint8_t skip[9][256];
 } GridPathSearch;
 
 /* gridpath_init(s, grid): prepares a search on a copy of grid (w, h >= 1). */
