@@ -307,7 +307,6 @@ static void arrive(Controller *c)
 		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER) {
 			c->phase = PHASE_SEAT;
 			c->seat_axis = c->seat_pushes = 0;
-			push_seat_begin(c);
 		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
 		else if (objects_touching_target(c)) {

@@ -254,16 +254,6 @@ bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const 
 
 /* ---- seating ---------------------------------------------------------------------- */
 
-/* push_seat_begin(c): the object is at the corner as planned and seating begins:
- * the held set as carried so far is kept (c->seat_held_*). */
-void push_seat_begin(Controller *c)
-{
-	const WorldModel *m = &c->model;
-	c->seat_held_count = m->held_count;
-	memcpy(c->seat_held_dx, m->held_dx, (size_t)m->held_count * sizeof *m->held_dx);
-	memcpy(c->seat_held_dy, m->held_dy, (size_t)m->held_count * sizeof *m->held_dy);
-}
-
 /* push_seat(c): after a push that seats the object: on along this axis, or, when it
  * made no headway (pressed against a wall) or enough pushes were made, the next
  * axis (controller_decide judges the corner after the last). */
@@ -279,20 +269,6 @@ void push_seat(Controller *c)
  * holds, judged before he lets go. */
 void push_seat_finish(Controller *c)
 {
-	/* Utak holds one rigid object: what he holds now is what he carried to the
-	 * corner. A seating push halts against a wall part of the way, the model's
-	 * prediction puts the object a square further, and until the disparity
-	 * search catches up the eye's view of the object and the wall is laid down
-	 * a square off: the held set grows by a row of the wall or of the object's
-	 * old place (wm_regrow_held), so that a square no longer reads as one and
-	 * its leading edge seems a square nearer the corner than it is. The set as
-	 * carried, placed at Utak's corrected position, is the better belief. */
-	WorldModel *m = &c->model;
-	if (c->seat_held_count > 0) {
-		m->held_count = c->seat_held_count;
-		memcpy(m->held_dx, c->seat_held_dx, (size_t)c->seat_held_count * sizeof *m->held_dx);
-		memcpy(m->held_dy, c->seat_held_dy, (size_t)c->seat_held_count * sizeof *m->held_dy);
-	}
 	int64_t short_by = goals_corner_shortfall(c);
 	if (shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count) != c->task.shape) {
 		/* What came along is not what the task named: another object touching

@@ -154,12 +154,6 @@ typedef struct Controller {
 	 * pushes made along it, and where the last one set off. */
 	int seat_axis, seat_pushes;
 	Vec2 seat_from;
-	/* The held set as seating began (offsets from Utak's square): what was carried
-	 * through open space. Seating pushes halt against the walls a fraction short
-	 * of what the model predicts, so the squares that join or leave the held set
-	 * while it is pressed home are as likely the walls' (push_seat_finish). */
-	int32_t seat_held_count;
-	int32_t seat_held_dx[WORLDMODEL_HELD_MAX], seat_held_dy[WORLDMODEL_HELD_MAX];
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
 	/* A tug (tug.h): its stage (0 none, 1 grasped, 2 pulling), the direction

@@ -28,8 +28,6 @@ bool push_goal(const Controller *c, const Grid *g, const int32_t *dist, const Ro
  * it from, for the push the task asks. */
 bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const RoomMap *rm, int32_t start_room,
 		     Vec2 *goal);
-/* push_seat_begin(c): seating begins: the held set as carried is kept. */
-void push_seat_begin(Controller *c);
 /* push_seat(c): after a seating push: on along this axis or on to the next. */
 void push_seat(Controller *c);
 /* push_seat_finish(c): both axes pressed: judge the corner before letting go. */
