@@ -76,7 +76,11 @@ static bool make_plan(Controller *c, char *why, size_t size)
 		 * felt first: a wall it did not see meet the verge looks the same. */
 		if (k >= 0 && !objects_read(c, k).guessed && objects_felt(c, k)) {
 			round_lay_out(c, k);
-			gr.goal = c->round[0];
+			goals_choose(c, &gr); /* the first point, moved off a wall if need be */
+			if (!gr.found) {
+				snprintf(why, size, "%s", gr.why);
+				return false;
+			}
 		}
 	}
 	c->goal = gr.goal;

@@ -672,8 +672,10 @@ void goals_choose(Controller *c, GoalResult *out)
 		break;
 	default: /* an object's task (going round it first finds it) */
 		if (c->task.kind == TASK_GO_ROUND && c->round_count > 0) {
-			out->found = true;
-			out->goal = c->round[c->round_next];
+			out->found = round_goal(c, dist, &out->goal);
+			if (!out->found)
+				snprintf(out->why, sizeof out->why, "no way round the %s: walls or objects close every way past one side of it",
+					 shape);
 			break;
 		}
 		if (!pushing && c->carry && carrytask_goal(c, dist, out))

@@ -1,4 +1,12 @@
-/* round.c - going round an object and returning (paper 2.3 task (iv)). CONTROLLER SIDE. */
+/* round.c - going round an object and returning (paper 2.3 task (iv)). CONTROLLER SIDE.
+ *
+ * The loop is four points, one outside each corner of the object's believed rectangle,
+ * visited in turn, then the start: each leg is planned on the screen like any other
+ * goal (paper 4.3: the path runs on the skeleton of the space round the object), so
+ * only the points need care. A point laid out on a wall or another object (the object
+ * stands beside a wall, or in clutter), or seen to be so later, moves to the reachable
+ * square nearest it on the same side of the object (round_goal): the loop still winds
+ * round the object wherever there is room to pass, whatever its shape. */
 #include "utak/mind/round.h"
 
 #include <math.h>
@@ -53,4 +61,41 @@ bool round_stale(Controller *c)
 	Box r = c->model.node[k].rect, o = c->round_rect;
 	return fabs(r.lo.x - o.lo.x) > 1 || fabs(r.lo.y - o.lo.y) > 1 || fabs(r.hi.x - o.hi.x) > 1 ||
 	       fabs(r.hi.y - o.hi.y) > 1;
+}
+
+/* round_goal(c, dist, goal): the goal of the loop's next leg on the current screen
+ * (dist: steps from Utak's cell, goals_reach). A corner point whose square is
+ * reachable stands. Else the reachable square nearest it (ties to the nearer by
+ * steps) on the same side of the object: in the same quadrant about the centre of
+ * the rectangle the loop was laid out round, and outside that rectangle by half a
+ * square, so that the legs between the points still pass round the object. The
+ * start, if walled off, gives way to the reachable square nearest it. False when a
+ * corner's quadrant has no reachable square: there is no way round. */
+bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	Vec2 p = c->round[c->round_next];
+	int32_t i, j;
+	if (goals_cell_of(s, p, &i, &j) && dist[j * s->w + i] >= 0) {
+		*goal = p;
+		return true;
+	}
+	if (c->round_next == c->round_count - 1)
+		return goals_near(c, p, dist, goal);
+	const Box *r = &c->round_rect;
+	Vec2 m = vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
+	double sx = p.x < m.x ? -1 : 1, sy = p.y < m.y ? -1 : 1, best = INFINITY;
+	for (int32_t at = 0; at < s->w * s->h; at++) {
+		if (dist[at] < 0)
+			continue;
+		Vec2 q = goals_centre(s->x0 + at % s->w, s->y0 + at / s->w);
+		bool quadrant = sx * (q.x - m.x) > 0 && sy * (q.y - m.y) > 0;
+		bool outside = q.x < r->lo.x - 0.5 || q.x > r->hi.x + 0.5 || q.y < r->lo.y - 0.5 || q.y > r->hi.y + 0.5;
+		double d = goals_distance(q, p) + 1e-3 * dist[at];
+		if (quadrant && outside && d < best) {
+			best = d;
+			*goal = q;
+		}
+	}
+	return best < INFINITY;
 }

@@ -9,6 +9,10 @@
 
 /* round_lay_out(c, k): the points of a loop round object node k. */
 void round_lay_out(Controller *c, int32_t k);
+/* round_goal(c, dist, goal): the goal of the loop's next leg: its point, or where the
+ * screen has a wall or object there, the reachable square nearest it on the same side
+ * of the object (dist: steps from Utak). False when there is none: no way round. */
+bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal);
 /* round_believed_turns(c, k): how often Utak's believed path winds round node k. */
 double round_believed_turns(const Controller *c, int32_t k);
 /* round_stale(c): the loop was laid out round what is no longer the task's object. */
