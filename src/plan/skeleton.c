@@ -74,7 +74,8 @@
  *    sort and prefetching at 1024 were tried and were slower or no faster. From 1024
  *    to 4096 a side the sort grows 14-16 times, the visits 18 (maze) to 43 times
  *    (rects: many distance levels, each a sweep of the 17 MB state) before the
- *    prefetch above 8 MB (thinner_visit_all), which takes 10-25% off at 4096. The transform's own figures are in edt.c's header. */
+ *    prefetch above 8 MB (thinner_visit_all), which takes 10-25% off at 4096.
+ *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
 #include "edt_work.h"
