@@ -49,7 +49,8 @@
  *    envelope's mispredictions cost more than long windows), AVX2 for phase 1 too
  *    (no change), an AVX-512 clone (x86-64-v4: no change); a narrower window where
  *    the columns around have large g (a least g a block; 1.1-1.4 slower everywhere).
- *    Against OpenCV (cv2.distanceTransform, DIST_L2, DIST_MASK_PRECISE, one thread), `make bench-compare SIDE=1024`, one run,
+ *    Against OpenCV (cv2.distanceTransform, DIST_L2, DIST_MASK_PRECISE, one thread),
+ *    `make bench-compare SIDE=1024`, one run,
  *    medians: rooms, rects, maze, Boston_0_1024, den520d at 1024 took 1.42, 1.39, 1.16,
  *    1.63 and 1.37 ms (3-5 read passes of the grid), OpenCV 14.9, 11.0, 11.4, 12.9 and
  *    9.7: 10.5, 7.9, 9.8, 7.9 and 7.1 times faster. At 4096 (medians of 5, utak timed
