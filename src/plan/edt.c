@@ -16,7 +16,11 @@
  *    from every blocked cell, take the lower envelope of the parabolas, as in
  *    Felzenszwalb and Huttenlocher ("Distance transforms of sampled functions", Theory
  *    of Computing 8, 2012) but with exact integer comparisons in place of divisions,
- *    over the columns in their reach. A blocked cell is one more column, with g = 0.
+ *    over the columns in their reach but those whose g alone puts them above every
+ *    answer there. A window longer than 96 goes by chunks of 16 offsets and skips
+ *    a chunk's side whose columns' least g^2, plus the chunk's least k^2, cannot
+ *    lower any cell of the block (wide open space, where the columns around have
+ *    large g). A blocked cell is one more column, with g = 0.
  *    The cells just outside the grid are blocked: phase 1 starts each column at
  *    distance 1 from the rows -1 and h, and phase 2 has a blocked column at -1 and w.
  *    The loops over a block have a fixed count, which compilers vectorise at -O2;
@@ -27,7 +31,8 @@
  *
  * COMPLEXITY  O(w h) but for the windows: one pass down the grid and one up, each
  *    row's envelope pushing each column at most once; a window block costs b offsets
- *    (b <= 181), each two loads, an addition and two minima for its 32 cells.
+ *    (b <= 181), each two loads, an addition and two minima for its 32 cells; past
+ *    96, a chunk of 16 offsets costs two least-of-48 checks and may be skipped.
  *
  * MEASURED  (issue 16; thread CPU time on this 2-core machine, shared, so +-15%;
  *    `make bench-compare` for the table against the peers)
@@ -57,7 +62,34 @@
  *    and 40.2-41.0 ms against 213, 215, 238, 198 and 180: 9.0-9.4, 9.1, 12.6-13.5,
  *    3.8-4.2 and 4.4-4.5 times. The scaled maps at 4096 miss the issue's 5: their
  *    open spaces are 4 times as wide, so their windows 4 times as long (or past 181,
- *    the envelope): the windows' cost grows with the clearance, not only the cells. */
+ *    the envelope): the windows' cost grows with the clearance, not only the cells.
+ *    A second push on those two (the same values, cell for cell, on the ten grids):
+ *    the envelope without the columns whose g passes the largest bound of the row's
+ *    envelope blocks (on Boston_0_1024 at 4096, 2.8 million pushes, 2.3 million of
+ *    them popped, fell to 2.0 and 1.5), and windows longer than 96 by chunks with
+ *    skipped sides (edt_window_far: at 4096, 57% of Boston_0_1024's chunk sides past
+ *    the first and 75% of den520d's are skipped or cut by the end test). Valgrind counts at 4096: 683 and
+ *    546 million instructions to 644 and 468 (38.4 and 27.9 a cell); at 1024, 0.4
+ *    million more on every grid (12.8-22.1 million). Against the former code, best
+ *    of 5 in one process: Boston_0_1024 and den520d at 4096 1.04-1.09 and 1.11-1.14
+ *    times faster, the others 0.95-1.02 (noise). Against OpenCV (cvtime.py, one
+ *    session, utak's medians of 9 before and after OpenCV's 7): at 1024, rooms,
+ *    rects, maze, Boston_0_1024 and den520d took 1.14-1.18, 1.22-1.29, 0.74-0.80,
+ *    1.36-1.44 and 1.10-1.15 ms, OpenCV 8.3, 9.4, 10.8, 11.5 and 8.1: 7.1-7.3,
+ *    7.3-7.7, 13.5-14.6, 8.0-8.5 and 7.1-7.4 times (1.1-1.4 ns a cell); at 4096
+ *    22.6-23.6, 23.5-25.1, 17.1-17.8, 44.1-45.4 and 33.6-34.8 ms against 194, 206,
+ *    219, 193 and 173: 8.2-8.6, 8.2-8.8, 12.3-12.8, 4.3-4.4 and 5.0-5.2 times.
+ *    Boston_0_1024 at 4096 still misses the 5 (about 39 ms would meet it): its
+ *    windows of 16 to 181 take about half the time, the envelope a sixth, phase 1
+ *    a sixth. Tried and not kept: the chunks for every window past 16 (2-19% slower
+ *    at 1024: in edt_row their code kept the short windows' lanes in memory, which
+ *    the function of its own avoids), switches at 32, 48, 64, 80 and 128 (no better),
+ *    chunks of 8 or 32 (no better), the window's k^2 from a table (GCC then kept the
+ *    lanes in memory, 2-10 times slower), the envelope also without each column no
+ *    nearer than both neighbours (exact, no faster: its branch mispredicts as the
+ *    pops did), one pop without a branch (slower: a longer dependency chain), the
+ *    switch to the envelope at 96 or 128 (slower), phase 1's columns in signed lanes
+ *    for SSE2 (1.7% fewer instructions, no faster). */
 #include "edt_work.h"
 
 #include <assert.h>
