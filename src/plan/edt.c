@@ -16,7 +16,11 @@
  *    from every blocked cell, take the lower envelope of the parabolas, as in
  *    Felzenszwalb and Huttenlocher ("Distance transforms of sampled functions", Theory
  *    of Computing 8, 2012) but with exact integer comparisons in place of divisions,
- *    over the columns in their reach. A blocked cell is one more column, with g = 0.
+ *    over the columns in their reach but those whose g alone puts them above every
+ *    answer there. A window longer than 96 goes by chunks of 16 offsets and skips
+ *    a chunk's side whose columns' least g^2, plus the chunk's least k^2, cannot
+ *    lower any cell of the block (wide open space, where the columns around have
+ *    large g). A blocked cell is one more column, with g = 0.
  *    The cells just outside the grid are blocked: phase 1 starts each column at
  *    distance 1 from the rows -1 and h, and phase 2 has a blocked column at -1 and w.
  *    The loops over a block have a fixed count, which compilers vectorise at -O2;
@@ -27,7 +31,8 @@
  *
  * COMPLEXITY  O(w h) but for the windows: one pass down the grid and one up, each
  *    row's envelope pushing each column at most once; a window block costs b offsets
- *    (b <= 181), each two loads, an addition and two minima for its 32 cells.
+ *    (b <= 181), each two loads, an addition and two minima for its 32 cells; past
+ *    96, a chunk of 16 offsets costs two least-of-48 checks and may be skipped.
  *
  * MEASURED  (issue 16; thread CPU time on this 2-core machine, shared, so +-15%;
  *    `make bench-compare` for the table against the peers)
@@ -58,7 +63,34 @@
  *    and 40.2-41.0 ms against 213, 215, 238, 198 and 180: 9.0-9.4, 9.1, 12.6-13.5,
  *    3.8-4.2 and 4.4-4.5 times. The scaled maps at 4096 miss the issue's 5: their
  *    open spaces are 4 times as wide, so their windows 4 times as long (or past 181,
- *    the envelope): the windows' cost grows with the clearance, not only the cells. */
+ *    the envelope): the windows' cost grows with the clearance, not only the cells.
+ *    A second push on those two (the same values, cell for cell, on the ten grids):
+ *    the envelope without the columns whose g passes the largest bound of the row's
+ *    envelope blocks (on Boston_0_1024 at 4096, 2.8 million pushes, 2.3 million of
+ *    them popped, fell to 2.0 and 1.5), and windows longer than 96 by chunks with
+ *    skipped sides (edt_window_far: at 4096, 57% of Boston_0_1024's chunk sides past
+ *    the first and 75% of den520d's are skipped or cut by the end test). Valgrind counts at 4096: 683 and
+ *    546 million instructions to 644 and 468 (38.4 and 27.9 a cell); at 1024, 0.4
+ *    million more on every grid (12.8-22.1 million). Against the former code, best
+ *    of 5 in one process: Boston_0_1024 and den520d at 4096 1.04-1.09 and 1.11-1.14
+ *    times faster, the others 0.95-1.02 (noise). Against OpenCV (cvtime.py, one
+ *    session, utak's medians of 9 before and after OpenCV's 7): at 1024, rooms,
+ *    rects, maze, Boston_0_1024 and den520d took 1.14-1.18, 1.22-1.29, 0.74-0.80,
+ *    1.36-1.44 and 1.10-1.15 ms, OpenCV 8.3, 9.4, 10.8, 11.5 and 8.1: 7.1-7.3,
+ *    7.3-7.7, 13.5-14.6, 8.0-8.5 and 7.1-7.4 times (1.1-1.4 ns a cell); at 4096
+ *    22.6-23.6, 23.5-25.1, 17.1-17.8, 44.1-45.4 and 33.6-34.8 ms against 194, 206,
+ *    219, 193 and 173: 8.2-8.6, 8.2-8.8, 12.3-12.8, 4.3-4.4 and 5.0-5.2 times.
+ *    Boston_0_1024 at 4096 still misses the 5 (about 39 ms would meet it): its
+ *    windows of 16 to 181 take about half the time, the envelope a sixth, phase 1
+ *    a sixth. Tried and not kept: the chunks for every window past 16 (2-19% slower
+ *    at 1024: in edt_row their code kept the short windows' lanes in memory, which
+ *    the function of its own avoids), switches at 32, 48, 64, 80 and 128 (no better),
+ *    chunks of 8 or 32 (no better), the window's k^2 from a table (GCC then kept the
+ *    lanes in memory, 2-10 times slower), the envelope also without each column no
+ *    nearer than both neighbours (exact, no faster: its branch mispredicts as the
+ *    pops did), one pop without a branch (slower: a longer dependency chain), the
+ *    switch to the envelope at 96 or 128 (slower), phase 1's columns in signed lanes
+ *    for SSE2 (1.7% fewer instructions, no faster). */
 #include "edt_work.h"
 
 #include <assert.h>
@@ -99,11 +131,37 @@
 #define EDT_CLIP (EDT_WINDOW_BOUND * EDT_WINDOW_BOUND)
 _Static_assert(EDT_CLIP + EDT_WINDOW_BOUND * EDT_WINDOW_BOUND <= UINT16_MAX,
                "the window's 16-bit lanes must not overflow");
+/* A window block with a bound past EDT_FAR goes by chunks of EDT_CHUNK offsets, some
+ * skipped (edt_window_far); shorter ones by edt_window, in one loop (chunks there
+ * cost more than they save: a switch at 16, 32, 48, 64 was 2-19% slower on the 1024
+ * maps; at 96 no map is slower by more than the noise, and den520d at 4096 is 1.15
+ * times faster, Boston_0_1024 1.06). */
+#define EDT_CHUNK 16
+#ifndef EDT_FAR
+#define EDT_FAR 96
+#endif
 /* The 16-bit squares are kept with this many zero columns on either side, so that a
- * window (k <= EDT_WINDOW_BOUND) never reads outside; a zero outside the grid stands
+ * window (k <= EDT_WINDOW_BOUND), and edt_window_far's least squares over a chunk
+ * (EDT_CHUNK columns further), never read outside; a zero outside the grid stands
  * for a blocked column, which changes nothing beyond columns -1 and w (those are
  * nearer). */
-#define EDT_PAD EDT_WINDOW_BOUND
+#define EDT_PAD (EDT_WINDOW_BOUND + EDT_CHUNK)
+
+/* The window's functions are inlined into edt_row, so that its AVX2 clone has them
+ * in AVX2 too (GCC does not inline edt_window, grown by its chunks, on its own). */
+#if defined(__GNUC__)
+#define EDT_INLINE static inline __attribute__((always_inline))
+#define EDT_NOINLINE __attribute__((noinline))
+#else
+#define EDT_INLINE static inline
+#define EDT_NOINLINE
+#endif
+/* On x86-64 Linux the row pass is also compiled for AVX2, chosen at load time. */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define EDT_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define EDT_CLONES
+#endif
 
 /* The envelope (edt_envelope_push) keeps its first column at the bottom of its stack for
  * good (as in Felzenszwalb and Huttenlocher, where z[0] = -infinity): that entry's
@@ -140,11 +198,16 @@ typedef struct EdtCursor {
 	int32_t last; /* the last column pushed */
 } EdtCursor;
 
-/* edt_envelope_push(v, c, g, a, z): pushes the columns a..z not pushed yet (g is
+/* edt_envelope_push(v, c, g, a, z, far): pushes the columns a..z not pushed yet (g is
  * read there; -1 <= a, z <= w, g[-1] = g[w] = 0: the blocked columns outside the
- * grid); a gap after the last column pushed starts the stack afresh. */
+ * grid) but those with g > far; a gap after the last column pushed starts the stack
+ * afresh. Every cell the envelope answers has dist2 <= far^2 (far is the largest bound
+ * b of the row's envelope blocks), so a column with g > far, its parabola above g^2 >
+ * far^2 everywhere, is never strictly lowest: leaving it out changes no value, and
+ * saves its push and, in wide open space where most such columns would be pushed only
+ * to be popped, the pops' mispredicted branches. */
 static void edt_envelope_push(const EdtStack *v, EdtCursor *c, const uint16_t *restrict g,
-                              int32_t a, int32_t z)
+                              int32_t a, int32_t z, int32_t far)
 {
 	int32_t *restrict vu = v->u, *restrict vG = v->G, *restrict vL = v->L;
 	int64_t *restrict vF = v->F, *restrict vD = v->D;
@@ -161,6 +224,8 @@ static void edt_envelope_push(const EdtStack *v, EdtCursor *c, const uint16_t *r
 	}
 	for (int32_t u = c->last + 1; u <= z; u++) {
 		const int32_t gu = g[u];
+		if (gu > far)
+			continue;
 		const int32_t Gu = gu * gu;
 		const int64_t Fu = (int64_t)u * u + Gu;
 		/* the top is nowhere strictly lowest: cross(top, u) <= cross(below, top) */
@@ -203,7 +268,7 @@ static void edt_envelope_sweep(const EdtStack *v, EdtCursor *c, int32_t x0, int3
 
 /* edt_window_step(at, k, best): best[i] = min(best[i], at[i - k] + k^2, at[i + k] + k^2)
  * for the cells of a block. */
-static inline void edt_window_step(const uint16_t *restrict at, int32_t k, uint16_t *restrict best)
+EDT_INLINE void edt_window_step(const uint16_t *restrict at, int32_t k, uint16_t *restrict best)
 {
 	const uint16_t kk = (uint16_t)(k * k);
 	const uint16_t *restrict left = at - k, *restrict right = at + k;
@@ -212,6 +277,95 @@ static inline void edt_window_step(const uint16_t *restrict at, int32_t k, uint1
 		m = (uint16_t)(m + kk);
 		best[i] = m < best[i] ? m : best[i];
 	}
+}
+
+/* edt_window_side(src, k, best): best[i] = min(best[i], src[i] + k^2), one side of
+ * edt_window_step (src = at - k or at + k). */
+EDT_INLINE void edt_window_side(const uint16_t *restrict src, int32_t k,
+                                uint16_t *restrict best)
+{
+	const uint16_t kk = (uint16_t)(k * k);
+	for (int i = 0; i < EDT_BLOCK; i++) {
+		const uint16_t m = (uint16_t)(src[i] + kk);
+		best[i] = m < best[i] ? m : best[i];
+	}
+}
+
+/* edt_least(p): the least of p[0 .. EDT_BLOCK + EDT_CHUNK - 1]. */
+EDT_INLINE int32_t edt_least(const uint16_t *restrict p)
+{
+	uint16_t m = UINT16_MAX;
+	for (int i = 0; i < EDT_BLOCK + EDT_CHUNK; i++)
+		m = p[i] < m ? p[i] : m;
+	return m;
+}
+
+/* edt_block_out(best, out, n): out[i] = best[i] for i < n (n <= EDT_BLOCK); returns
+ * the largest best[i]. */
+EDT_INLINE int32_t edt_block_out(const uint16_t *restrict best, int32_t *restrict out, int n)
+{
+	uint16_t most = 0;
+	for (int i = 0; i < EDT_BLOCK; i++)
+		most = best[i] > most ? best[i] : most;
+	if (n == EDT_BLOCK)
+		for (int i = 0; i < EDT_BLOCK; i++)
+			out[i] = best[i];
+	else
+		for (int i = 0; i < n; i++)
+			out[i] = best[i];
+	return most;
+}
+
+/* edt_window_far(sq, x0, reach, out, n): edt_window for a reach of EDT_CHUNK or
+ * more, its answers written to out[0 .. n - 1] (edt_block_out).
+ * The offsets go by chunks of EDT_CHUNK; before each chunk past the first, a side
+ * (left or right) whose columns' least square plus the chunk's least k^2 is no lower
+ * than the largest best so far cannot lower any cell, and is skipped (in wide open
+ * space, where the columns around have large g, most are); the window ends once k^2
+ * alone is that high. A function of its own, not inlined: in edt_row its code slowed
+ * the short windows' loop (2-18% on the 1024 maps, where it hardly runs). */
+EDT_CLONES EDT_NOINLINE static int32_t edt_window_far(const uint16_t *restrict sq,
+                                                      int32_t x0, int32_t reach,
+                                                      int32_t *restrict out, int n)
+{
+	const uint16_t *restrict at = sq + x0;
+	uint16_t lane[EDT_BLOCK];
+	for (int i = 0; i < EDT_BLOCK; i++)
+		lane[i] = UINT16_MAX;
+	for (int32_t k = 0; k < EDT_CHUNK; k += 2) {
+		edt_window_step(at, k, lane);
+		edt_window_step(at, k + 1, lane);
+	}
+	for (int32_t k0 = EDT_CHUNK; k0 <= reach; k0 += EDT_CHUNK) {
+		uint16_t most = 0;
+		for (int i = 0; i < EDT_BLOCK; i++)
+			most = lane[i] > most ? lane[i] : most;
+		const int32_t kk = k0 * k0;
+		if (kk >= most)
+			break;
+		/* the chunk's offsets k0 .. k0 + EDT_CHUNK - 1 reach the columns
+		 * x0 - k0 - EDT_CHUNK + 1 .. x0 - k0 + EDT_BLOCK - 1 on the left, and
+		 * x0 + k0 .. x0 + k0 + EDT_BLOCK + EDT_CHUNK - 2 on the right */
+		const int left = kk + edt_least(at - k0 - EDT_CHUNK) < most;
+		const int right = kk + edt_least(at + k0) < most;
+		const int32_t end = reach < k0 + EDT_CHUNK - 1 ? reach : k0 + EDT_CHUNK - 1;
+		if (left && right)
+			for (int32_t k = k0; k <= end; k += 2) {
+				edt_window_step(at, k, lane);
+				edt_window_step(at, k + 1, lane);
+			}
+		else if (left)
+			for (int32_t k = k0; k <= end; k += 2) {
+				edt_window_side(at - k, k, lane);
+				edt_window_side(at - k - 1, k + 1, lane);
+			}
+		else if (right)
+			for (int32_t k = k0; k <= end; k += 2) {
+				edt_window_side(at + k, k, lane);
+				edt_window_side(at + k + 1, k + 1, lane);
+			}
+	}
+	return edt_block_out(lane, out, n);
 }
 
 /* edt_window(sq, x0, reach, best): best[i] = min over |k| <= reach (or reach + 1: two
@@ -318,11 +472,6 @@ static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 	}
 }
 
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
-#define EDT_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define EDT_CLONES
-#endif
 
 /* edt_row(r, up, out): one row: its column distances from up, its distances above
  * (edt_columns), then phase 2 into out (w values; up may lie in out's first half,
@@ -341,9 +490,12 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 	/* the blocks' bounds first, in a loop of its own, where the square roots of
 	 * successive blocks overlap (in the loop below each waited for a branch) */
 	int32_t *restrict reach = r->reach;
+	int32_t far = 0; /* the largest bound of the blocks left to the envelope */
 	for (int32_t blk = 0; blk < blocks; blk++) {
 		const int32_t c = edt_ceil_sqrt(bound[blk]) + 1;
-		reach[blk] = r->most[blk] < c ? r->most[blk] : c;
+		const int32_t b = r->most[blk] < c ? r->most[blk] : c;
+		reach[blk] = b;
+		far = b > EDT_WINDOW_BOUND && b > far ? b : far;
 	}
 	reach[blocks] = EDT_WINDOW_BOUND + 1; /* past the end: ends a run */
 	for (int32_t blk = 0; blk <= blocks; blk++) {
@@ -359,7 +511,7 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 			const int32_t r0 = run * EDT_BLOCK, r1 = x0 < w ? x0 : w;
 			const int32_t a = r0 - run_reach > -1 ? r0 - run_reach : -1;
 			const int32_t z = r1 - 1 + run_reach < w ? r1 - 1 + run_reach : w;
-			edt_envelope_push(&r->v, &cursor, g, a, z);
+			edt_envelope_push(&r->v, &cursor, g, a, z, far);
 			edt_envelope_sweep(&r->v, &cursor, r0, r1, out);
 			for (int32_t k = run; k < blk; k++) {
 				int32_t most = 0;
@@ -374,20 +526,17 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 		}
 		if (blk == blocks)
 			break;
-		uint16_t best[EDT_BLOCK];
-		edt_window(sq, x0, b > 0 ? b - 1 : 0, best);
-		uint16_t most = 0;
-		for (int i = 0; i < EDT_BLOCK; i++)
-			most = best[i] > most ? best[i] : most;
+		const int n = w - x0 < EDT_BLOCK ? w - x0 : EDT_BLOCK;
+		int32_t most;
+		if (b > EDT_FAR) {
+			most = edt_window_far(sq, x0, b - 1, out + x0, n);
+		} else {
+			uint16_t best[EDT_BLOCK];
+			edt_window(sq, x0, b > 0 ? b - 1 : 0, best);
+			most = edt_block_out(best, out + x0, n);
+		}
 		bound[blk] = most;
 		largest = most > largest ? most : largest;
-		const int n = w - x0 < EDT_BLOCK ? w - x0 : EDT_BLOCK;
-		if (n == EDT_BLOCK)
-			for (int i = 0; i < EDT_BLOCK; i++)
-				out[x0 + i] = best[i];
-		else
-			for (int i = 0; i < n; i++)
-				out[x0 + i] = best[i];
 	}
 	return largest;
 }
