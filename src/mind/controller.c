@@ -287,7 +287,14 @@ static void arrive(Controller *c)
 				} else
 					c->phase = PHASE_DONE;
 			}
-			else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
+			else if (!confirmed && k >= 0 && !c->round_looked &&
+				 fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS) {
+				/* Round it, but not seen whole: the same loop again would show
+				 * no more. A look closer at what is unseen (paper 3.3), then
+				 * home, and the loop walked is judged (round.c). */
+				c->round_looking = c->round_looked = true;
+				c->round_count = 0;
+			} else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
 				/* Round a hypothesis, or an object no longer there: look again
 				 * (objects.h), and go round what is found. */
 				c->round_loops++;

@@ -6,11 +6,21 @@
  * only the points need care. A point laid out on a wall or another object (the object
  * stands beside a wall, or in clutter), or seen to be so later, moves to the reachable
  * square nearest it on the same side of the object (round_goal): the loop still winds
- * round the object wherever there is room to pass, whatever its shape. */
+ * round the object wherever there is room to pass, whatever its shape.
+ *
+ * The loop's stops are a move apart and stand outside the rectangle's corners, so the
+ * fovea (offsets -EYE_FOVEA_HALF..EYE_FOVEA_HALF-1 round Utak) can pass by parts of
+ * an object that fill its rectangle unevenly (a square turned 45 degrees): the loop
+ * winds round it, but it is not confirmed (objects.h), and walking the same loop
+ * again would show nothing new. Then, as paper 3.3 has it, a hypothesis is confirmed
+ * by seeing it closer: Utak goes and looks at the parts unseen (round_look), then
+ * home (round_home), and the loop already walked is judged by its winding. */
 #include "utak/mind/round.h"
 
 #include <math.h>
+#include <stdlib.h>
 
+#include "utak/base/eye.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 
@@ -98,4 +108,70 @@ bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal)
 		}
 	}
 	return best < INFINITY;
+}
+
+/* round_look(c, k, dist, goal): the squares object node k's confirmation lacks
+ * (objects.c: its squares, and the 4-neighbours of its squares, not seen in the
+ * fovea) and not yet looked at (none within the fovea's reach of a place Utak went
+ * to look from, c->visited: a look there showed it, or cannot); the reachable cell
+ * fewest steps away from which the fovea covers one of them (within
+ * EYE_FOVEA_HALF - 1 squares on both axes, whatever his heading), ties to the cell
+ * covering more. Each look is remembered on arrival (controller.c), so the looks
+ * end. */
+bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
+{
+	enum { REACH = EYE_FOVEA_HALF - 1, MAX_LACK = 512 };
+	const WorldModel *m = &c->model;
+	const ModelNode *n = &m->node[k];
+	const Screen *s = &c->screen;
+	int32_t lx[MAX_LACK], ly[MAX_LACK];
+	int lack = 0;
+	for (int32_t j = (int32_t)floor(n->rect.lo.y) - 1; j <= (int32_t)ceil(n->rect.hi.y) && lack < MAX_LACK; j++)
+		for (int32_t i = (int32_t)floor(n->rect.lo.x) - 1; i <= (int32_t)ceil(n->rect.hi.x) && lack < MAX_LACK; i++) {
+			if (worldmodel_evidence(m, i, j).res == WORLDMODEL_RES_FOVEA)
+				continue;
+			bool part = worldmodel_node_at(m, i, j) == k;
+			for (int d = 0; d < 4 && !part; d++) {
+				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+				part = worldmodel_node_at(m, i + step[d][0], j + step[d][1]) == k;
+			}
+			bool looked = false;
+			for (int v = 0; v < c->visited_count && !looked; v++)
+				looked = labs((long)floor(c->visited[v].x) - i) <= REACH &&
+					 labs((long)floor(c->visited[v].y) - j) <= REACH;
+			if (part && !looked) {
+				lx[lack] = i;
+				ly[lack++] = j;
+			}
+		}
+	int32_t best_steps = -1;
+	int best_seen = 0;
+	for (int32_t at = 0; at < s->w * s->h && lack > 0; at++) {
+		if (dist[at] < 0 || (best_steps >= 0 && dist[at] > best_steps))
+			continue;
+		int32_t x = s->x0 + at % s->w, y = s->y0 + at / s->w;
+		int seen = 0;
+		for (int l = 0; l < lack; l++)
+			seen += labs((long)lx[l] - x) <= REACH && labs((long)ly[l] - y) <= REACH;
+		if (seen > 0 && (best_steps < 0 || dist[at] < best_steps || seen > best_seen)) {
+			best_steps = dist[at];
+			best_seen = seen;
+			*goal = goals_centre(x, y);
+		}
+	}
+	return best_steps >= 0;
+}
+
+/* round_home(c, k): the loop's last leg alone: back to the start. The rectangle is
+ * node k's now, so that what the looks showed of it does not make the leg stale. */
+void round_home(Controller *c, int32_t k)
+{
+	c->round_looking = false;
+	c->round[0] = c->start;
+	c->round_count = 1;
+	c->round_next = 0;
+	if (k >= 0) {
+		c->round_ident = c->model.node[k].ident;
+		c->round_rect = c->model.node[k].rect;
+	}
 }
