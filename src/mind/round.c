@@ -18,7 +18,6 @@
 #include "utak/mind/round.h"
 
 #include <math.h>
-#include <stdlib.h>
 
 #include "utak/base/eye.h"
 #include "utak/mind/goals.h"
@@ -110,17 +109,25 @@ bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal)
 	return best < INFINITY;
 }
 
+/* foveal(ox, oy): the fovea shows the square at offset (ox, oy) from Utak's. */
+static bool foveal(int32_t ox, int32_t oy)
+{
+	int32_t cell = eye_cell_at(ox, oy);
+	return (ox != 0 || oy != 0) && cell >= 0 && eye_cell(cell).zone == EYE_FOVEA;
+}
+
 /* round_look(c, k, dist, goal): the squares object node k's confirmation lacks
  * (objects.c: its squares, and the 4-neighbours of its squares, not seen in the
- * fovea) and not yet looked at (none within the fovea's reach of a place Utak went
- * to look from, c->visited: a look there showed it, or cannot); the reachable cell
- * fewest steps away from which the fovea covers one of them (within
- * EYE_FOVEA_HALF - 1 squares on both axes, whatever his heading), ties to the cell
- * covering more. Each look is remembered on arrival (controller.c), so the looks
- * end. */
+ * fovea) and not yet looked at (not in the fovea's reach of a place Utak went to
+ * look from, c->visited: a look there showed it, or cannot); the reachable cell
+ * fewest steps away from which the fovea covers one of them, ties to the cell
+ * covering more. The model's frame is Utak's own (his heading never changes,
+ * worldmodel.h), so the fovea covers the squares at eye.h's foveal offsets from
+ * his square, other than his own. Each look is remembered on arrival
+ * (controller.c), so the looks end. */
 bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
 {
-	enum { REACH = EYE_FOVEA_HALF - 1, MAX_LACK = 512 };
+	enum { MAX_LACK = 512 };
 	const WorldModel *m = &c->model;
 	const ModelNode *n = &m->node[k];
 	const Screen *s = &c->screen;
@@ -137,8 +144,7 @@ bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
 			}
 			bool looked = false;
 			for (int v = 0; v < c->visited_count && !looked; v++)
-				looked = labs((long)floor(c->visited[v].x) - i) <= REACH &&
-					 labs((long)floor(c->visited[v].y) - j) <= REACH;
+				looked = foveal(i - (int32_t)floor(c->visited[v].x), j - (int32_t)floor(c->visited[v].y));
 			if (part && !looked) {
 				lx[lack] = i;
 				ly[lack++] = j;
@@ -152,7 +158,7 @@ bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
 		int32_t x = s->x0 + at % s->w, y = s->y0 + at / s->w;
 		int seen = 0;
 		for (int l = 0; l < lack; l++)
-			seen += labs((long)lx[l] - x) <= REACH && labs((long)ly[l] - y) <= REACH;
+			seen += foveal(lx[l] - x, ly[l] - y);
 		if (seen > 0 && (best_steps < 0 || dist[at] < best_steps || seen > best_seen)) {
 			best_steps = dist[at];
 			best_seen = seen;
