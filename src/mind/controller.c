@@ -269,6 +269,13 @@ static void arrive(Controller *c)
 			c->round_count = 0; /* round the wrong thing: find the object again */
 		} else if (c->round_count == 0) {
 			remember(c, c->goal); /* beside it, and not felt from here: another side */
+		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && !c->round_looked &&
+			   round_unconfirmed(c)) {
+			/* The loop closed (its last point before home) round an object
+			 * not yet seen whole: a look closer at what is unseen now, while
+			 * beside it, then home (round.c). */
+			c->round_looking = c->round_looked = true;
+			c->round_count = 0;
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */

@@ -13,8 +13,9 @@
  * an object that fill its rectangle unevenly (a square turned 45 degrees): the loop
  * winds round it, but it is not confirmed (objects.h), and walking the same loop
  * again would show nothing new. Then, as paper 3.3 has it, a hypothesis is confirmed
- * by seeing it closer: Utak goes and looks at the parts unseen (round_look), then
- * home (round_home), and the loop already walked is judged by its winding. */
+ * by seeing it closer: when the loop closes (or, failing that, home), Utak goes and
+ * looks at the parts unseen (round_look), then home (round_home), and the loop
+ * already walked is judged by its winding. */
 #include "utak/mind/round.h"
 
 #include <math.h>
@@ -180,4 +181,11 @@ void round_home(Controller *c, int32_t k)
 		c->round_ident = c->model.node[k].ident;
 		c->round_rect = c->model.node[k].rect;
 	}
+}
+
+/* round_unconfirmed(c): the task's object is known and not yet confirmed. */
+bool round_unconfirmed(Controller *c)
+{
+	int32_t k = objects_find_target(c);
+	return k >= 0 && !objects_read(c, k).confirmed;
 }

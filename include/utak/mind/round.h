@@ -19,6 +19,8 @@ bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal);
 bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
 /* round_home(c): the loop's last leg alone, back to the start, round node k. */
 void round_home(Controller *c, int32_t k);
+/* round_unconfirmed(c): the task's object is known and not yet confirmed. */
+bool round_unconfirmed(Controller *c);
 /* round_believed_turns(c, k): how often Utak's believed path winds round node k. */
 double round_believed_turns(const Controller *c, int32_t k);
 /* round_stale(c): the loop was laid out round what is no longer the task's object. */
