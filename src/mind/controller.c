@@ -269,6 +269,13 @@ static void arrive(Controller *c)
 			c->round_count = 0; /* round the wrong thing: find the object again */
 		} else if (c->round_count == 0) {
 			remember(c, c->goal); /* beside it, and not felt from here: another side */
+		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && !c->round_looked &&
+			   round_unconfirmed(c)) {
+			/* The loop closed (its last point before home) round an object
+			 * not yet seen whole: a look closer at what is unseen now, while
+			 * beside it, then home (round.c). */
+			c->round_looking = c->round_looked = true;
+			c->round_count = 0;
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
@@ -287,7 +294,14 @@ static void arrive(Controller *c)
 				} else
 					c->phase = PHASE_DONE;
 			}
-			else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
+			else if (!confirmed && k >= 0 && !c->round_looked &&
+				 fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS) {
+				/* Round it, but not seen whole: the same loop again would show
+				 * no more. A look closer at what is unseen (paper 3.3), then
+				 * home, and the loop walked is judged (round.c). */
+				c->round_looking = c->round_looked = true;
+				c->round_count = 0;
+			} else if (!confirmed && c->round_loops < CONTROLLER_ROUND_LOOPS) {
 				/* Round a hypothesis, or an object no longer there: look again
 				 * (objects.h), and go round what is found. */
 				c->round_loops++;

@@ -671,6 +671,16 @@ void goals_choose(Controller *c, GoalResult *out)
 			snprintf(out->why, sizeof out->why, "no door out of this room, and nothing left unseen");
 		break;
 	default: /* an object's task (going round it first finds it) */
+		if (c->task.kind == TASK_GO_ROUND && c->round_looking) {
+			/* Home from a loop round an object not seen whole: a closer look
+			 * at each part unseen, then the start again (round.c). */
+			int32_t k = objects_find_target(c);
+			if (k >= 0 && round_look(c, k, dist, &out->goal)) {
+				out->exploring = out->found = true;
+				break;
+			}
+			round_home(c, k);
+		}
 		if (c->task.kind == TASK_GO_ROUND && c->round_count > 0) {
 			out->found = round_goal(c, dist, &out->goal);
 			if (!out->found)

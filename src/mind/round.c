@@ -6,11 +6,21 @@
  * only the points need care. A point laid out on a wall or another object (the object
  * stands beside a wall, or in clutter), or seen to be so later, moves to the reachable
  * square nearest it on the same side of the object (round_goal): the loop still winds
- * round the object wherever there is room to pass, whatever its shape. */
+ * round the object wherever there is room to pass, whatever its shape.
+ *
+ * The loop's stops are a move apart and stand outside the rectangle's corners, so the
+ * fovea (offsets -EYE_FOVEA_HALF..EYE_FOVEA_HALF-1 round Utak) can pass by parts of
+ * an object that fill its rectangle unevenly (a square turned 45 degrees): the loop
+ * winds round it, but it is not confirmed (objects.h), and walking the same loop
+ * again would show nothing new. Then, as paper 3.3 has it, a hypothesis is confirmed
+ * by seeing it closer: when the loop closes (or, failing that, home), Utak goes and
+ * looks at the parts unseen (round_look), then home (round_home), and the loop
+ * already walked is judged by its winding. */
 #include "utak/mind/round.h"
 
 #include <math.h>
 
+#include "utak/base/eye.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 
@@ -98,4 +108,84 @@ bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal)
 		}
 	}
 	return best < INFINITY;
+}
+
+/* foveal(ox, oy): the fovea shows the square at offset (ox, oy) from Utak's. */
+static bool foveal(int32_t ox, int32_t oy)
+{
+	int32_t cell = eye_cell_at(ox, oy);
+	return (ox != 0 || oy != 0) && cell >= 0 && eye_cell(cell).zone == EYE_FOVEA;
+}
+
+/* round_look(c, k, dist, goal): the squares object node k's confirmation lacks
+ * (objects.c: its squares, and the 4-neighbours of its squares, not seen in the
+ * fovea) and not yet looked at (not in the fovea's reach of a place Utak went to
+ * look from, c->visited: a look there showed it, or cannot); the reachable cell
+ * fewest steps away from which the fovea covers one of them, ties to the cell
+ * covering more. The model's frame is Utak's own (his heading never changes,
+ * worldmodel.h), so the fovea covers the squares at eye.h's foveal offsets from
+ * his square, other than his own. Each look is remembered on arrival
+ * (controller.c), so the looks end. */
+bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
+{
+	enum { MAX_LACK = 512 };
+	const WorldModel *m = &c->model;
+	const ModelNode *n = &m->node[k];
+	const Screen *s = &c->screen;
+	int32_t lx[MAX_LACK], ly[MAX_LACK];
+	int lack = 0;
+	for (int32_t j = (int32_t)floor(n->rect.lo.y) - 1; j <= (int32_t)ceil(n->rect.hi.y) && lack < MAX_LACK; j++)
+		for (int32_t i = (int32_t)floor(n->rect.lo.x) - 1; i <= (int32_t)ceil(n->rect.hi.x) && lack < MAX_LACK; i++) {
+			if (worldmodel_evidence(m, i, j).res == WORLDMODEL_RES_FOVEA)
+				continue;
+			bool part = worldmodel_node_at(m, i, j) == k;
+			for (int d = 0; d < 4 && !part; d++) {
+				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+				part = worldmodel_node_at(m, i + step[d][0], j + step[d][1]) == k;
+			}
+			bool looked = false;
+			for (int v = 0; v < c->visited_count && !looked; v++)
+				looked = foveal(i - (int32_t)floor(c->visited[v].x), j - (int32_t)floor(c->visited[v].y));
+			if (part && !looked) {
+				lx[lack] = i;
+				ly[lack++] = j;
+			}
+		}
+	int32_t best_steps = -1;
+	int best_seen = 0;
+	for (int32_t at = 0; at < s->w * s->h && lack > 0; at++) {
+		if (dist[at] < 0 || (best_steps >= 0 && dist[at] > best_steps))
+			continue;
+		int32_t x = s->x0 + at % s->w, y = s->y0 + at / s->w;
+		int seen = 0;
+		for (int l = 0; l < lack; l++)
+			seen += foveal(lx[l] - x, ly[l] - y);
+		if (seen > 0 && (best_steps < 0 || dist[at] < best_steps || seen > best_seen)) {
+			best_steps = dist[at];
+			best_seen = seen;
+			*goal = goals_centre(x, y);
+		}
+	}
+	return best_steps >= 0;
+}
+
+/* round_home(c, k): the loop's last leg alone: back to the start. The rectangle is
+ * node k's now, so that what the looks showed of it does not make the leg stale. */
+void round_home(Controller *c, int32_t k)
+{
+	c->round_looking = false;
+	c->round[0] = c->start;
+	c->round_count = 1;
+	c->round_next = 0;
+	if (k >= 0) {
+		c->round_ident = c->model.node[k].ident;
+		c->round_rect = c->model.node[k].rect;
+	}
+}
+
+/* round_unconfirmed(c): the task's object is known and not yet confirmed. */
+bool round_unconfirmed(Controller *c)
+{
+	int32_t k = objects_find_target(c);
+	return k >= 0 && !objects_read(c, k).confirmed;
 }

@@ -135,6 +135,9 @@ typedef struct Controller {
 	Vec2 round[6];
 	int round_count, round_next;
 	int round_loops;	/* loops added because the path did not wind round it */
+	/* A loop walked home round an object not yet seen whole in the fovea: Utak
+	 * looks at the parts unseen (round_look), then goes home, once a task. */
+	bool round_looking, round_looked;
 	int32_t round_ident;	/* the object they go round (its model ident) */
 	Path trail;		/* where Utak believed he stood, the start and after each cycle */
 	Box round_rect;		/* and its rectangle when they were laid out */

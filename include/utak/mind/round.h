@@ -13,6 +13,14 @@ void round_lay_out(Controller *c, int32_t k);
  * screen has a wall or object there, the reachable square nearest it on the same side
  * of the object (dist: steps from Utak). False when there is none: no way round. */
 bool round_goal(const Controller *c, const int32_t *dist, Vec2 *goal);
+/* round_look(c, k, dist, goal): where to stand next to see in the fovea a part of
+ * object node k (or the floor round it) its confirmation lacks, after a loop home
+ * round it; false when no such part is left that a look could show. */
+bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
+/* round_home(c): the loop's last leg alone, back to the start, round node k. */
+void round_home(Controller *c, int32_t k);
+/* round_unconfirmed(c): the task's object is known and not yet confirmed. */
+bool round_unconfirmed(Controller *c);
 /* round_believed_turns(c, k): how often Utak's believed path winds round node k. */
 double round_believed_turns(const Controller *c, int32_t k);
 /* round_stale(c): the loop was laid out round what is no longer the task's object. */
