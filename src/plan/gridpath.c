@@ -155,7 +155,6 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 	s->h = grid->h;
 	s->pw = pw;
 	s->ph = ph;
-	s->node = util_alloc(n, sizeof *s->node);
 	s->rows = util_alloc(n, 1);
 	s->cols = util_alloc(n, 1);
 	s->moves = util_alloc(n, 1);
@@ -184,7 +183,7 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 				    s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]])
 					m |= 1u << d;
 			}
-			s->node[c].moves = s->moves[c] = (uint8_t)m;
+			s->moves[c] = (uint8_t)m;
 		}
 	/* the steps an expansion may skip (see PARENT'S NEIGHBOURS in gridpath_find) */
 	for (int d = 0; d <= 8; d++)
@@ -222,6 +221,9 @@ void gridpath_free(GridPathSearch *s)
 	free(s->overflow);
 	free(s->stack);
 	free(s->scratch);
+	free(s->jump);
+	free(s->jump_seen);
+	free(s->jump_slot);
 	*s = (GridPathSearch){0};
 }
 
@@ -497,9 +499,19 @@ static void gridpath_open_reset(GridPathSearch *s)
 	s->overflow_count = 0;
 }
 
-/* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. */
+/* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. The
+ * nodes are made by the first plain A* query (the jump search needs none), marked
+ * unseen, with each cell's legal steps copied from moves. */
 static void gridpath_next_round(GridPathSearch *s)
 {
+	if (!s->node) {
+		const size_t n = (size_t)s->pw * (size_t)s->ph;
+		s->node = util_alloc(n, sizeof *s->node);
+		memset(s->node, 0, n * sizeof *s->node);
+		for (size_t i = 0; i < n; i++)
+			s->node[i].moves = s->moves[i];
+		s->round = 0;
+	}
 	if (s->round >= UINT32_MAX / 2 - 1) {
 		size_t n = (size_t)s->pw * (size_t)(s->h + 2);
 		for (size_t i = 0; i < n; i++)
@@ -533,18 +545,69 @@ static void gridpath_next_round(GridPathSearch *s)
  *
  * CACHE: a straight run reads three lines of bytes: rows for runs along x, cols (the
  * grid transposed) for runs along y, so both scan memory in order instead of a node
- * (16 bytes) or a row (pw bytes) per step. Only jump points touch node[].
+ * (16 bytes) or a row (pw bytes) per step. Only jump points touch the jump state
+ * (JUMP RECORDS below); node[] is plain A*'s alone.
  *
- * PATH: each jump point's node keeps the direction and length of the run that
- * reached it, so the path is rebuilt from the goal run by run without touching the
- * nodes between (on the 1024 maze they were 8% of the search's time, a cache miss
- * each). A run longer than its 16-bit field is walked back instead, to the first
- * closed cell whose step counts are exactly the run's steps fewer: the run's start,
- * or another cell of the run as near the start, which serves as well (its cost is
- * final and the rest of the run from it is free). */
+ * PATH: each jump point's record keeps the direction and length of the run that
+ * reached it and the record of the jump point it started from, so the path is
+ * rebuilt from the goal run by run without touching the cells between (on the 1024
+ * maze they were 8% of the search's time, a cache miss each). */
 
 /* A start has no run that reached it: all eight directions are its successors. */
 #define GRIDPATH_FROM_START GRIDPATH_NO_PARENT
+
+/* JUMP RECORDS: the jump search keeps what it knows of a jump point in a record of
+ * its own, appended in order of first sight, not in the cell's node: the nodes are
+ * 16 bytes a cell in one array (16 MB at 1024), and reading a new jump point's node
+ * was a cache miss each, 30% of the maze's time, with another 12% for the walk back.
+ * A cell's state is now one bit (seen this query, 128 KB at 1024, in cache), and the
+ * record index is read from jump_slot only for a cell seen before (in the 1024 maze
+ * 5 400 of 47 500 jump points found; the rest are new, and only written). The open
+ * list's entries carry the record index in their cell field, so an expansion reads
+ * its record, recently written, and the walk back follows parent indices through
+ * the records, a few hundred KB. */
+typedef struct GridPathJumpRecord {
+	int32_t cell;     /* padded index of the jump point */
+	int32_t straight; /* straight steps of the best known path to it */
+	int32_t diagonal; /* diagonal steps of the best known path to it */
+	int32_t parent;   /* record of the jump point its best run started from; -1: start */
+	int32_t run;      /* steps of that run */
+	uint8_t from;     /* direction (0..7) of that run; GRIDPATH_FROM_START at the start */
+	uint8_t closed;   /* 1 once expanded: its cost is final */
+} GridPathJumpRecord;
+
+/* gridpath_jump_reset(s): the jump state for a new query: allocated on the first,
+ * and the seen bits of the last query's records cleared (or all of them, when that
+ * is fewer words than records). */
+static void gridpath_jump_reset(GridPathSearch *s)
+{
+	const size_t n = (size_t)s->pw * (size_t)s->ph, words = (n + 63) / 64;
+	if (!s->jump_seen) {
+		s->jump_seen = util_alloc(words, sizeof *s->jump_seen);
+		memset(s->jump_seen, 0, words * sizeof *s->jump_seen);
+		s->jump_slot = util_alloc(n, sizeof *s->jump_slot);
+	} else if ((size_t)s->jump_count >= words)
+		memset(s->jump_seen, 0, words * sizeof *s->jump_seen);
+	else
+		for (int32_t i = 0; i < s->jump_count; i++) {
+			const int32_t c = s->jump[i].cell;
+			s->jump_seen[c / 64] &= ~((uint64_t)1 << (c % 64));
+		}
+	s->jump_count = 0;
+}
+
+/* gridpath_jump_new(s, cell): a new record for cell, marked seen; its index. */
+static inline int32_t gridpath_jump_new(GridPathSearch *s, int32_t cell)
+{
+	if (s->jump_count == s->jump_cap)
+		s->jump = util_grow(s->jump, &s->jump_cap, s->jump_count + 1, sizeof *s->jump);
+	const int32_t r = s->jump_count++;
+	s->jump_seen[cell / 64] |= (uint64_t)1 << (cell % 64);
+	s->jump_slot[cell] = r;
+	s->jump[r].cell = cell;
+	s->jump[r].closed = 0;
+	return r;
+}
 
 /* Eight cells at a time: where the compiler has bit-scan builtins and stores bytes
  * little-end first, gridpath_scan tests a word of 8 cells of each line at once
@@ -694,21 +757,23 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 {
 	const int32_t pw = s->pw;
 	const int32_t start = sy * pw + sx, goal = gy * pw + gx;
-	gridpath_next_round(s);
-	const uint32_t open_mark = 2 * s->round, closed_mark = 2 * s->round + 1;
-	GridPathNode *node = s->node;
+	gridpath_jump_reset(s);
 	gridpath_open_reset(s);
-	node[start].mark = open_mark;
-	node[start].straight = node[start].diagonal = 0;
-	node[start].from = GRIDPATH_FROM_START;
 	{
+		const int32_t r = gridpath_jump_new(s, start);
+		GridPathJumpRecord *rs = &s->jump[r];
+		rs->straight = rs->diagonal = rs->run = 0;
+		rs->parent = -1;
+		rs->from = GRIDPATH_FROM_START;
 		int32_t ax = abs(gx - sx), ay = abs(gy - sy);
 		int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
 		s->f_start = gridpath_cost(hi - lo, lo);
-		gridpath_push(s, (GridPathOpen){s->f_start, 0, start});
+		gridpath_push(s, (GridPathOpen){s->f_start, 0, r});
 	}
+	const uint64_t *seen = s->jump_seen;
+	const int32_t *slot = s->jump_slot;
 	int64_t expanded = 0;
-	int found = 0;
+	int32_t found = -1; /* the goal's record */
 	GridPathOpen e;
 	s->stack_count = 0;
 	for (;;) {
@@ -716,22 +781,25 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			e = s->stack[--s->stack_count];
 		else if (!gridpath_pop(s, &e))
 			break;
-		int32_t c = e.cell;
-		GridPathNode *nc = &node[c];
-		if (nc->mark == closed_mark)
+		const int32_t r = e.cell; /* a record, see JUMP RECORDS */
+		GridPathJumpRecord *rc = &s->jump[r];
+		if (rc->closed)
 			continue; /* stale, as in gridpath_find */
-		nc->mark = closed_mark;
+		rc->closed = 1;
 		expanded++;
+		const int32_t c = rc->cell;
 		if (c == goal) {
-			found = 1;
+			found = r;
 			break;
 		}
+		/* locals: the records may move when they grow below */
+		const int32_t cs = rc->straight, cd = rc->diagonal;
 		const int32_t cx = c % pw, cy = c / pw;
 		/* a run whose first step is illegal finds nothing: not tried */
-		unsigned dirs = gridpath_successor_dirs(nc->from) & s->moves[c];
+		unsigned dirs = gridpath_successor_dirs(rc->from) & s->moves[c];
 		/* All the runs first, then their jump points in order of d: the runs read
-		 * only rows, cols and moves, so the nodes of the jump points (a cache miss
-		 * each, most of the maze's time) are fetched while the next runs scan. */
+		 * only rows, cols and moves, so the seen bits and slots of the jump points
+		 * are fetched while the next runs scan. */
 		int32_t found_n[8], found_steps[8];
 		int found_d[8], runs = 0;
 		for (int d = 0; d < 8; d++) {
@@ -741,7 +809,6 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			int32_t n = gridpath_jump(s, cx, cy, d, gx, gy, &steps);
 			if (n < 0)
 				continue;
-			GRIDPATH_PREFETCH(&node[n]);
 			found_n[runs] = n;
 			found_steps[runs] = steps;
 			found_d[runs++] = d;
@@ -749,23 +816,27 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		for (int k = 0; k < runs; k++) {
 			const int32_t n = found_n[k], steps = found_steps[k];
 			const int d = found_d[k];
-			GridPathNode *nn = &node[n];
-			if (nn->mark == closed_mark)
-				continue;
-			int32_t ns = nc->straight + (d < 4 ? steps : 0);
-			int32_t nd = nc->diagonal + (d < 4 ? 0 : steps);
+			int32_t ns = cs + (d < 4 ? steps : 0);
+			int32_t nd = cd + (d < 4 ? 0 : steps);
 			double ng = gridpath_cost(ns, nd);
-			if (nn->mark == open_mark &&
-			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
-				continue;
-			nn->mark = open_mark;
-			nn->straight = ns;
-			nn->diagonal = nd;
-			nn->from = (uint8_t)d;
-			nn->run = steps <= UINT16_MAX ? (uint16_t)steps : 0;
+			int32_t rn;
+			if (seen[n / 64] >> (n % 64) & 1) {
+				rn = slot[n];
+				const GridPathJumpRecord *old = &s->jump[rn];
+				if (old->closed ||
+				    !(ng < gridpath_cost(old->straight, old->diagonal)))
+					continue;
+			} else
+				rn = gridpath_jump_new(s, n);
+			GridPathJumpRecord *rr = &s->jump[rn];
+			rr->straight = ns;
+			rr->diagonal = nd;
+			rr->parent = r;
+			rr->run = steps;
+			rr->from = (uint8_t)d;
 			int32_t ax = abs(gx - n % pw), ay = abs(gy - n / pw);
 			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
+			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, rn};
 			if (ne.f == e.f) {
 				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
 				s->stack[s->stack_count++] = ne;
@@ -774,39 +845,25 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		}
 	}
 	path->expanded = expanded;
-	if (!found)
+	if (found < 0)
 		return GRIDPATH_NO_PATH;
 
-	/* Walk back run by run (see PATH above), filling the path from its end. */
-	int32_t steps = node[goal].straight + node[goal].diagonal;
+	/* Walk back record by record (see PATH above), filling the path from its end. */
+	const GridPathJumpRecord *jump = s->jump;
+	const int32_t steps = jump[found].straight + jump[found].diagonal;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
-	path->count = steps + 1;                     /* every point is written below */
-	int32_t c = goal, i = steps, x = gx, y = gy; /* c = y pw + x: no division */
+	path->count = steps + 1; /* every point is written below */
+	int32_t i = steps, x = gx, y = gy;
 	path->pts[i] = vec2((double)(gx - 1) + 0.5, (double)(gy - 1) + 0.5);
-	while (c != start) {
-		const int d = node[c].from;
-		const int32_t back = gridpath_dy[d] * pw + gridpath_dx[d];
-		const int32_t cs = node[c].straight, cd = node[c].diagonal;
-		/* the run's start is known when it was short enough to keep; else the walk */
-		const int32_t known = node[c].run;
-		for (int32_t k = 1;; k++) {
-			int32_t r = c - k * back;
+	for (int32_t r = found; jump[r].parent >= 0; r = jump[r].parent) {
+		const int d = jump[r].from;
+		for (int32_t k = jump[r].run; k > 0; k--) {
 			x -= gridpath_dx[d];
 			y -= gridpath_dy[d];
-			path->pts[i - k] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
-			const GridPathNode *nr = &node[r];
-			bool run_start = known ? k == known
-			                       : nr->mark == closed_mark &&
-			                             nr->straight == cs - (d < 4 ? k : 0) &&
-			                             nr->diagonal == cd - (d < 4 ? 0 : k);
-			if (!run_start)
-				continue;
-			c = r;
-			i -= k;
-			break;
+			path->pts[--i] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
 		}
 	}
-	*length = gridpath_cost(node[goal].straight, node[goal].diagonal);
+	*length = gridpath_cost(jump[found].straight, jump[found].diagonal);
 	return GRIDPATH_FOUND;
 }
 

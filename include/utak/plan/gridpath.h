@@ -22,9 +22,12 @@
  * runs as a jump-point search (gridpath.c): the same length, path.expanded then
  * counts the jump points expanded.
  *
- * MEMORY: 19 bytes per cell of the grid with a one-cell border (the node, and a
- * byte each in rows, cols and moves), plus the open list (16 bytes per pushed entry;
- * at most 8 pushes per cell, far fewer in practice), kept between queries.
+ * MEMORY: per cell of the grid with a one-cell border, 3 bytes (a byte each in
+ * rows, cols and moves), and from the first query of either method, 16 more for
+ * plain A* (the node) and 4 1/8 for the jump search (a record index and a seen
+ * bit); plus the open list (16 bytes per pushed entry; at most 8 pushes per cell,
+ * far fewer in practice) and, for the jump search, 24 bytes per jump point seen,
+ * all kept between queries.
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
@@ -79,7 +82,8 @@ typedef struct GridPathBucket {
 	int count, cap;
 } GridPathBucket;
 
-/* The state of one cell, kept together so that a visit touches one cache line. */
+/* The state of one cell for plain A*, kept together so that a visit touches one
+ * cache line (the jump search keeps records of its own, gridpath.c). */
 typedef struct GridPathNode {
 	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
 	int32_t straight; /* straight steps of the best known path to the cell */
@@ -87,7 +91,6 @@ typedef struct GridPathNode {
 	uint8_t moves;    /* the legal steps from the cell: bit d for step d of gridpath.c
 	                     (no corner cutting); 0 for blocked and border cells */
 	uint8_t from;     /* direction (0..7) of the step that reached it */
-	uint16_t run;     /* jump search: steps of the run that reached it (0: too long) */
 } GridPathNode;
 
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
@@ -95,7 +98,7 @@ typedef struct GridPathNode {
 typedef struct GridPathSearch {
 	int32_t w, h;       /* size of the grid searched, in cells */
 	int32_t pw;         /* padded width: w + 2 */
-	GridPathNode *node; /* (w + 2) (h + 2) cells */
+	GridPathNode *node; /* (w + 2) (h + 2) cells, plain A*'s; NULL before its first query */
 	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
 	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
 	 * the start's f; the current bucket is a binary heap, later ones are unsorted.
@@ -128,6 +131,13 @@ typedef struct GridPathSearch {
 	uint8_t *cols;  /* ph * pw: cols[x * ph + y], the same transposed */
 	uint8_t *moves; /* pw * ph: each cell's legal steps (GridPathNode.moves), for the
 	                   jump search's diagonal runs */
+	/* The jump search's own state (gridpath.c, JUMP RECORDS), allocated by its first
+	 * query: a record per jump point seen, in order of first sight, and per cell a
+	 * seen bit and the index of its record (valid only where the bit is set). */
+	struct GridPathJumpRecord *jump; /* the records of this query */
+	int32_t jump_count, jump_cap;
+	uint64_t *jump_seen; /* pw * ph bits; clear between queries */
+	int32_t *jump_slot;  /* pw * ph: record index of each seen cell */
 	/* skip[d][m]: the steps an expansion of a cell reached by step d need not try,
 	 * when its parent's legal steps are m (see gridpath.c); d = 8 for a start. */
 	uint8_t skip[9][256];
