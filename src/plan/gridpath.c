@@ -17,7 +17,8 @@
  * buckets with an overflow beyond it (see GRIDPATH_PAGE), the current bucket a
  * binary heap. A neighbour whose f equals the f being expanded (the least in the
  * list) skips the buckets through a stack. Each free cell's legal steps are one
- * byte of its node (made once by gridpath_init), so an expansion walks the set
+ * byte of its node (made by the first query from the 3 x 3 neighbourhood, by the
+ * table legal of gridpath_init), so an expansion walks the set
  * bits in order of d instead of testing eight neighbours and two corners each.
  *
  * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
@@ -146,45 +147,83 @@ static inline double gridpath_cost(int32_t straight, int32_t diagonal)
 	return (double)straight + (double)diagonal * GRIDPATH_SQRT2;
 }
 
+/* gridpath_bit(line, i): bit i of a line of words (1: free). */
+static inline unsigned gridpath_bit(const uint64_t *line, int32_t i)
+{
+	return (unsigned)(line[(uint32_t)i / 64] >> ((uint32_t)i % 64)) & 1u;
+}
+
+/* gridpath_is_free(s, x, y): padded cell (x, y) is free. */
+static inline unsigned gridpath_is_free(const GridPathSearch *s, int32_t x, int32_t y)
+{
+	return gridpath_bit(s->rows + (size_t)y * s->row_words, x);
+}
+
+/* gridpath_window(line, x): bits x - 1, x, x + 1 of a line, as bits 0, 1, 2. */
+static inline unsigned gridpath_window(const uint64_t *line, int32_t x)
+{
+	const uint32_t p = (uint32_t)x - 1, k = p / 64, o = p % 64;
+	uint64_t bits = line[k] >> o;
+	if (o > 61) /* the window runs into the next word */
+		bits |= line[k + 1] << (64 - o);
+	return (unsigned)bits & 7u;
+}
+
+/* gridpath_moves(s, x, y): the legal steps from padded cell (x, y), bit d for step
+ * d (no corner cutting; 0 for a blocked cell), from its 3 x 3 neighbourhood in rows
+ * (three words, near those the runs read) by the table s->legal. */
+static inline unsigned gridpath_moves(const GridPathSearch *s, int32_t x, int32_t y)
+{
+	const int32_t lw = s->row_words;
+	const uint64_t *row = s->rows + (size_t)y * lw;
+	return s->legal[gridpath_window(row - lw, x) | gridpath_window(row, x) << 3 |
+	                gridpath_window(row + lw, x) << 6];
+}
+
 void gridpath_init(GridPathSearch *s, const Grid *grid)
 {
 	int32_t pw = grid->w + 2, ph = grid->h + 2;
-	size_t n = (size_t)pw * (size_t)ph;
 	*s = (GridPathSearch){0};
 	s->w = grid->w;
 	s->h = grid->h;
 	s->pw = pw;
 	s->ph = ph;
-	s->rows = util_alloc(n, 1);
-	s->cols = util_alloc(n, 1);
-	s->moves = util_alloc(n, 1);
-	memset(s->moves, 0, n);
-	memset(s->rows, 0, n);
-	memset(s->cols, 0, n);
+	/* rows and cols: one bit a cell, a word before and after the lines so that a
+	 * scan may read one word past either end of a line (see gridpath_scan) */
+	s->row_words = (pw + 63) / 64;
+	s->col_words = (ph + 63) / 64;
+	const size_t row_total = (size_t)ph * (size_t)s->row_words + 2;
+	const size_t col_total = (size_t)pw * (size_t)s->col_words + 2;
+	s->rows = (uint64_t *)util_alloc(row_total, sizeof *s->rows) + 1;
+	s->cols = (uint64_t *)util_alloc(col_total, sizeof *s->cols) + 1;
+	memset(s->rows - 1, 0, row_total * sizeof *s->rows);
+	memset(s->cols - 1, 0, col_total * sizeof *s->cols);
 	for (int32_t y = 0; y < grid->h; y++)
-		for (int32_t x = 0; x < grid->w; x++) {
-			uint8_t f = grid->cells[(size_t)y * grid->w + x] == GRID_FREE;
-			s->rows[(size_t)(y + 1) * pw + (x + 1)] = f;
-			s->cols[(size_t)(x + 1) * ph + (y + 1)] = f;
-		}
-	/* each free cell's legal steps, so that an expansion tests one byte, not 8 */
-	for (int32_t y = 1; y <= grid->h; y++)
-		for (int32_t x = 1; x <= grid->w; x++) {
-			const size_t c = (size_t)y * pw + x;
-			if (!s->rows[c])
-				continue;
-			unsigned m = 0;
+		for (int32_t x = 0; x < grid->w; x++)
+			if (grid->cells[(size_t)y * grid->w + x] == GRID_FREE) {
+				uint64_t *row = s->rows + (size_t)(y + 1) * s->row_words;
+				uint64_t *col = s->cols + (size_t)(x + 1) * s->col_words;
+				row[(x + 1) / 64] |= (uint64_t)1 << ((x + 1) % 64);
+				col[(y + 1) / 64] |= (uint64_t)1 << ((y + 1) % 64);
+			}
+	/* the legal steps of a cell from its 3 x 3 neighbourhood (see gridpath_moves) */
+	for (unsigned nb = 0; nb < 512; nb++) {
+		/* free(dx, dy): bit 3 (dy + 1) + dx + 1 of nb */
+#define GRIDPATH_NB_FREE(dx, dy) (nb >> (3 * ((dy) + 1) + (dx) + 1) & 1u)
+		unsigned m = 0;
+		if (GRIDPATH_NB_FREE(0, 0)) {
 			for (int d = 0; d < 4; d++)
-				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]]
-				     << d;
+				m |= GRIDPATH_NB_FREE(gridpath_dx[d], gridpath_dy[d]) << d;
 			for (int k = 0; k < 4; k++) {
 				const int d = 4 + k;
 				if ((m >> k & 1) && (m >> ((k + 1) & 3) & 1) &&
-				    s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]])
+				    GRIDPATH_NB_FREE(gridpath_dx[d], gridpath_dy[d]))
 					m |= 1u << d;
 			}
-			s->moves[c] = (uint8_t)m;
 		}
+#undef GRIDPATH_NB_FREE
+		s->legal[nb] = (uint8_t)m;
+	}
 	/* the steps an expansion may skip (see PARENT'S NEIGHBOURS in gridpath_find) */
 	for (int d = 0; d <= 8; d++)
 		for (unsigned mp = 0; mp < 256; mp++) {
@@ -206,9 +245,10 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 void gridpath_free(GridPathSearch *s)
 {
 	free(s->node);
-	free(s->rows);
-	free(s->cols);
-	free(s->moves);
+	if (s->rows)
+		free(s->rows - 1); /* the word before the lines, see gridpath_init */
+	if (s->cols)
+		free(s->cols - 1);
 	if (s->bucket)
 		for (int i = 0; i < GRIDPATH_PAGE; i++)
 			free(s->bucket[i].e);
@@ -501,15 +541,16 @@ static void gridpath_open_reset(GridPathSearch *s)
 
 /* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. The
  * nodes are made by the first plain A* query (the jump search needs none), marked
- * unseen, with each cell's legal steps copied from moves. */
+ * unseen, with each cell's legal steps (gridpath_moves). */
 static void gridpath_next_round(GridPathSearch *s)
 {
 	if (!s->node) {
 		const size_t n = (size_t)s->pw * (size_t)s->ph;
 		s->node = util_alloc(n, sizeof *s->node);
 		memset(s->node, 0, n * sizeof *s->node);
-		for (size_t i = 0; i < n; i++)
-			s->node[i].moves = s->moves[i];
+		for (int32_t y = 1; y < s->ph - 1; y++)
+			for (int32_t x = 1; x < s->pw - 1; x++)
+				s->node[(size_t)y * s->pw + x].moves = gridpath_moves(s, x, y);
 		s->round = 0;
 	}
 	if (s->round >= UINT32_MAX / 2 - 1) {
@@ -543,10 +584,13 @@ static void gridpath_next_round(GridPathSearch *s)
  * lengths are the plain A*'s, exactly; checked against it and against every
  * published Moving AI optimum in tests/unit/test_gridpath.c.
  *
- * CACHE: a straight run reads three lines of bytes: rows for runs along x, cols (the
- * grid transposed) for runs along y, so both scan memory in order instead of a node
- * (16 bytes) or a row (pw bytes) per step. Only jump points touch the jump state
- * (JUMP RECORDS below); node[] is plain A*'s alone.
+ * CACHE: a straight run reads three lines of bits: rows for runs along x, cols (the
+ * grid transposed) for runs along y, so both scan memory in order, 64 cells a word,
+ * instead of a node (16 bytes) or a row (pw bytes) per step. At a bit a cell both
+ * copies of a 1024 x 1024 grid take 256 KB and stay in the L2 cache (as bytes, 2
+ * MB, they did not: the rooms, rects, Boston and den520d queries ran 2 times
+ * faster with bits, the maze's 1.1). Only jump points touch the jump state (JUMP
+ * RECORDS below); node[] is plain A*'s alone.
  *
  * PATH: each jump point's record keeps the direction and length of the run that
  * reached it and the record of the jump point it started from, so the path is
@@ -609,72 +653,62 @@ static inline int32_t gridpath_jump_new(GridPathSearch *s, int32_t cell)
 	return r;
 }
 
-/* Eight cells at a time: where the compiler has bit-scan builtins and stores bytes
- * little-end first, gridpath_scan tests a word of 8 cells of each line at once
- * (the events of a word are its blocked cells and forced neighbours; the first is
- * found by counting zero bits). Elsewhere it runs cell by cell, the same result. On
- * the 4096 rooms corner to corner it made the jump search ~2 times faster. */
-#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-#define GRIDPATH_SCAN_WORDS 1
-#define GRIDPATH_ONES 0x0101010101010101ULL
-static inline uint64_t gridpath_load8(const uint8_t *p)
+/* gridpath_msb64(bits): the index of the highest set bit of bits != 0. */
+static inline int gridpath_msb64(uint64_t bits)
 {
-	uint64_t v;
-	memcpy(&v, p, sizeof v);
-	return v;
-}
+#if defined(__GNUC__)
+	return 63 - __builtin_clzll(bits);
 #else
-#define GRIDPATH_SCAN_WORDS 0
+	int i = 63;
+	while (!((bits >> i) & 1))
+		i--;
+	return i;
 #endif
+}
 
-/* gridpath_scan(cur, a, b, len, i, dir, stop): the straight run from position i
- * along the line cur of len cells (with its two neighbouring lines a and b, all three
- * padded so the ends are 0) in direction dir: the position of the jump point it
- * reaches, or -1. */
-static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const uint8_t *b,
-                                    int32_t len, int32_t i, int32_t dir, int32_t stop)
+/* gridpath_scan(cur, a, b, i, dir, stop): the straight run from position i along the
+ * line cur (bits, 1 free; with its two neighbouring lines a and b, all three padded
+ * so the ends are blocked) in direction dir: the position of the jump point it
+ * reaches (a free cell with a forced neighbour, or stop), or -1 (a blocked cell
+ * first). Sixty-four cells at a time: the events of a word are its blocked cells,
+ * its forced neighbours (a free cell of a or b whose cell behind, one step back
+ * along dir, is blocked: the word shifted by one, with the bit carried in from the
+ * word behind) and stop; the first is found by counting zero bits. The run always
+ * ends, at the blocked end of the line at the latest. A word's carry may come from
+ * the word before the line's first or after its last (the line before or after, or
+ * the padding word of gridpath_init): it lands on an end cell, never scanned. */
+static inline int32_t gridpath_scan(const uint64_t *cur, const uint64_t *a, const uint64_t *b,
+                                    int32_t i, int32_t dir, int32_t stop)
 {
-#if GRIDPATH_SCAN_WORDS
-	/* Words of positions i + 1 .. i + 8 (or i - 8 .. i - 1) while they lie in the
-	 * line and hold no stop; the rest cell by cell below. */
-	/* words hold no stop: they end before it (dir > 0) or start after it */
+	/* positions are never negative: unsigned, so / and % are shifts and masks */
+	const uint32_t u = (uint32_t)i, goal = (uint32_t)stop;
 	if (dir > 0) {
-		const int32_t end = stop > i ? stop : len;
-		for (int32_t p = i + 1; p + 8 <= end; p += 8) {
-			uint64_t ev = ~gridpath_load8(cur + p) |
-			              (gridpath_load8(a + p) & ~gridpath_load8(a + p - 1)) |
-			              (gridpath_load8(b + p) & ~gridpath_load8(b + p - 1));
-			ev &= GRIDPATH_ONES;
+		const uint32_t p = u + 1, stop_word = stop > i ? goal / 64 : UINT32_MAX;
+		uint64_t mask = ~(uint64_t)0 << (p % 64);
+		for (uint32_t k = p / 64;; k++, mask = ~(uint64_t)0) {
+			const uint64_t behind_a = a[k] << 1 | a[(int32_t)k - 1] >> 63;
+			const uint64_t behind_b = b[k] << 1 | b[(int32_t)k - 1] >> 63;
+			uint64_t ev = (~cur[k] | (a[k] & ~behind_a) | (b[k] & ~behind_b)) & mask;
+			if (k == stop_word)
+				ev |= (uint64_t)1 << (goal % 64);
 			if (ev) {
-				int32_t j = p + __builtin_ctzll(ev) / 8;
-				return cur[j] ? j : -1;
+				const int j = gridpath_ctz64(ev);
+				return (cur[k] >> j & 1) ? (int32_t)(k * 64) + j : -1;
 			}
-			i = p + 7;
-		}
-	} else {
-		const int32_t first = stop >= 0 && stop < i ? stop + 1 : 0;
-		for (int32_t p = i - 8; p >= first; p -= 8) {
-			uint64_t ev = ~gridpath_load8(cur + p) |
-			              (gridpath_load8(a + p) & ~gridpath_load8(a + p + 1)) |
-			              (gridpath_load8(b + p) & ~gridpath_load8(b + p + 1));
-			ev &= GRIDPATH_ONES;
-			if (ev) {
-				int32_t j = p + (63 - __builtin_clzll(ev)) / 8;
-				return cur[j] ? j : -1;
-			}
-			i = p;
 		}
 	}
-#else
-	(void)len;
-#endif
-	for (;;) {
-		i += dir;
-		if (!cur[i])
-			return -1;
-		/* forced: free beside, blocked behind (bytes are 0 or 1) */
-		if (i == stop || a[i] > a[i - dir] || b[i] > b[i - dir])
-			return i;
+	const uint32_t p = u - 1, stop_word = stop >= 0 && stop < i ? goal / 64 : UINT32_MAX;
+	uint64_t mask = ~(uint64_t)0 >> (63 - p % 64);
+	for (uint32_t k = p / 64;; k--, mask = ~(uint64_t)0) {
+		const uint64_t behind_a = a[k] >> 1 | a[k + 1] << 63;
+		const uint64_t behind_b = b[k] >> 1 | b[k + 1] << 63;
+		uint64_t ev = (~cur[k] | (a[k] & ~behind_a) | (b[k] & ~behind_b)) & mask;
+		if (k == stop_word)
+			ev |= (uint64_t)1 << (goal % 64);
+		if (ev) {
+			const int j = gridpath_msb64(ev);
+			return (cur[k] >> j & 1) ? (int32_t)(k * 64) + j : -1;
+		}
 	}
 }
 
@@ -683,15 +717,17 @@ static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const 
 static inline int32_t gridpath_run_x(const GridPathSearch *s, int32_t x, int32_t y, int32_t dx,
                                      int32_t gx, int32_t gy)
 {
-	const uint8_t *row = s->rows + (size_t)y * s->pw;
-	return gridpath_scan(row, row + s->pw, row - s->pw, s->pw, x, dx, y == gy ? gx : -1);
+	const int32_t lw = s->row_words;
+	const uint64_t *row = s->rows + (size_t)y * lw;
+	return gridpath_scan(row, row + lw, row - lw, x, dx, y == gy ? gx : -1);
 }
 
 static inline int32_t gridpath_run_y(const GridPathSearch *s, int32_t x, int32_t y, int32_t dy,
                                      int32_t gx, int32_t gy)
 {
-	const uint8_t *col = s->cols + (size_t)x * s->ph;
-	return gridpath_scan(col, col + s->ph, col - s->ph, s->ph, y, dy, x == gx ? gy : -1);
+	const int32_t lw = s->col_words;
+	const uint64_t *col = s->cols + (size_t)x * lw;
+	return gridpath_scan(col, col + lw, col - lw, y, dy, x == gx ? gy : -1);
 }
 
 /* gridpath_jump(s, x, y, d, gx, gy, steps): the run from padded (x, y) in direction d:
@@ -713,21 +749,24 @@ static int32_t gridpath_jump(const GridPathSearch *s, int32_t x, int32_t y, int 
 	/* A diagonal step is legal when the cells ahead along x, along y and
 	 * diagonally are free (no corner cutting), and a straight run whose first
 	 * cell is blocked finds nothing, so it is not scanned (in the 1024 maze's
-	 * corridors, 3 cells wide, most are not). Both are read in rows, whose lines
-	 * about (x, y) the straight run along x reads too: the moves array read here
-	 * before was one more line for each step, and 10% of the maze's time. */
-	const uint8_t *rows = s->rows;
-	const int32_t step = dy * pw + dx, up = dy * pw;
+	 * corridors, 3 cells wide, most are not). Both are read in rows, whose words
+	 * about (x, y) the straight run along x reads too: a byte array of legal
+	 * steps read here before was one more line for each step, and 10% of the
+	 * maze's time. */
+	const int32_t step = dy * pw + dx, up = dy * s->row_words;
+	const uint64_t *row = s->rows + (size_t)y * s->row_words; /* row y */
 	int32_t c = y * pw + x;
 	for (int32_t n = 1;; n++) {
-		if (!(rows[c + dx] & rows[c + up] & rows[c + step]))
+		if (!(gridpath_bit(row, x + dx) & gridpath_bit(row + up, x) &
+		      gridpath_bit(row + up, x + dx)))
 			return -1;
 		c += step;
 		x += dx;
 		y += dy;
+		row += up;
 		if ((x == gx && y == gy) ||
-		    (rows[c + dx] && gridpath_run_x(s, x, y, dx, gx, gy) >= 0) ||
-		    (rows[c + up] && gridpath_run_y(s, x, y, dy, gx, gy) >= 0)) {
+		    (gridpath_bit(row, x + dx) && gridpath_run_x(s, x, y, dx, gx, gy) >= 0) ||
+		    (gridpath_bit(row + up, x) && gridpath_run_y(s, x, y, dy, gx, gy) >= 0)) {
 			*steps = n;
 			return c;
 		}
@@ -795,10 +834,11 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 		/* locals: the records may move when they grow below */
 		const int32_t cs = rc->straight, cd = rc->diagonal;
 		const int32_t cx = c % pw, cy = c / pw;
-		/* a run whose first step is illegal finds nothing: not tried */
-		unsigned dirs = gridpath_successor_dirs(rc->from) & s->moves[c];
+		/* a run whose first step is illegal finds nothing: not tried (the legal
+		 * steps from rows' words about c, which the runs read next) */
+		unsigned dirs = gridpath_successor_dirs(rc->from) & gridpath_moves(s, cx, cy);
 		/* All the runs first, then their jump points in order of d: the runs read
-		 * only rows, cols and moves, so the seen bits and slots of the jump points
+		 * only rows and cols, so the seen bits and slots of the jump points
 		 * are fetched while the next runs scan. */
 		int32_t found_n[8], found_steps[8];
 		int found_d[8], runs = 0;
@@ -877,7 +917,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		return GRIDPATH_BAD_ENDPOINT;
 	const int32_t pw = s->pw;
 	const int32_t start = (sy + 1) * pw + (sx + 1), goal = (gy + 1) * pw + (gx + 1);
-	if (!s->rows[start] || !s->rows[goal])
+	if (!gridpath_is_free(s, sx + 1, sy + 1) || !gridpath_is_free(s, gx + 1, gy + 1))
 		return GRIDPATH_BAD_ENDPOINT;
 
 	if (s->method == GRIDPATH_JUMP)

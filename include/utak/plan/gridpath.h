@@ -22,12 +22,12 @@
  * runs as a jump-point search (gridpath.c): the same length, path.expanded then
  * counts the jump points expanded.
  *
- * MEMORY: per cell of the grid with a one-cell border, 3 bytes (a byte each in
- * rows, cols and moves), and from the first query of either method, 16 more for
- * plain A* (the node) and 4 1/8 for the jump search (a record index and a seen
- * bit); plus the open list (16 bytes per pushed entry; at most 8 pushes per cell,
- * far fewer in practice) and, for the jump search, 24 bytes per jump point seen,
- * all kept between queries.
+ * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
+ * rows and cols; rows 64 cells to a word, so up to 63 more bits a row), and from
+ * the first query of either method, 16 bytes more for plain A* (the node) and 4
+ * and a bit for the jump search (a record index and a seen bit); plus the open list (16 bytes per
+ *pushed entry; at most 8 pushes per cell, far fewer in practice) and, for the jump search, 24 bytes
+ *per jump point seen, all kept between queries.
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
@@ -122,15 +122,19 @@ typedef struct GridPathSearch {
 	GridPathOpen *scratch;                  /* for sorting a bucket */
 	int scratch_cap;
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
-	 * search. The jump search scans the grid along rows and columns, so it keeps the
-	 * free cells twice more, a byte each: row-major (rows) and column-major (cols),
-	 * both padded like node. */
+	 * search. The jump search scans the grid along rows and columns, so the free
+	 * cells are kept twice, row-major (rows) and column-major (cols), both padded
+	 * like node. */
 	GridPathMethod method;
-	int32_t ph;     /* padded height: h + 2 */
-	uint8_t *rows;  /* pw * ph: rows[y * pw + x] = 1 when (x - 1, y - 1) is free */
-	uint8_t *cols;  /* ph * pw: cols[x * ph + y], the same transposed */
-	uint8_t *moves; /* pw * ph: each cell's legal steps (GridPathNode.moves), for the
-	                   jump search's diagonal runs */
+	int32_t ph; /* padded height: h + 2 */
+	/* rows: one bit a cell (1: free), row by row, row_words words a row (bit x % 64
+	 * of word x / 64 for padded x); cols: the same transposed, col_words words a
+	 * column. 128 KB each at 1024 x 1024, so the runs' scans stay in cache. */
+	uint64_t *rows, *cols;
+	int32_t row_words, col_words;
+	/* legal[n]: the legal steps of a cell (GridPathNode.moves) whose 3 x 3
+	 * neighbourhood is n: bit 3 (dy + 1) + dx + 1 for (x + dx, y + dy) free. */
+	uint8_t legal[512];
 	/* The jump search's own state (gridpath.c, JUMP RECORDS), allocated by its first
 	 * query: a record per jump point seen, in order of first sight, and per cell a
 	 * seen bit and the index of its record (valid only where the bit is set). */
