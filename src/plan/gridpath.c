@@ -611,7 +611,7 @@ static void gridpath_next_round(GridPathSearch *s)
  * its record, recently written, and the walk back follows parent indices through
  * the records, a few hundred KB. */
 typedef struct GridPathJumpRecord {
-	int32_t cell;     /* padded index of the jump point */
+	int32_t x, y;     /* padded coordinates of the jump point */
 	int32_t straight; /* straight steps of the best known path to it */
 	int32_t diagonal; /* diagonal steps of the best known path to it */
 	int32_t parent;   /* record of the jump point its best run started from; -1: start */
@@ -634,21 +634,23 @@ static void gridpath_jump_reset(GridPathSearch *s)
 		memset(s->jump_seen, 0, words * sizeof *s->jump_seen);
 	else
 		for (int32_t i = 0; i < s->jump_count; i++) {
-			const int32_t c = s->jump[i].cell;
+			const int32_t c = s->jump[i].y * s->pw + s->jump[i].x;
 			s->jump_seen[c / 64] &= ~((uint64_t)1 << (c % 64));
 		}
 	s->jump_count = 0;
 }
 
-/* gridpath_jump_new(s, cell): a new record for cell, marked seen; its index. */
-static inline int32_t gridpath_jump_new(GridPathSearch *s, int32_t cell)
+/* gridpath_jump_new(s, cell, x, y): a new record for cell (x, y), marked seen; its
+ * index. */
+static inline int32_t gridpath_jump_new(GridPathSearch *s, int32_t cell, int32_t x, int32_t y)
 {
 	if (s->jump_count == s->jump_cap)
 		s->jump = util_grow(s->jump, &s->jump_cap, s->jump_count + 1, sizeof *s->jump);
 	const int32_t r = s->jump_count++;
 	s->jump_seen[cell / 64] |= (uint64_t)1 << (cell % 64);
 	s->jump_slot[cell] = r;
-	s->jump[r].cell = cell;
+	s->jump[r].x = x;
+	s->jump[r].y = y;
 	s->jump[r].closed = 0;
 	return r;
 }
@@ -730,21 +732,20 @@ static inline int32_t gridpath_run_y(const GridPathSearch *s, int32_t x, int32_t
 	return gridpath_scan(col, col + lw, col - lw, y, dy, x == gx ? gy : -1);
 }
 
-/* gridpath_jump(s, x, y, d, gx, gy, steps): the run from padded (x, y) in direction d:
- * the padded index of its jump point and *steps its length, or -1. */
+/* gridpath_jump(s, x, y, d, gx, gy): the run from padded (x, y) in direction d: the
+ * number of steps to its jump point, or -1. (The caller steps to the point: no
+ * index is divided back into coordinates, a division each.) */
 static int32_t gridpath_jump(const GridPathSearch *s, int32_t x, int32_t y, int d, int32_t gx,
-                             int32_t gy, int32_t *steps)
+                             int32_t gy)
 {
-	const int32_t dx = gridpath_dx[d], dy = gridpath_dy[d], pw = s->pw;
+	const int32_t dx = gridpath_dx[d], dy = gridpath_dy[d];
 	if (dy == 0) {
 		int32_t jx = gridpath_run_x(s, x, y, dx, gx, gy);
-		*steps = abs(jx - x);
-		return jx < 0 ? -1 : y * pw + jx;
+		return jx < 0 ? -1 : abs(jx - x);
 	}
 	if (dx == 0) {
 		int32_t jy = gridpath_run_y(s, x, y, dy, gx, gy);
-		*steps = abs(jy - y);
-		return jy < 0 ? -1 : jy * pw + x;
+		return jy < 0 ? -1 : abs(jy - y);
 	}
 	/* A diagonal step is legal when the cells ahead along x, along y and
 	 * diagonally are free (no corner cutting), and a straight run whose first
@@ -753,23 +754,19 @@ static int32_t gridpath_jump(const GridPathSearch *s, int32_t x, int32_t y, int 
 	 * about (x, y) the straight run along x reads too: a byte array of legal
 	 * steps read here before was one more line for each step, and 10% of the
 	 * maze's time. */
-	const int32_t step = dy * pw + dx, up = dy * s->row_words;
+	const int32_t up = dy * s->row_words;
 	const uint64_t *row = s->rows + (size_t)y * s->row_words; /* row y */
-	int32_t c = y * pw + x;
 	for (int32_t n = 1;; n++) {
 		if (!(gridpath_bit(row, x + dx) & gridpath_bit(row + up, x) &
 		      gridpath_bit(row + up, x + dx)))
 			return -1;
-		c += step;
 		x += dx;
 		y += dy;
 		row += up;
 		if ((x == gx && y == gy) ||
 		    (gridpath_bit(row, x + dx) && gridpath_run_x(s, x, y, dx, gx, gy) >= 0) ||
-		    (gridpath_bit(row + up, x) && gridpath_run_y(s, x, y, dy, gx, gy) >= 0)) {
-			*steps = n;
-			return c;
-		}
+		    (gridpath_bit(row + up, x) && gridpath_run_y(s, x, y, dy, gx, gy) >= 0))
+			return n;
 	}
 }
 
@@ -795,11 +792,11 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
                                          int32_t gy, Path *path, double *length)
 {
 	const int32_t pw = s->pw;
-	const int32_t start = sy * pw + sx, goal = gy * pw + gx;
+	const int32_t start = sy * pw + sx;
 	gridpath_jump_reset(s);
 	gridpath_open_reset(s);
 	{
-		const int32_t r = gridpath_jump_new(s, start);
+		const int32_t r = gridpath_jump_new(s, start, sx, sy);
 		GridPathJumpRecord *rs = &s->jump[r];
 		rs->straight = rs->diagonal = rs->run = 0;
 		rs->parent = -1;
@@ -826,36 +823,35 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 			continue; /* stale, as in gridpath_find */
 		rc->closed = 1;
 		expanded++;
-		const int32_t c = rc->cell;
-		if (c == goal) {
+		/* locals: the records may move when they grow below */
+		const int32_t cx = rc->x, cy = rc->y;
+		if (cx == gx && cy == gy) {
 			found = r;
 			break;
 		}
-		/* locals: the records may move when they grow below */
 		const int32_t cs = rc->straight, cd = rc->diagonal;
-		const int32_t cx = c % pw, cy = c / pw;
 		/* a run whose first step is illegal finds nothing: not tried (the legal
 		 * steps from rows' words about c, which the runs read next) */
 		unsigned dirs = gridpath_successor_dirs(rc->from) & gridpath_moves(s, cx, cy);
 		/* All the runs first, then their jump points in order of d: the runs read
 		 * only rows and cols, so the seen bits and slots of the jump points
 		 * are fetched while the next runs scan. */
-		int32_t found_n[8], found_steps[8];
+		int32_t found_steps[8];
 		int found_d[8], runs = 0;
-		for (int d = 0; d < 8; d++) {
-			if (!((dirs >> d) & 1))
+		for (; dirs; dirs &= dirs - 1) {
+			const int d = gridpath_ctz64(dirs);
+			const int32_t steps = gridpath_jump(s, cx, cy, d, gx, gy);
+			if (steps < 0)
 				continue;
-			int32_t steps;
-			int32_t n = gridpath_jump(s, cx, cy, d, gx, gy, &steps);
-			if (n < 0)
-				continue;
-			found_n[runs] = n;
 			found_steps[runs] = steps;
 			found_d[runs++] = d;
 		}
 		for (int k = 0; k < runs; k++) {
-			const int32_t n = found_n[k], steps = found_steps[k];
+			const int32_t steps = found_steps[k];
 			const int d = found_d[k];
+			const int32_t nx = cx + gridpath_dx[d] * steps,
+			              ny = cy + gridpath_dy[d] * steps;
+			const int32_t n = ny * pw + nx;
 			int32_t ns = cs + (d < 4 ? steps : 0);
 			int32_t nd = cd + (d < 4 ? 0 : steps);
 			double ng = gridpath_cost(ns, nd);
@@ -867,14 +863,14 @@ static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t 
 				    !(ng < gridpath_cost(old->straight, old->diagonal)))
 					continue;
 			} else
-				rn = gridpath_jump_new(s, n);
+				rn = gridpath_jump_new(s, n, nx, ny);
 			GridPathJumpRecord *rr = &s->jump[rn];
 			rr->straight = ns;
 			rr->diagonal = nd;
 			rr->parent = r;
 			rr->run = steps;
 			rr->from = (uint8_t)d;
-			int32_t ax = abs(gx - n % pw), ay = abs(gy - n / pw);
+			int32_t ax = abs(gx - nx), ay = abs(gy - ny);
 			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
 			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, rn};
 			if (ne.f == e.f) {
