@@ -28,17 +28,28 @@
  *   plain A*    rooms 230 -> 145 M, rects 149 -> 93, maze 333 -> 209 (688 000 cells
  *               expanded: 485 -> 304 instructions a cell), Boston_0_1024 192 -> 119,
  *               den520d (x2) 51 -> 32;
- *   jump points rooms 6.7 -> 6.1 M, rects 5.6 -> 4.8, maze 47.2 -> 43.6,
- *               Boston 11.3 -> 9.9, den520d 3.3 -> 2.7.
+ *   jump points rooms 6.7 -> 6.1 -> 5.3 M, rects 5.6 -> 4.8 -> 3.1, maze 47.2 ->
+ *               43.6 -> 50.0 (42 138 jump points expanded: 1 190 instructions
+ *               each), Boston 11.3 -> 9.9 -> 7.2, den520d 3.3 -> 2.7 -> 1.4 (the
+ *               second arrow: the second round, below).
  * The steps, maze plain A*: the parent's neighbours skipped 337 -> 292 M; the ring
  * for the paged heap 292 -> 232; locals instead of fields re-read after byte stores
  * and the sift inline 232 -> 225; the sorted current bucket 225 -> 209 (rooms 172
  * -> 145, and its time about halved: the heap's branches mispredicted). Times and
  * the ratios to libtcod: see gridpath.h. Where the time goes now (perf): the maze's
  * plain A* is bound by instructions (about 2 a cycle), spread over the bucket
- * work, the cost conversions and the neighbour loop; its jump search by the loads
- * of the nodes of jump points (a cache miss each in a 16 MB array: about 30% of
- * its time) and the path's walk back from node to node (about 12%).
+ * work, the cost conversions and the neighbour loop.
+ * The jump search's second round, for its time in the cache (perf, maze: 30% the
+ * loads of the 16 MB node array at new jump points, 12% the walk back): thread CPU
+ * ms, the best of 5 rounds alternating old and new in one session, maze / rooms:
+ * records of its own instead of nodes (JUMP RECORDS) 7.5 -> 6.0 / -; the diagonal
+ * runs' legal steps from rows, not a moves array, 5.5 -> 5.1 / -; rows and cols as
+ * bits (CACHE; the moves array gone) 5.1 -> 5.6 with 53.6 M instructions, then 5.1
+ * with the words' arithmetic unsigned (50.0 M; rooms 0.55 -> 0.31 over the two);
+ * no divisions of an index back into x and y, 5.31 -> 5.08 / 0.31 -> 0.30. Where
+ * its time goes now (perf, maze): the scans of the runs about 25%, the diagonal
+ * runs' steps and the expansions' bookkeeping the rest, the open list about 10%;
+ * instructions rose (the bit arithmetic), cache misses fell.
 
  * PARENT'S NEIGHBOURS: a cell c reached from its parent p need not try a step to p,
  * nor to any cell n one legal step from p: p was expanded, so n already holds a

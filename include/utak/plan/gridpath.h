@@ -23,25 +23,26 @@
  * counts the jump points expanded.
  *
  * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
- * rows and cols; rows 64 cells to a word, so up to 63 more bits a row), and from
- * the first query of either method, 16 bytes more for plain A* (the node) and 4
- * and a bit for the jump search (a record index and a seen bit); plus the open list (16 bytes per
- *pushed entry; at most 8 pushes per cell, far fewer in practice) and, for the jump search, 24 bytes
- *per jump point seen, all kept between queries.
+ * rows and cols; 64 cells to a word, so up to 63 bits more a line), and from the
+ * first query of either method, 16 bytes more for plain A* (the node) and 4 and a
+ * bit for the jump search (a record index and a seen bit); plus the open list (16
+ * bytes per pushed entry; at most 8 pushes per cell, far fewer in practice) and,
+ * for the jump search, 28 bytes per jump point seen, all kept between queries.
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
- * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.7
- * ms, rects 10.0, maze 42.2 (688 000 cells expanded), Boston_0_1024 13.3, den520d
- * 3.2; libtcod's A* over these 26.4, 33.4, 2.08, 20.6 and 17.5 times (before this
- * work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 1.35, 1.16, 10.8, 1.76 and
- * 0.54 ms, libtcod over it 327, 286, 8.16, 155 and 103 times. At 4096 (utak by
- * skelbench --compare --side 4096, libtcod by tcodpath in an earlier run on the same
- * grids): plain A* rooms 326 ms, rects 195, maze 431, libtcod over it 89, 93 and
- * 2.3 times; the jump search 40, 46 and 119 ms, 729, 398 and 8.4 times. Goals of
- * the issue still unmet: plain A* 5 times libtcod on the maze (2.1-2.3: it expands
- * every cell at about 300 instructions each, see gridpath.c), the jump search 10
- * times there (8.2-8.4: its time is mostly cache misses at the jump points' nodes).
+ * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.0
+ * ms, rects 9.3, maze 39.2 (688 000 cells expanded), Boston_0_1024 13.0, den520d
+ * 3.1; libtcod's A* over these 25.9, 32.2, 2.13, 21.3 and 17.2 times (before issue
+ * 16's work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 0.56, 0.41, 6.07, 0.72
+ * and 0.15 ms, libtcod over it 736, 741, 13.8, 381 and 351 times (before its second
+ * round, bits and records: 327, 286, 8.16, 155, 103). At 4096 (utak by skelbench
+ * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids):
+ * plain A* rooms 333 ms, rects 196, maze 410, libtcod over it 87, 93 and 2.4
+ * times; the jump search 13.8, 12.3 and 66.6 ms (before its second round 40, 46
+ * and 119), 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A*
+ * 5 times libtcod on the maze (2.1-2.4: it expands every cell at about 300
+ * instructions each, see gridpath.c).
  * Instructions a query (callgrind): gridpath.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
