@@ -20,9 +20,9 @@
  * Successors of a jump point reached by a straight run: straight on, the two
  * perpendicular straight runs and the two forward diagonals; by a diagonal run: the
  * diagonal and its two straight components; the start: all eight. The cost of a
- * jump is its step count (straight or diagonal), kept as counts as above, so the
- * lengths are the plain A*'s, exactly; checked against it and against every
- * published Moving AI optimum in tests/unit/test_gridpath.c.
+ * jump is its step count (straight or diagonal), kept as counts (gridpath.c, EXACT
+ * TIES), so the lengths are the plain A*'s, exactly; checked against it and against
+ * every published Moving AI optimum in tests/unit/test_gridpath.c.
  *
  * CACHE: a straight run reads three lines of bits: rows for runs along x, cols (the
  * grid transposed) for runs along y, so both scan memory in order, 64 cells a word,

@@ -19,7 +19,7 @@
  * start to goal, one per step, and path.expanded the number of cells expanded.
  *
  * JUMP POINTS: with s.method = GRIDPATH_JUMP after gridpath_init, the same query
- * runs as a jump-point search (gridpath.c): the same length, path.expanded then
+ * runs as a jump-point search (gridjump.c): the same length, path.expanded then
  * counts the jump points expanded.
  *
  * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
@@ -43,7 +43,7 @@
  * and 119), 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A*
  * 5 times libtcod on the maze (2.1-2.4: it expands every cell at about 300
  * instructions each, see gridpath.c).
- * Instructions a query (callgrind): gridpath.c, PERFORMANCE. */
+ * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
 
@@ -56,7 +56,7 @@
  * cells may differ where several paths are shortest). */
 typedef enum GridPathMethod {
 	GRIDPATH_ASTAR = 0, /* A* over every cell (the default) */
-	GRIDPATH_JUMP,      /* A* over jump points (Harabor and Grastien 2011), see gridpath.c */
+	GRIDPATH_JUMP,      /* A* over jump points (Harabor and Grastien 2011), see gridjump.c */
 } GridPathMethod;
 
 typedef enum GridPathStatus {
@@ -84,7 +84,7 @@ typedef struct GridPathBucket {
 } GridPathBucket;
 
 /* The state of one cell for plain A*, kept together so that a visit touches one
- * cache line (the jump search keeps records of its own, gridpath.c). */
+ * cache line (the jump search keeps records of its own, gridjump.c). */
 typedef struct GridPathNode {
 	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
 	int32_t straight; /* straight steps of the best known path to the cell */
@@ -136,7 +136,7 @@ typedef struct GridPathSearch {
 	/* legal[n]: the legal steps of a cell (GridPathNode.moves) whose 3 x 3
 	 * neighbourhood is n: bit 3 (dy + 1) + dx + 1 for (x + dx, y + dy) free. */
 	uint8_t legal[512];
-	/* The jump search's own state (gridpath.c, JUMP RECORDS), allocated by its first
+	/* The jump search's own state (gridjump.c, JUMP RECORDS), allocated by its first
 	 * query: a record per jump point seen, in order of first sight, and per cell a
 	 * seen bit and the index of its record (valid only where the bit is set). */
 	struct GridPathJumpRecord *jump; /* the records of this query */
