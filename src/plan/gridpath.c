@@ -12,12 +12,13 @@
  * costs a random memory access per swap). Since f never decreases during the
  * search, entries are filed in buckets of f (1/64 of a unit), and only the current
  * bucket is ordered. Plain A* keeps its buckets in a ring of 4 units (its open
- * entries never span more than 2 sqrt 2: "plain A*'s open list" below), the current one a sorted
- * array; the jump search, whose jumps are long, keeps a page of GRIDPATH_PAGE
- * buckets with an overflow beyond it (see GRIDPATH_PAGE), the current bucket a
- * binary heap. A neighbour whose f equals the f being expanded (the least in the
+ * entries never span more than 2 sqrt 2: "plain A*'s open list" below), the
+ * current one a sorted array; the jump search (gridjump.c), whose jumps are long,
+ * keeps a page of buckets with an overflow beyond it, the current bucket a binary
+ * heap. A neighbour whose f equals the f being expanded (the least in the
  * list) skips the buckets through a stack. Each free cell's legal steps are one
- * byte of its node (made once by gridpath_init), so an expansion walks the set
+ * byte of its node (made by the first query from the 3 x 3 neighbourhood, by the
+ * table legal of gridpath_init), so an expansion walks the set
  * bits in order of d instead of testing eight neighbours and two corners each.
  *
  * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
@@ -27,18 +28,15 @@
  *   plain A*    rooms 230 -> 145 M, rects 149 -> 93, maze 333 -> 209 (688 000 cells
  *               expanded: 485 -> 304 instructions a cell), Boston_0_1024 192 -> 119,
  *               den520d (x2) 51 -> 32;
- *   jump points rooms 6.7 -> 6.1 M, rects 5.6 -> 4.8, maze 47.2 -> 43.6,
- *               Boston 11.3 -> 9.9, den520d 3.3 -> 2.7.
+ *   jump points: gridjump.c, PERFORMANCE.
  * The steps, maze plain A*: the parent's neighbours skipped 337 -> 292 M; the ring
  * for the paged heap 292 -> 232; locals instead of fields re-read after byte stores
  * and the sift inline 232 -> 225; the sorted current bucket 225 -> 209 (rooms 172
  * -> 145, and its time about halved: the heap's branches mispredicted). Times and
  * the ratios to libtcod: see gridpath.h. Where the time goes now (perf): the maze's
  * plain A* is bound by instructions (about 2 a cycle), spread over the bucket
- * work, the cost conversions and the neighbour loop; its jump search by the loads
- * of the nodes of jump points (a cache miss each in a 16 MB array: about 30% of
- * its time) and the path's walk back from node to node (about 12%).
-
+ * work, the cost conversions and the neighbour loop.
+ *
  * PARENT'S NEIGHBOURS: a cell c reached from its parent p need not try a step to p,
  * nor to any cell n one legal step from p: p was expanded, so n already holds a
  * cost at most g(p) + |pn| <= g(p) + |pc| + |cn| = g(c) + |cn| (one step is never
@@ -61,8 +59,7 @@
  *
  * MEMORY: see gridpath.h. COMPLEXITY: O(n log n) for n cells expanded, n <= free
  * cells, plus O(L) for a path of length L to skip the empty buckets (64 to a word
- * of nonempty bits), and for the jump search each overflow entry once per page it
- * waits through; initialisation O(w h) once per grid, and a query touches only
+ * of nonempty bits); initialisation O(w h) once per grid, and a query touches only
  * what it expands (the round counter replaces clearing the marks) and, for plain
  * A*, the ring's GRIDPATH_RING buckets. */
 #include "utak/plan/gridpath.h"
@@ -72,23 +69,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gridpath_work.h"
 #include "utak/base/util.h"
 
-#define GRIDPATH_SQRT2 1.41421356237309504880
-/* Buckets of the open list per unit of f. f runs from h(start) to the path length,
- * so a query uses (length - h(start)) x this many buckets, and each holds few
- * enough entries that its heap stays in cache. Of 1, 4, 16, 64 and 256 on the
- * 1024 x 1024 maps, 1 was slowest and 16 to 256 within the noise; 64 keeps the
- * current heap at 56 entries on average (8room_000 x2; 101 with 16). */
-#define GRIDPATH_BUCKETS_PER_UNIT 64
-/* Buckets kept at once (a page, see gridpath.h): a path of length L would need
- * L x GRIDPATH_BUCKETS_PER_UNIT of them (3.2 million, 51 MB, corner to corner in a
- * 1024 x 1024 maze, whose path is 50 687 long), and walking the empty ones cost a
- * fifth of the jump search's time there. A page covers 64 units of f, more than
- * plain A*'s f grows in one step (at most 2 sqrt 2), so only long jumps overflow.
- * Empty buckets are skipped 64 at a time by the nonempty bits. */
-#define GRIDPATH_PAGE 4096
-#define GRIDPATH_WORDS (GRIDPATH_PAGE / 64)
 /* Plain A*'s ring (GRIDPATH_RING buckets, gridpath.h): buckets per unit of f. Of
  * 64, 256 and 1024 (rings of 4 units), 64 ran the maze's query in the fewest
  * instructions (232, 236 and 242 million, callgrind), and it files entries as the
@@ -100,39 +83,6 @@
 _Static_assert(GRIDPATH_RING >= 3 * GRIDPATH_RING_PER_UNIT + 2 && GRIDPATH_RING % 64 == 0 &&
                    (GRIDPATH_RING & (GRIDPATH_RING - 1)) == 0,
                "GRIDPATH_RING too small for GRIDPATH_RING_PER_UNIT, or not a power of two");
-/* GridPathNode.from of a start: no step reached it. */
-#define GRIDPATH_NO_PARENT 8
-
-/* gridpath_ctz64(bits): the index of the lowest set bit of bits != 0 (one
- * instruction where the compiler has it; the loop cost a tenth of the maze's A*). */
-static inline int gridpath_ctz64(uint64_t bits)
-{
-#if defined(__GNUC__)
-	return __builtin_ctzll(bits);
-#else
-	int i = 0;
-	while (!((bits >> i) & 1))
-		i++;
-	return i;
-#endif
-}
-
-/* GRIDPATH_PREFETCH(p): asks for p's cache line ahead of use, where the compiler
- * can (a hint only: no effect on results). */
-#if defined(__GNUC__)
-#define GRIDPATH_PREFETCH(p) __builtin_prefetch(p)
-#else
-#define GRIDPATH_PREFETCH(p) ((void)(p))
-#endif
-
-/* The 8 steps: 0..3 straight (E, N, W, S), 4..7 diagonal (NE, NW, SW, SE); a
- * diagonal d = 4 + k lies between straight steps k and (k + 1) mod 4. "N" is +y. */
-static const int8_t gridpath_dx[8] = {1, 0, -1, 0, 1, -1, -1, 1};
-static const int8_t gridpath_dy[8] = {0, 1, 0, -1, 1, 1, -1, -1};
-
-/* gridpath_dir_of[dy + 1][dx + 1]: the step index of (dx, dy) (-1 for (0, 0)). */
-static const int8_t gridpath_dir_of[3][3] = {{6, 3, 7}, {2, -1, 0}, {5, 1, 4}};
-
 double gridpath_octile(int32_t dx, int32_t dy)
 {
 	int32_t ax = abs(dx), ay = abs(dy);
@@ -140,52 +90,50 @@ double gridpath_octile(int32_t dx, int32_t dy)
 	return (double)(hi - lo) + (double)lo * GRIDPATH_SQRT2;
 }
 
-/* The one expression that turns step counts into a length (see EXACT TIES). */
-static inline double gridpath_cost(int32_t straight, int32_t diagonal)
-{
-	return (double)straight + (double)diagonal * GRIDPATH_SQRT2;
-}
-
 void gridpath_init(GridPathSearch *s, const Grid *grid)
 {
 	int32_t pw = grid->w + 2, ph = grid->h + 2;
-	size_t n = (size_t)pw * (size_t)ph;
 	*s = (GridPathSearch){0};
 	s->w = grid->w;
 	s->h = grid->h;
 	s->pw = pw;
 	s->ph = ph;
-	s->node = util_alloc(n, sizeof *s->node);
-	s->rows = util_alloc(n, 1);
-	s->cols = util_alloc(n, 1);
-	s->moves = util_alloc(n, 1);
-	memset(s->moves, 0, n);
-	memset(s->rows, 0, n);
-	memset(s->cols, 0, n);
+	/* rows and cols: one bit a cell, a word before and after the lines so that a
+	 * scan may read one word past either end of a line (see gridpath_scan) */
+	s->row_words = (pw + 63) / 64;
+	s->col_words = (ph + 63) / 64;
+	const size_t row_total = (size_t)ph * (size_t)s->row_words + 2;
+	const size_t col_total = (size_t)pw * (size_t)s->col_words + 2;
+	s->rows = (uint64_t *)util_alloc(row_total, sizeof *s->rows) + 1;
+	s->cols = (uint64_t *)util_alloc(col_total, sizeof *s->cols) + 1;
+	memset(s->rows - 1, 0, row_total * sizeof *s->rows);
+	memset(s->cols - 1, 0, col_total * sizeof *s->cols);
 	for (int32_t y = 0; y < grid->h; y++)
-		for (int32_t x = 0; x < grid->w; x++) {
-			uint8_t f = grid->cells[(size_t)y * grid->w + x] == GRID_FREE;
-			s->rows[(size_t)(y + 1) * pw + (x + 1)] = f;
-			s->cols[(size_t)(x + 1) * ph + (y + 1)] = f;
-		}
-	/* each free cell's legal steps, so that an expansion tests one byte, not 8 */
-	for (int32_t y = 1; y <= grid->h; y++)
-		for (int32_t x = 1; x <= grid->w; x++) {
-			const size_t c = (size_t)y * pw + x;
-			if (!s->rows[c])
-				continue;
-			unsigned m = 0;
+		for (int32_t x = 0; x < grid->w; x++)
+			if (grid->cells[(size_t)y * grid->w + x] == GRID_FREE) {
+				uint64_t *row = s->rows + (size_t)(y + 1) * s->row_words;
+				uint64_t *col = s->cols + (size_t)(x + 1) * s->col_words;
+				row[(x + 1) / 64] |= (uint64_t)1 << ((x + 1) % 64);
+				col[(y + 1) / 64] |= (uint64_t)1 << ((y + 1) % 64);
+			}
+	/* the legal steps of a cell from its 3 x 3 neighbourhood (see gridpath_moves) */
+	for (unsigned nb = 0; nb < 512; nb++) {
+		/* free(dx, dy): bit 3 (dy + 1) + dx + 1 of nb */
+#define GRIDPATH_NB_FREE(dx, dy) (nb >> (3 * ((dy) + 1) + (dx) + 1) & 1u)
+		unsigned m = 0;
+		if (GRIDPATH_NB_FREE(0, 0)) {
 			for (int d = 0; d < 4; d++)
-				m |= (unsigned)s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]]
-				     << d;
+				m |= GRIDPATH_NB_FREE(gridpath_dx[d], gridpath_dy[d]) << d;
 			for (int k = 0; k < 4; k++) {
 				const int d = 4 + k;
 				if ((m >> k & 1) && (m >> ((k + 1) & 3) & 1) &&
-				    s->rows[c + gridpath_dy[d] * pw + gridpath_dx[d]])
+				    GRIDPATH_NB_FREE(gridpath_dx[d], gridpath_dy[d]))
 					m |= 1u << d;
 			}
-			s->node[c].moves = s->moves[c] = (uint8_t)m;
 		}
+#undef GRIDPATH_NB_FREE
+		s->legal[nb] = (uint8_t)m;
+	}
 	/* the steps an expansion may skip (see PARENT'S NEIGHBOURS in gridpath_find) */
 	for (int d = 0; d <= 8; d++)
 		for (unsigned mp = 0; mp < 256; mp++) {
@@ -207,165 +155,18 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 void gridpath_free(GridPathSearch *s)
 {
 	free(s->node);
-	free(s->rows);
-	free(s->cols);
-	free(s->moves);
-	if (s->bucket)
-		for (int i = 0; i < GRIDPATH_PAGE; i++)
-			free(s->bucket[i].e);
-	free(s->bucket);
+	if (s->rows)
+		free(s->rows - 1); /* the word before the lines, see gridpath_init */
+	if (s->cols)
+		free(s->cols - 1);
 	if (s->ring)
 		for (int i = 0; i < GRIDPATH_RING; i++)
 			free(s->ring[i].e);
 	free(s->ring);
-	free(s->nonempty);
-	free(s->overflow);
 	free(s->stack);
 	free(s->scratch);
+	gridpath_jump_free(s);
 	*s = (GridPathSearch){0};
-}
-
-/* gridpath_before(a, b): a leaves the heap before b (smaller f; on equal f, larger g). */
-static inline int gridpath_before(const GridPathOpen *a, const GridPathOpen *b)
-{
-	return a->f < b->f || (a->f == b->f && a->g > b->g);
-}
-
-/* gridpath_sift_down(h, n, i, e): puts e at position i of heap h[0..n) and sifts it
- * down to where it belongs. */
-static inline void gridpath_sift_down(GridPathOpen *h, int n, int i, GridPathOpen e)
-{
-	for (;;) {
-		int c = 2 * i + 1;
-		if (c >= n)
-			break;
-		if (c + 1 < n && gridpath_before(&h[c + 1], &h[c]))
-			c++;
-		if (!gridpath_before(&h[c], &e))
-			break;
-		h[i] = h[c];
-		i = c;
-	}
-	h[i] = e;
-}
-
-/* gridpath_bucket_of(s, f): the bucket number of f, never before the current one
- * (the heuristic is consistent, so f never decreases along a search: the clamp only
- * guards rounding). */
-static inline int64_t gridpath_bucket_of(const GridPathSearch *s, double f)
-{
-	double rel = (f - s->f_start) * GRIDPATH_BUCKETS_PER_UNIT;
-	return rel < (double)s->bucket_now ? s->bucket_now : (int64_t)rel;
-}
-
-/* gridpath_room_for(p, need, cap): p with room for need entries. */
-static inline GridPathOpen *gridpath_room_for(GridPathOpen *p, int need, int *cap)
-{
-	return need <= *cap ? p : util_grow(p, cap, need, sizeof *p);
-}
-
-/* gridpath_room(p, count, cap): p with room for one more entry. The test is inline,
- * the call only when full (a call per push was a tenth of the maze's A*). */
-static inline GridPathOpen *gridpath_room(GridPathOpen *p, int count, int *cap)
-{
-	return count < *cap ? p : util_grow(p, cap, count + 1, sizeof *p);
-}
-
-/* gridpath_file(s, e, b): e into bucket b of the page, unsorted (b is not current). */
-static inline void gridpath_file(GridPathSearch *s, GridPathOpen e, int64_t b)
-{
-	int slot = (int)(b - s->page_base);
-	GridPathBucket *k = &s->bucket[slot];
-	k->e = gridpath_room(k->e, k->count, &k->cap);
-	k->e[k->count++] = e;
-	s->nonempty[slot / 64] |= (uint64_t)1 << (slot % 64);
-}
-
-/* gridpath_push: files e in its bucket; in the current one, by heap insertion; past
- * the page, in the overflow. */
-static inline void gridpath_push(GridPathSearch *s, GridPathOpen e)
-{
-	int64_t b = gridpath_bucket_of(s, e.f);
-	if (b >= s->page_base + GRIDPATH_PAGE) {
-		s->overflow = gridpath_room(s->overflow, s->overflow_count, &s->overflow_cap);
-		s->overflow[s->overflow_count++] = e;
-		return;
-	}
-	if (b != s->bucket_now) {
-		gridpath_file(s, e, b);
-		return;
-	}
-	int slot = (int)(b - s->page_base);
-	GridPathBucket *k = &s->bucket[slot];
-	k->e = gridpath_room(k->e, k->count, &k->cap);
-	s->nonempty[slot / 64] |= (uint64_t)1 << (slot % 64);
-	int i = k->count++;
-	while (i > 0) {
-		int parent = (i - 1) / 2;
-		if (!gridpath_before(&e, &k->e[parent]))
-			break;
-		k->e[i] = k->e[parent];
-		i = parent;
-	}
-	k->e[i] = e;
-}
-
-/* gridpath_next_slot(s, slot): the first bucket of the page at or after slot that
- * holds entries, or GRIDPATH_PAGE. */
-static int gridpath_next_slot(const GridPathSearch *s, int slot)
-{
-	for (int w = slot / 64; w < GRIDPATH_WORDS; w++) {
-		uint64_t bits = s->nonempty[w];
-		if (w == slot / 64)
-			bits &= ~(uint64_t)0 << (slot % 64);
-		if (bits == 0)
-			continue;
-		return w * 64 + gridpath_ctz64(bits);
-	}
-	return GRIDPATH_PAGE;
-}
-
-/* gridpath_pop: the first entry of the open list into *e; false when it is empty.
- * Moving to a new bucket turns it into a heap (Floyd's bottom-up build, O(n)); an
- * empty page is replaced by the one that starts at the overflow's least bucket. */
-static bool gridpath_pop(GridPathSearch *s, GridPathOpen *e)
-{
-	int slot = (int)(s->bucket_now - s->page_base);
-	int next = s->bucket[slot].count > 0 ? slot : gridpath_next_slot(s, slot);
-	if (next == GRIDPATH_PAGE) {
-		if (s->overflow_count == 0)
-			return false;
-		int64_t least = INT64_MAX;
-		for (int i = 0; i < s->overflow_count; i++) {
-			int64_t b = gridpath_bucket_of(s, s->overflow[i].f);
-			least = b < least ? b : least;
-		}
-		s->page_base = s->bucket_now = least;
-		int kept = 0;
-		for (int i = 0; i < s->overflow_count; i++) {
-			int64_t b = gridpath_bucket_of(s, s->overflow[i].f);
-			if (b < s->page_base + GRIDPATH_PAGE)
-				gridpath_file(s, s->overflow[i], b);
-			else
-				s->overflow[kept++] = s->overflow[i];
-		}
-		s->overflow_count = kept;
-		slot = -1; /* bucket 0 is new: make it a heap below */
-		next = gridpath_next_slot(s, 0);
-	}
-	GridPathBucket *k = &s->bucket[next];
-	if (next != slot) {
-		s->bucket_now = s->page_base + next;
-		for (int i = k->count / 2 - 1; i >= 0; i--)
-			gridpath_sift_down(k->e, k->count, i, k->e[i]);
-	}
-	*e = k->e[0];
-	k->count--;
-	if (k->count > 0)
-		gridpath_sift_down(k->e, k->count, 0, k->e[k->count]);
-	else
-		s->nonempty[next / 64] &= ~((uint64_t)1 << (next % 64));
-	return true;
 }
 
 /* ------------------------------------------------------- plain A*'s open list
@@ -480,26 +281,20 @@ static void gridpath_ring_reset(GridPathSearch *s)
 	s->ring_now = 0;
 }
 
-/* gridpath_open_reset(s): an empty open list for a new query. */
-static void gridpath_open_reset(GridPathSearch *s)
-{
-	if (!s->bucket) {
-		s->bucket = util_alloc(GRIDPATH_PAGE, sizeof *s->bucket);
-		memset(s->bucket, 0, GRIDPATH_PAGE * sizeof *s->bucket);
-		s->nonempty = util_alloc(GRIDPATH_WORDS, sizeof *s->nonempty);
-		memset(s->nonempty, 0, GRIDPATH_WORDS * sizeof *s->nonempty);
-	}
-	for (int slot = gridpath_next_slot(s, 0); slot < GRIDPATH_PAGE;
-	     slot = gridpath_next_slot(s, slot + 1))
-		s->bucket[slot].count = 0;
-	memset(s->nonempty, 0, GRIDPATH_WORDS * sizeof *s->nonempty);
-	s->page_base = s->bucket_now = 0;
-	s->overflow_count = 0;
-}
-
-/* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. */
+/* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. The
+ * nodes are made by the first plain A* query (the jump search needs none), marked
+ * unseen, with each cell's legal steps (gridpath_moves). */
 static void gridpath_next_round(GridPathSearch *s)
 {
+	if (!s->node) {
+		const size_t n = (size_t)s->pw * (size_t)s->ph;
+		s->node = util_alloc(n, sizeof *s->node);
+		memset(s->node, 0, n * sizeof *s->node);
+		for (int32_t y = 1; y < s->ph - 1; y++)
+			for (int32_t x = 1; x < s->pw - 1; x++)
+				s->node[(size_t)y * s->pw + x].moves = gridpath_moves(s, x, y);
+		s->round = 0;
+	}
 	if (s->round >= UINT32_MAX / 2 - 1) {
 		size_t n = (size_t)s->pw * (size_t)(s->h + 2);
 		for (size_t i = 0; i < n; i++)
@@ -507,307 +302,6 @@ static void gridpath_next_round(GridPathSearch *s)
 		s->round = 0;
 	}
 	s->round++;
-}
-
-/* ---------------------------------------------------------------- jump points
- *
- * ALGORITHM: jump-point search (D. Harabor, A. Grastien, "Online graph pruning for
- * pathfinding on grid maps", AAAI 2011), the same A* over a pruned set of cells, in
- * the form that respects this grid's rule "a diagonal step only when both orthogonal
- * neighbours are free". Under that rule every shortest path can be taken as
- * straight runs and diagonal runs whose turns happen only at jump points:
- *   - a straight run (dx, 0) stops at a cell that has a "forced" neighbour: a free
- *     cell beside it, (x, y +- 1), whose cell behind, (x - dx, y +- 1), is blocked,
- *     so that no path through the previous cell reaches it as cheaply (the diagonal
- *     step that would have is forbidden by the rule); the same with x and y swapped;
- *   - a diagonal run (dx, dy) stops at a cell from which a straight run along dx or
- *     along dy reaches a jump point (it turns there);
- *   - any run stops at the goal, and ends (no jump point) at a blocked cell or, for
- *     a diagonal run, at a step the rule forbids.
- * Successors of a jump point reached by a straight run: straight on, the two
- * perpendicular straight runs and the two forward diagonals; by a diagonal run: the
- * diagonal and its two straight components; the start: all eight. The cost of a
- * jump is its step count (straight or diagonal), kept as counts as above, so the
- * lengths are the plain A*'s, exactly; checked against it and against every
- * published Moving AI optimum in tests/unit/test_gridpath.c.
- *
- * CACHE: a straight run reads three lines of bytes: rows for runs along x, cols (the
- * grid transposed) for runs along y, so both scan memory in order instead of a node
- * (16 bytes) or a row (pw bytes) per step. Only jump points touch node[].
- *
- * PATH: each jump point's node keeps the direction and length of the run that
- * reached it, so the path is rebuilt from the goal run by run without touching the
- * nodes between (on the 1024 maze they were 8% of the search's time, a cache miss
- * each). A run longer than its 16-bit field is walked back instead, to the first
- * closed cell whose step counts are exactly the run's steps fewer: the run's start,
- * or another cell of the run as near the start, which serves as well (its cost is
- * final and the rest of the run from it is free). */
-
-/* A start has no run that reached it: all eight directions are its successors. */
-#define GRIDPATH_FROM_START GRIDPATH_NO_PARENT
-
-/* Eight cells at a time: where the compiler has bit-scan builtins and stores bytes
- * little-end first, gridpath_scan tests a word of 8 cells of each line at once
- * (the events of a word are its blocked cells and forced neighbours; the first is
- * found by counting zero bits). Elsewhere it runs cell by cell, the same result. On
- * the 4096 rooms corner to corner it made the jump search ~2 times faster. */
-#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-#define GRIDPATH_SCAN_WORDS 1
-#define GRIDPATH_ONES 0x0101010101010101ULL
-static inline uint64_t gridpath_load8(const uint8_t *p)
-{
-	uint64_t v;
-	memcpy(&v, p, sizeof v);
-	return v;
-}
-#else
-#define GRIDPATH_SCAN_WORDS 0
-#endif
-
-/* gridpath_scan(cur, a, b, len, i, dir, stop): the straight run from position i
- * along the line cur of len cells (with its two neighbouring lines a and b, all three
- * padded so the ends are 0) in direction dir: the position of the jump point it
- * reaches, or -1. */
-static inline int32_t gridpath_scan(const uint8_t *cur, const uint8_t *a, const uint8_t *b,
-                                    int32_t len, int32_t i, int32_t dir, int32_t stop)
-{
-#if GRIDPATH_SCAN_WORDS
-	/* Words of positions i + 1 .. i + 8 (or i - 8 .. i - 1) while they lie in the
-	 * line and hold no stop; the rest cell by cell below. */
-	/* words hold no stop: they end before it (dir > 0) or start after it */
-	if (dir > 0) {
-		const int32_t end = stop > i ? stop : len;
-		for (int32_t p = i + 1; p + 8 <= end; p += 8) {
-			uint64_t ev = ~gridpath_load8(cur + p) |
-			              (gridpath_load8(a + p) & ~gridpath_load8(a + p - 1)) |
-			              (gridpath_load8(b + p) & ~gridpath_load8(b + p - 1));
-			ev &= GRIDPATH_ONES;
-			if (ev) {
-				int32_t j = p + __builtin_ctzll(ev) / 8;
-				return cur[j] ? j : -1;
-			}
-			i = p + 7;
-		}
-	} else {
-		const int32_t first = stop >= 0 && stop < i ? stop + 1 : 0;
-		for (int32_t p = i - 8; p >= first; p -= 8) {
-			uint64_t ev = ~gridpath_load8(cur + p) |
-			              (gridpath_load8(a + p) & ~gridpath_load8(a + p + 1)) |
-			              (gridpath_load8(b + p) & ~gridpath_load8(b + p + 1));
-			ev &= GRIDPATH_ONES;
-			if (ev) {
-				int32_t j = p + (63 - __builtin_clzll(ev)) / 8;
-				return cur[j] ? j : -1;
-			}
-			i = p;
-		}
-	}
-#else
-	(void)len;
-#endif
-	for (;;) {
-		i += dir;
-		if (!cur[i])
-			return -1;
-		/* forced: free beside, blocked behind (bytes are 0 or 1) */
-		if (i == stop || a[i] > a[i - dir] || b[i] > b[i - dir])
-			return i;
-	}
-}
-
-/* gridpath_run_x(s, x, y, dx, gx, gy): the straight run along x from padded (x, y):
- * the x of its jump point, or -1. gridpath_run_y: the same along y, the y. */
-static inline int32_t gridpath_run_x(const GridPathSearch *s, int32_t x, int32_t y, int32_t dx,
-                                     int32_t gx, int32_t gy)
-{
-	const uint8_t *row = s->rows + (size_t)y * s->pw;
-	return gridpath_scan(row, row + s->pw, row - s->pw, s->pw, x, dx, y == gy ? gx : -1);
-}
-
-static inline int32_t gridpath_run_y(const GridPathSearch *s, int32_t x, int32_t y, int32_t dy,
-                                     int32_t gx, int32_t gy)
-{
-	const uint8_t *col = s->cols + (size_t)x * s->ph;
-	return gridpath_scan(col, col + s->ph, col - s->ph, s->ph, y, dy, x == gx ? gy : -1);
-}
-
-/* gridpath_jump(s, x, y, d, gx, gy, steps): the run from padded (x, y) in direction d:
- * the padded index of its jump point and *steps its length, or -1. */
-static int32_t gridpath_jump(const GridPathSearch *s, int32_t x, int32_t y, int d, int32_t gx,
-                             int32_t gy, int32_t *steps)
-{
-	const int32_t dx = gridpath_dx[d], dy = gridpath_dy[d], pw = s->pw;
-	if (dy == 0) {
-		int32_t jx = gridpath_run_x(s, x, y, dx, gx, gy);
-		*steps = abs(jx - x);
-		return jx < 0 ? -1 : y * pw + jx;
-	}
-	if (dx == 0) {
-		int32_t jy = gridpath_run_y(s, x, y, dy, gx, gy);
-		*steps = abs(jy - y);
-		return jy < 0 ? -1 : jy * pw + x;
-	}
-	/* The legal steps of each cell (one byte, gridpath_init): the diagonal step
-	 * is legal when bit d is set, and a straight run whose first cell is blocked
-	 * finds nothing, so it is not scanned (in the 1024 maze's corridors, 3 cells
-	 * wide, most are not). */
-	const uint8_t *moves = s->moves;
-	const int along_x = gridpath_dir_of[1][dx + 1], along_y = gridpath_dir_of[dy + 1][1];
-	const int32_t step = dy * pw + dx;
-	int32_t c = y * pw + x;
-	for (int32_t n = 1;; n++) {
-		if (!(moves[c] >> d & 1))
-			return -1;
-		c += step;
-		x += dx;
-		y += dy;
-		const unsigned m = moves[c];
-		if ((x == gx && y == gy) ||
-		    ((m >> along_x & 1) && gridpath_run_x(s, x, y, dx, gx, gy) >= 0) ||
-		    ((m >> along_y & 1) && gridpath_run_y(s, x, y, dy, gx, gy) >= 0)) {
-			*steps = n;
-			return c;
-		}
-	}
-}
-
-/* gridpath_successor_dirs(from): the directions to run from a jump point reached by
- * a run in direction from (bit d for direction d). */
-static unsigned gridpath_successor_dirs(int from)
-{
-	if (from == GRIDPATH_FROM_START)
-		return 0xffu;
-	int dx = gridpath_dx[from], dy = gridpath_dy[from];
-	if (dx != 0 && dy != 0)
-		return 1u << from | 1u << gridpath_dir_of[1][dx + 1] |
-		       1u << gridpath_dir_of[dy + 1][1];
-	if (dy == 0) /* along x: on, both sides, both forward diagonals */
-		return 1u << from | 1u << 1 | 1u << 3 | 1u << gridpath_dir_of[2][dx + 1] |
-		       1u << gridpath_dir_of[0][dx + 1];
-	return 1u << from | 1u << 0 | 1u << 2 | 1u << gridpath_dir_of[dy + 1][2] |
-	       1u << gridpath_dir_of[dy + 1][0];
-}
-
-/* gridpath_find_jump: gridpath_find for GRIDPATH_JUMP, with padded, checked ends. */
-static GridPathStatus gridpath_find_jump(GridPathSearch *s, int32_t sx, int32_t sy, int32_t gx,
-                                         int32_t gy, Path *path, double *length)
-{
-	const int32_t pw = s->pw;
-	const int32_t start = sy * pw + sx, goal = gy * pw + gx;
-	gridpath_next_round(s);
-	const uint32_t open_mark = 2 * s->round, closed_mark = 2 * s->round + 1;
-	GridPathNode *node = s->node;
-	gridpath_open_reset(s);
-	node[start].mark = open_mark;
-	node[start].straight = node[start].diagonal = 0;
-	node[start].from = GRIDPATH_FROM_START;
-	{
-		int32_t ax = abs(gx - sx), ay = abs(gy - sy);
-		int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-		s->f_start = gridpath_cost(hi - lo, lo);
-		gridpath_push(s, (GridPathOpen){s->f_start, 0, start});
-	}
-	int64_t expanded = 0;
-	int found = 0;
-	GridPathOpen e;
-	s->stack_count = 0;
-	for (;;) {
-		if (s->stack_count > 0)
-			e = s->stack[--s->stack_count];
-		else if (!gridpath_pop(s, &e))
-			break;
-		int32_t c = e.cell;
-		GridPathNode *nc = &node[c];
-		if (nc->mark == closed_mark)
-			continue; /* stale, as in gridpath_find */
-		nc->mark = closed_mark;
-		expanded++;
-		if (c == goal) {
-			found = 1;
-			break;
-		}
-		const int32_t cx = c % pw, cy = c / pw;
-		/* a run whose first step is illegal finds nothing: not tried */
-		unsigned dirs = gridpath_successor_dirs(nc->from) & s->moves[c];
-		/* All the runs first, then their jump points in order of d: the runs read
-		 * only rows, cols and moves, so the nodes of the jump points (a cache miss
-		 * each, most of the maze's time) are fetched while the next runs scan. */
-		int32_t found_n[8], found_steps[8];
-		int found_d[8], runs = 0;
-		for (int d = 0; d < 8; d++) {
-			if (!((dirs >> d) & 1))
-				continue;
-			int32_t steps;
-			int32_t n = gridpath_jump(s, cx, cy, d, gx, gy, &steps);
-			if (n < 0)
-				continue;
-			GRIDPATH_PREFETCH(&node[n]);
-			found_n[runs] = n;
-			found_steps[runs] = steps;
-			found_d[runs++] = d;
-		}
-		for (int k = 0; k < runs; k++) {
-			const int32_t n = found_n[k], steps = found_steps[k];
-			const int d = found_d[k];
-			GridPathNode *nn = &node[n];
-			if (nn->mark == closed_mark)
-				continue;
-			int32_t ns = nc->straight + (d < 4 ? steps : 0);
-			int32_t nd = nc->diagonal + (d < 4 ? 0 : steps);
-			double ng = gridpath_cost(ns, nd);
-			if (nn->mark == open_mark &&
-			    !(ng < gridpath_cost(nn->straight, nn->diagonal)))
-				continue;
-			nn->mark = open_mark;
-			nn->straight = ns;
-			nn->diagonal = nd;
-			nn->from = (uint8_t)d;
-			nn->run = steps <= UINT16_MAX ? (uint16_t)steps : 0;
-			int32_t ax = abs(gx - n % pw), ay = abs(gy - n / pw);
-			int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng, n};
-			if (ne.f == e.f) {
-				s->stack = gridpath_room(s->stack, s->stack_count, &s->stack_cap);
-				s->stack[s->stack_count++] = ne;
-			} else
-				gridpath_push(s, ne);
-		}
-	}
-	path->expanded = expanded;
-	if (!found)
-		return GRIDPATH_NO_PATH;
-
-	/* Walk back run by run (see PATH above), filling the path from its end. */
-	int32_t steps = node[goal].straight + node[goal].diagonal;
-	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
-	path->count = steps + 1;                     /* every point is written below */
-	int32_t c = goal, i = steps, x = gx, y = gy; /* c = y pw + x: no division */
-	path->pts[i] = vec2((double)(gx - 1) + 0.5, (double)(gy - 1) + 0.5);
-	while (c != start) {
-		const int d = node[c].from;
-		const int32_t back = gridpath_dy[d] * pw + gridpath_dx[d];
-		const int32_t cs = node[c].straight, cd = node[c].diagonal;
-		/* the run's start is known when it was short enough to keep; else the walk */
-		const int32_t known = node[c].run;
-		for (int32_t k = 1;; k++) {
-			int32_t r = c - k * back;
-			x -= gridpath_dx[d];
-			y -= gridpath_dy[d];
-			path->pts[i - k] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
-			const GridPathNode *nr = &node[r];
-			bool run_start = known ? k == known
-			                       : nr->mark == closed_mark &&
-			                             nr->straight == cs - (d < 4 ? k : 0) &&
-			                             nr->diagonal == cd - (d < 4 ? 0 : k);
-			if (!run_start)
-				continue;
-			c = r;
-			i -= k;
-			break;
-		}
-	}
-	*length = gridpath_cost(node[goal].straight, node[goal].diagonal);
-	return GRIDPATH_FOUND;
 }
 
 GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t gx, int32_t gy,
@@ -820,7 +314,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		return GRIDPATH_BAD_ENDPOINT;
 	const int32_t pw = s->pw;
 	const int32_t start = (sy + 1) * pw + (sx + 1), goal = (gy + 1) * pw + (gx + 1);
-	if (!s->rows[start] || !s->rows[goal])
+	if (!gridpath_is_free(s, sx + 1, sy + 1) || !gridpath_is_free(s, gx + 1, gy + 1))
 		return GRIDPATH_BAD_ENDPOINT;
 
 	if (s->method == GRIDPATH_JUMP)

@@ -255,6 +255,49 @@ TEST_CASE(gridpath_jump_equals_dijkstra_on_random_grids)
 	path_free(&q);
 }
 
+/* Against plain A* (checked against the oracle above), on grids 62 to 200 cells a
+ * side, whose rows and columns span several 64-cell words of the jump search's bit
+ * lines (gridpath.c, CACHE): runs, forced neighbours and the goal on either side of
+ * a word's edge, and the legal steps of cells whose neighbourhood straddles one.
+ * Low densities, so runs are long. (The O(n^2) oracle would take minutes here.) */
+TEST_CASE(gridpath_jump_equals_astar_across_words)
+{
+	Path p, q;
+	path_init(&p);
+	path_init(&q);
+	for (int trial = 0; trial < 60; trial++) {
+		int w = 62 + (int)(rng_next() % 139), h = 62 + (int)(rng_next() % 139);
+		int density = (int)(rng_next() % 25);
+		Grid g;
+		grid_init(&g, w, h, GRID_FREE);
+		for (int i = 0; i < w * h; i++)
+			if ((int)(rng_next() % 100) < density)
+				g.cells[i] = GRID_BLOCKED;
+		GridPathSearch s, a;
+		gridpath_init(&s, &g);
+		gridpath_init(&a, &g);
+		s.method = GRIDPATH_JUMP;
+		for (int k = 0; k < 16; k++) {
+			int sx = (int)(rng_next() % (uint32_t)w),
+			    sy = (int)(rng_next() % (uint32_t)h);
+			int gx = (int)(rng_next() % (uint32_t)w),
+			    gy = (int)(rng_next() % (uint32_t)h);
+			double len, alen;
+			GridPathStatus st = gridpath_find(&s, sx, sy, gx, gy, &p, &len);
+			GridPathStatus ast = gridpath_find(&a, sx, sy, gx, gy, &q, &alen);
+			TEST_CHECK(st == ast);
+			TEST_CHECK(len == alen);
+			if (st == GRIDPATH_FOUND)
+				TEST_CHECK(check_path(&g, &p, sx, sy, gx, gy, len));
+		}
+		gridpath_free(&s);
+		gridpath_free(&a);
+		grid_free(&g);
+	}
+	path_free(&p);
+	path_free(&q);
+}
+
 /* Every published optimum of every scenario file in tests/data/movingai: the jump
  * search finds it, a legal path of that length, and so does plain A* on the same
  * problem (the issue's check of one against the other). */
@@ -318,6 +361,7 @@ int main(void)
 	TEST_RUN(gridpath_refuses_bad_endpoints);
 	TEST_RUN(gridpath_matches_published_optima);
 	TEST_RUN(gridpath_jump_equals_dijkstra_on_random_grids);
+	TEST_RUN(gridpath_jump_equals_astar_across_words);
 	TEST_RUN(gridpath_jump_matches_every_published_optimum);
 	return TEST_EXIT();
 }

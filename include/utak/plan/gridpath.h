@@ -19,27 +19,31 @@
  * start to goal, one per step, and path.expanded the number of cells expanded.
  *
  * JUMP POINTS: with s.method = GRIDPATH_JUMP after gridpath_init, the same query
- * runs as a jump-point search (gridpath.c): the same length, path.expanded then
+ * runs as a jump-point search (gridjump.c): the same length, path.expanded then
  * counts the jump points expanded.
  *
- * MEMORY: 19 bytes per cell of the grid with a one-cell border (the node, and a
- * byte each in rows, cols and moves), plus the open list (16 bytes per pushed entry;
- * at most 8 pushes per cell, far fewer in practice), kept between queries.
+ * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
+ * rows and cols; 64 cells to a word, so up to 63 bits more a line), and from the
+ * first query of either method, 16 bytes more for plain A* (the node) and 4 and a
+ * bit for the jump search (a record index and a seen bit); plus the open list (16
+ * bytes per pushed entry; at most 8 pushes per cell, far fewer in practice) and,
+ * for the jump search, 28 bytes per jump point seen, all kept between queries.
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
- * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.7
- * ms, rects 10.0, maze 42.2 (688 000 cells expanded), Boston_0_1024 13.3, den520d
- * 3.2; libtcod's A* over these 26.4, 33.4, 2.08, 20.6 and 17.5 times (before this
- * work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 1.35, 1.16, 10.8, 1.76 and
- * 0.54 ms, libtcod over it 327, 286, 8.16, 155 and 103 times. At 4096 (utak by
- * skelbench --compare --side 4096, libtcod by tcodpath in an earlier run on the same
- * grids): plain A* rooms 326 ms, rects 195, maze 431, libtcod over it 89, 93 and
- * 2.3 times; the jump search 40, 46 and 119 ms, 729, 398 and 8.4 times. Goals of
- * the issue still unmet: plain A* 5 times libtcod on the maze (2.1-2.3: it expands
- * every cell at about 300 instructions each, see gridpath.c), the jump search 10
- * times there (8.2-8.4: its time is mostly cache misses at the jump points' nodes).
- * Instructions a query (callgrind): gridpath.c, PERFORMANCE. */
+ * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.0
+ * ms, rects 9.3, maze 39.2 (688 000 cells expanded), Boston_0_1024 13.0, den520d
+ * 3.1; libtcod's A* over these 25.9, 32.2, 2.13, 21.3 and 17.2 times (before issue
+ * 16's work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 0.56, 0.41, 6.07, 0.72
+ * and 0.15 ms, libtcod over it 736, 741, 13.8, 381 and 351 times (before its second
+ * round, bits and records: 327, 286, 8.16, 155, 103). At 4096 (utak by skelbench
+ * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids):
+ * plain A* rooms 333 ms, rects 196, maze 410, libtcod over it 87, 93 and 2.4
+ * times; the jump search 13.8, 12.3 and 66.6 ms (before its second round 40, 46
+ * and 119), 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A*
+ * 5 times libtcod on the maze (2.1-2.4: it expands every cell at about 300
+ * instructions each, see gridpath.c).
+ * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
 
@@ -52,7 +56,7 @@
  * cells may differ where several paths are shortest). */
 typedef enum GridPathMethod {
 	GRIDPATH_ASTAR = 0, /* A* over every cell (the default) */
-	GRIDPATH_JUMP,      /* A* over jump points (Harabor and Grastien 2011), see gridpath.c */
+	GRIDPATH_JUMP,      /* A* over jump points (Harabor and Grastien 2011), see gridjump.c */
 } GridPathMethod;
 
 typedef enum GridPathStatus {
@@ -79,7 +83,8 @@ typedef struct GridPathBucket {
 	int count, cap;
 } GridPathBucket;
 
-/* The state of one cell, kept together so that a visit touches one cache line. */
+/* The state of one cell for plain A*, kept together so that a visit touches one
+ * cache line (the jump search keeps records of its own, gridjump.c). */
 typedef struct GridPathNode {
 	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
 	int32_t straight; /* straight steps of the best known path to the cell */
@@ -87,7 +92,6 @@ typedef struct GridPathNode {
 	uint8_t moves;    /* the legal steps from the cell: bit d for step d of gridpath.c
 	                     (no corner cutting); 0 for blocked and border cells */
 	uint8_t from;     /* direction (0..7) of the step that reached it */
-	uint16_t run;     /* jump search: steps of the run that reached it (0: too long) */
 } GridPathNode;
 
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
@@ -95,7 +99,7 @@ typedef struct GridPathNode {
 typedef struct GridPathSearch {
 	int32_t w, h;       /* size of the grid searched, in cells */
 	int32_t pw;         /* padded width: w + 2 */
-	GridPathNode *node; /* (w + 2) (h + 2) cells */
+	GridPathNode *node; /* (w + 2) (h + 2) cells, plain A*'s; NULL before its first query */
 	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
 	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
 	 * the start's f; the current bucket is a binary heap, later ones are unsorted.
@@ -119,15 +123,26 @@ typedef struct GridPathSearch {
 	GridPathOpen *scratch;                  /* for sorting a bucket */
 	int scratch_cap;
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
-	 * search. The jump search scans the grid along rows and columns, so it keeps the
-	 * free cells twice more, a byte each: row-major (rows) and column-major (cols),
-	 * both padded like node. */
+	 * search. The jump search scans the grid along rows and columns, so the free
+	 * cells are kept twice, row-major (rows) and column-major (cols), both padded
+	 * like node. */
 	GridPathMethod method;
-	int32_t ph;     /* padded height: h + 2 */
-	uint8_t *rows;  /* pw * ph: rows[y * pw + x] = 1 when (x - 1, y - 1) is free */
-	uint8_t *cols;  /* ph * pw: cols[x * ph + y], the same transposed */
-	uint8_t *moves; /* pw * ph: each cell's legal steps (GridPathNode.moves), for the
-	                   jump search's diagonal runs */
+	int32_t ph; /* padded height: h + 2 */
+	/* rows: one bit a cell (1: free), row by row, row_words words a row (bit x % 64
+	 * of word x / 64 for padded x); cols: the same transposed, col_words words a
+	 * column. 128 KB each at 1024 x 1024, so the runs' scans stay in cache. */
+	uint64_t *rows, *cols;
+	int32_t row_words, col_words;
+	/* legal[n]: the legal steps of a cell (GridPathNode.moves) whose 3 x 3
+	 * neighbourhood is n: bit 3 (dy + 1) + dx + 1 for (x + dx, y + dy) free. */
+	uint8_t legal[512];
+	/* The jump search's own state (gridjump.c, JUMP RECORDS), allocated by its first
+	 * query: a record per jump point seen, in order of first sight, and per cell a
+	 * seen bit and the index of its record (valid only where the bit is set). */
+	struct GridPathJumpRecord *jump; /* the records of this query */
+	int32_t jump_count, jump_cap;
+	uint64_t *jump_seen; /* pw * ph bits; clear between queries */
+	int32_t *jump_slot;  /* pw * ph: record index of each seen cell */
 	/* skip[d][m]: the steps an expansion of a cell reached by step d need not try,
 	 * when its parent's legal steps are m (see gridpath.c); d = 8 for a start. */
 	uint8_t skip[9][256];
