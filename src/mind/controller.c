@@ -221,22 +221,6 @@ static bool corner_room_look(Controller *c, RoomDoubt (*check)(const Controller 
 	return look;
 }
 
-/* corner_room_sure(c): Utak stands at a corner; whether the model can tell it is the
- * corner of the room he started in, by the looks roomdoubt.h asks for (past a door
- * seen in part, at a door's coarse side, at the wall between): false when one comes
- * first (the next goal: c->room_look_at, or roomdoubt_check's look in goals.c).
- * One rule for task (i)'s claim and a push's survey of its corner, so that a push
- * moves nothing before its corner is known to be of the start's room. Needs this
- * cycle's screen (goals_corner_shortfall builds it). */
-static bool corner_room_sure(Controller *c)
-{
-	if (corner_room_look(c, roomdoubt_beyond) || corner_room_look(c, roomdoubt_jambs)) {
-		c->room_look = true; /* the next goal: a look past the undecided door or at its coarse side */
-		return false;
-	}
-	return corner_room_doubt(c) != ROOMDOUBT_LOOK; /* else a look at the wall between */
-}
-
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -248,11 +232,7 @@ static void arrive(Controller *c)
 	}
 	int64_t short_by;
 	if (c->surveying) {
-		/* The corner seen from close by, and its room told as task (i) tells it:
-		 * now the object. (A corner he cannot reach himself, the push may: it is
-		 * judged at the end, push_seat_finish.) */
-		if (goals_corner_shortfall(c) > CONTROLLER_CORNER_SLACK || corner_room_sure(c))
-			c->surveying = false;
+		c->surveying = false; /* the corner seen from close by: now the object */
 		return;
 	}
 	if (c->carry && carrytask_arrive(c))
@@ -264,8 +244,13 @@ static void arrive(Controller *c)
 	case TASK_GO_CORNER:
 		if ((short_by = goals_corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
 			goals_corner_failed(c, short_by);
-		else if (corner_room_sure(c))
+		else if (corner_room_look(c, roomdoubt_beyond))
+			c->room_look = true; /* the next goal: a look past the undecided door */
+		else if (corner_room_look(c, roomdoubt_jambs))
+			c->room_look = true; /* the next goal: a look at the door's coarse side */
+		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK)
 			c->phase = PHASE_DONE;
+		/* else not sure of the room: the next goal is a look at the wall between */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

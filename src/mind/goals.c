@@ -643,14 +643,12 @@ void goals_choose(Controller *c, GoalResult *out)
 	case TASK_GO_CORNER:
 		out->found = goals_corner(c, g, dist, &rm, start_room, &out->goal);
 		/* A corner only of a room the model can tell is the start's: else a look
-		 * first at the wall between, at fine resolution (roomdoubt.h). The
-		 * survey of a push's corner looks the same way: the object is moved
-		 * only toward a corner known to be of the start's room. */
+		 * first at the wall between, at fine resolution (roomdoubt.h). */
 		int32_t li, lj;
 		if (c->room_look && goals_cell_of(s, c->room_look_at, &li, &lj) && dist[lj * g->w + li] >= 0) {
 			out->goal = c->room_look_at; /* kept: the map may flip as he moves */
 			out->exploring = out->found = true;
-		} else if (out->found &&
+		} else if (out->found && !c->surveying &&
 			   roomdoubt_check(c, dist, out->goal, &c->room_look_at) == ROOMDOUBT_LOOK) {
 			out->goal = c->room_look_at;
 			out->exploring = c->room_look = true;

@@ -8,9 +8,9 @@
  * to look at the corner (surveying, controller.c), and at the end seats the object
  * (PHASE_SEAT): one-square pushes along each axis until one makes no headway, so
  * that the walls, not the eye's estimate of them, place it. Squares a move or push
- * bumped into are remembered as blocked (a touch of a kind). The corner is told to be
- * of the starting room by task (i)'s rule (roomdoubt.h): the survey makes its looks
- * (controller.c, corner_room_sure) and the claim its check (push_seat_finish). */
+ * bumped into are remembered as blocked (a touch of a kind). The corner is claimed
+ * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
+ * (push_seat_finish); the survey does not yet make (i)'s looks. */
 #include "utak/mind/push.h"
 
 #include <math.h>
