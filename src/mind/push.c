@@ -8,7 +8,9 @@
  * to look at the corner (surveying, controller.c), and at the end seats the object
  * (PHASE_SEAT): one-square pushes along each axis until one makes no headway, so
  * that the walls, not the eye's estimate of them, place it. Squares a move or push
- * bumped into are remembered as blocked (a touch of a kind). */
+ * bumped into are remembered as blocked (a touch of a kind). The corner is claimed
+ * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
+ * (push_seat_finish); the survey does not yet make (i)'s looks. */
 #include "utak/mind/push.h"
 
 #include <math.h>
@@ -17,6 +19,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
 #include "utak/plan/cspace.h"
 
@@ -265,8 +268,30 @@ void push_seat(Controller *c)
 	c->seat_axis++;
 }
 
+/* held_room_doubt(c): whether the model cannot tell that the corner Utak has pushed
+ * the object into is of the room he started in, by the rule task (i) claims a corner
+ * by (roomdoubt_check: with the squares seen only coarsely taken for wall, he and
+ * the start are still in one room), at Utak's own point: beside the object, and
+ * free space, which rooms are made of (the object, pressed into the corner, may read
+ * as part of the wall, and its squares are then no room's). On this cycle's screen
+ * (goals_corner_shortfall builds it). */
+static bool held_room_doubt(Controller *c)
+{
+	const Screen *s = &c->screen;
+	int32_t ui, uj;
+	if (!goals_cell_of(s, c->model.utak, &ui, &uj))
+		return true;
+	int32_t *dist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *dist);
+	goals_reach(&s->free, ui, uj, dist);
+	Vec2 look;
+	RoomDoubt d = roomdoubt_check(c, dist, c->model.utak, &look);
+	free(dist);
+	return d != ROOMDOUBT_NONE;
+}
+
 /* push_seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
- * holds, judged before he lets go. */
+ * holds, judged before he lets go; the corner claimed only when the model can tell it
+ * is of the start's room, as for task (i). */
 void push_seat_finish(Controller *c)
 {
 	int64_t short_by = goals_corner_shortfall(c);
@@ -278,7 +303,12 @@ void push_seat_finish(Controller *c)
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
 	} else if (short_by > CONTROLLER_CORNER_SLACK)
 		goals_corner_failed(c, short_by);
-	else if (c->doubt[0]) {
+	else if (held_room_doubt(c)) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s he pushed the %s into is of the room he started in: a wall between may be seen only coarsely",
+			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
+	} else if (c->doubt[0]) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why, "Utak doubts the object he pushed into the %s is the %s: %s",
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape), c->doubt);
