@@ -151,9 +151,15 @@ _Static_assert(EDT_CLIP + EDT_WINDOW_BOUND * EDT_WINDOW_BOUND <= UINT16_MAX,
  * in AVX2 too (GCC does not inline edt_window, grown by its chunks, on its own). */
 #if defined(__GNUC__)
 #define EDT_INLINE static inline __attribute__((always_inline))
-#define EDT_NOINLINE __attribute__((noinline))
 #else
 #define EDT_INLINE static inline
+#endif
+/* edt_window_far is kept out of line (GCC kept the short windows' lanes in memory
+ * with it inlined); clang refuses noinline beside target_clones, and does not
+ * inline a multiversioned function anyway. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define EDT_NOINLINE __attribute__((noinline))
+#else
 #define EDT_NOINLINE
 #endif
 /* On x86-64 Linux the row pass is also compiled for AVX2, chosen at load time. */
