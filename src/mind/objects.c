@@ -263,6 +263,19 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 	return true;
 }
 
+bool objects_lacks(const Controller *c, int32_t k, int32_t x, int32_t y)
+{
+	const WorldModel *m = &c->model;
+	if (worldmodel_evidence(m, x, y).res == WORLDMODEL_RES_FOVEA)
+		return false;
+	bool part = worldmodel_node_at(m, x, y) == k;
+	for (int d = 0; d < 4 && !part; d++) {
+		static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+		part = worldmodel_node_at(m, x + step[d][0], y + step[d][1]) == k;
+	}
+	return part;
+}
+
 bool objects_unconfirmed_square(const Controller *c, int32_t k, int32_t *x, int32_t *y)
 {
 	const WorldModel *m = &c->model;
@@ -272,14 +285,7 @@ bool objects_unconfirmed_square(const Controller *c, int32_t k, int32_t *x, int3
 	 * rectangle): any not yet seen in the fovea. */
 	for (int32_t j = (int32_t)floor(n->rect.lo.y) - 1; j <= (int32_t)ceil(n->rect.hi.y); j++)
 		for (int32_t i = (int32_t)floor(n->rect.lo.x) - 1; i <= (int32_t)ceil(n->rect.hi.x); i++) {
-			if (worldmodel_evidence(m, i, j).res == WORLDMODEL_RES_FOVEA)
-				continue;
-			bool part = worldmodel_node_at(m, i, j) == k;
-			for (int d = 0; d < 4 && !part; d++) {
-				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-				part = worldmodel_node_at(m, i + step[d][0], j + step[d][1]) == k;
-			}
-			if (!part)
+			if (!objects_lacks(c, k, i, j))
 				continue;
 			double d = goals_distance(goals_centre(i, j), m->utak);
 			if (d < best) {

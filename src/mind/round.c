@@ -136,17 +136,12 @@ bool round_look(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
 	int lack = 0;
 	for (int32_t j = (int32_t)floor(n->rect.lo.y) - 1; j <= (int32_t)ceil(n->rect.hi.y) && lack < MAX_LACK; j++)
 		for (int32_t i = (int32_t)floor(n->rect.lo.x) - 1; i <= (int32_t)ceil(n->rect.hi.x) && lack < MAX_LACK; i++) {
-			if (worldmodel_evidence(m, i, j).res == WORLDMODEL_RES_FOVEA)
+			if (!objects_lacks(c, k, i, j))
 				continue;
-			bool part = worldmodel_node_at(m, i, j) == k;
-			for (int d = 0; d < 4 && !part; d++) {
-				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-				part = worldmodel_node_at(m, i + step[d][0], j + step[d][1]) == k;
-			}
 			bool looked = false;
 			for (int v = 0; v < c->visited_count && !looked; v++)
 				looked = foveal(i - (int32_t)floor(c->visited[v].x), j - (int32_t)floor(c->visited[v].y));
-			if (part && !looked) {
+			if (!looked) {
 				lx[lack] = i;
 				ly[lack++] = j;
 			}

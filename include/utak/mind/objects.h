@@ -125,6 +125,10 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size);
  * more for one (controller.c). */
 bool objects_doubtful(Controller *c, int32_t k);
 
+/* objects_lacks(c, k, x, y): square (x, y) is one that node k's confirmation lacks:
+ * not seen in the fovea, and a square of k or a 4-neighbour of one. */
+bool objects_lacks(const Controller *c, int32_t k, int32_t x, int32_t y);
+
 /* objects_unconfirmed_square(c, k, &x, &y): a square of node k not yet seen in the
  * fovea, the nearest Utak; false when there is none. */
 bool objects_unconfirmed_square(const Controller *c, int32_t k, int32_t *x, int32_t *y);
