@@ -11,7 +11,8 @@
 #   noise    every world in worlds/ with --noise 0.05, RATES_SEEDS (10) seeds, every task
 #
 # A run is "not applicable" when the judge says the task does not apply (there is no
-# such object, no next room, no corner to push round). Per task it prints the runs,
+# such object, no next room, no corner to push round, or the true world's walls make
+# it impossible: judge.h). Per task it prints the runs,
 # those that apply, the achieved rate among them, the belief/verdict disagreements
 # and, counted apart, the false successes (Utak sure of a task the judge says is not
 # done). With RATES_TARGETS naming a mode (or "all") the target for it is

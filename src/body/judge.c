@@ -101,6 +101,104 @@ static ObjectSquares object_squares(const Table *t, int32_t n, int32_t k)
 	return o;
 }
 
+/* WHETHER A TASK CAN BE DONE AT ALL. A task that no sequence of motor commands could
+ * achieve in the true world does not apply (as with no such object, or one room):
+ * its failure says why and is no failure of Utak's. The tests below claim
+ * impossibility only where it is certain, so they err toward "applies": every object
+ * counts as space (Utak may push it away), and Utak's squares connect 8-ways while
+ * what blocks connects only 4-ways (a squeeze between two squares that touch at a
+ * corner is allowed him). Walls and the verge alone make a task impossible. */
+
+/* reach(t, sx, sy): the squares Utak could ever stand on from square (sx, sy): the
+ * non-verge squares 8-connected to it, as a mask of w * h bytes the caller frees.
+ * COMPLEXITY: O(w h), one pass to clear and one breadth-first search. */
+static uint8_t *reach(const Table *t, int32_t sx, int32_t sy)
+{
+	int64_t n = (int64_t)t->w * t->h;
+	uint8_t *seen = util_alloc((size_t)n, 1);
+	int32_t *queue = util_alloc((size_t)n, sizeof *queue);
+	int64_t head = 0, tail = 0;
+	judge_read += n;
+	if (table_owner(t, sx, sy) != TABLE_VERGE) {
+		seen[(int64_t)sy * t->w + sx] = 1;
+		queue[tail++] = sy * t->w + sx;
+	}
+	while (head < tail) {
+		int32_t i = queue[head++], x = i % t->w, y = i / t->w;
+		for (int32_t dy = -1; dy <= 1; dy++)
+			for (int32_t dx = -1; dx <= 1; dx++) {
+				int32_t u = x + dx, v = y + dy;
+				if (table_owner(t, u, v) == TABLE_VERGE || seen[(int64_t)v * t->w + u])
+					continue;
+				seen[(int64_t)v * t->w + u] = 1;
+				queue[tail++] = v * t->w + u;
+			}
+	}
+	free(queue);
+	return seen;
+}
+
+/* object_reached(t, seen, k): whether Utak can reach object k at all: a square of
+ * it lies in reach's mask (objects are space to reach, so a square of k is reached
+ * exactly when a square beside it is). */
+static bool object_reached(const Table *t, const uint8_t *seen, int32_t k)
+{
+	judge_read += (int64_t)t->w * t->h;
+	for (int64_t i = 0; i < (int64_t)t->w * t->h; i++)
+		if (t->owner[i] == k + 1 && seen[i])
+			return true;
+	return false;
+}
+
+/* island(t, k): whether object k, with the walls that touch it, stands free of the
+ * TABLE's edge: the squares of k and of the verge 4-connected to them include no
+ * square of the TABLE's border (beyond which all is verge). If they reach it, no
+ * path of free squares can wind round k (it would have to cross them), so going
+ * round it is impossible. COMPLEXITY: O(w h). */
+static bool island(const Table *t, int32_t k)
+{
+	int64_t n = (int64_t)t->w * t->h;
+	uint8_t *seen = util_alloc((size_t)n, 1);
+	int32_t *queue = util_alloc((size_t)n, sizeof *queue);
+	int64_t head = 0, tail = 0;
+	judge_read += 2 * n;
+	for (int64_t i = 0; i < n; i++)
+		if (t->owner[i] == k + 1) {
+			seen[i] = 1;
+			queue[tail++] = (int32_t)i;
+		}
+	bool free_standing = true;
+	static const int32_t step[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+	while (head < tail && free_standing) {
+		int32_t i = queue[head++], x = i % t->w, y = i / t->w;
+		if (x == 0 || y == 0 || x == t->w - 1 || y == t->h - 1) {
+			free_standing = false;
+			break;
+		}
+		for (int d = 0; d < 4; d++) {
+			int32_t u = x + step[d][0], v = y + step[d][1], who = table_owner(t, u, v);
+			if ((who != TABLE_VERGE && who != k + 1) || seen[(int64_t)v * t->w + u])
+				continue;
+			seen[(int64_t)v * t->w + u] = 1;
+			queue[tail++] = v * t->w + u;
+		}
+	}
+	free(queue);
+	free(seen);
+	return free_standing;
+}
+
+/* other_room_reached(f, seen, room): whether Utak can reach a square of a room other than
+ * room (the rooms count objects as space, as reach does). */
+static bool other_room_reached(const JudgeRooms *f, const uint8_t *seen, int32_t room)
+{
+	judge_read += (int64_t)f->w * f->h;
+	for (int64_t i = 0; i < (int64_t)f->w * f->h; i++)
+		if (seen[i] && f->room[i] >= 0 && f->room[i] != room)
+			return true;
+	return false;
+}
+
 /* target(start, shape): the object of that shape nearest Utak at the start, by the
  * distance from his point to the object's area centroid, named by judgeshape.h's
  * rule on its true polygon; ties to the earlier object in the world file.
@@ -146,6 +244,13 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		snprintf(why, size, "there is no %s in this world", shape);
 		goto done;
 	}
+	uint8_t *seen = reach(table, sx, sy);
+	if (k >= 0 && !object_reached(table, seen, k)) {
+		snprintf(why, size, "the task does not apply: the %s cannot be reached (walls close it off from Utak's "
+			 "start)", shape);
+		free(seen);
+		goto done;
+	}
 	switch (task->kind) {
 	case TASK_GO_CORNER:
 	case TASK_PUSH_CORNER: {
@@ -180,6 +285,11 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 			snprintf(why, size, "the task does not apply: there is no next room (one room)");
 			break;
 		}
+		if (!other_room_reached(&f, seen, start_room)) {
+			snprintf(why, size, "the task does not apply: no other room can be reached (walls close Utak's "
+				 "room)");
+			break;
+		}
 		ok = end_room >= 0 && end_room != start_room;
 		snprintf(why, size, "%s", ok ? "Utak is in another room than he started in"
 			 : end_room == JUDGE_ROOM_NONE ? "Utak stands in a doorway, not wholly in the next room"
@@ -194,6 +304,11 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		snprintf(why, size, ok ? "Utak touches the %s" : "Utak does not touch the %s", shape);
 		break;
 	case TASK_GO_ROUND: {
+		if (!island(table, k)) {
+			snprintf(why, size, "the task does not apply: the %s and the walls it touches reach the TABLE's "
+				 "edge, so no path can go round it", shape);
+			break;
+		}
 		Vec2 c = judge_shape_centroid(&start->objects[k].shape);
 		double turns = n >= 3 ? geom_winding(trail, n, c) : 0;
 		double home = hypot(end->utak.x - start->utak.x, end->utak.y - start->utak.y);
@@ -249,6 +364,7 @@ bool judge_task(const World *start, const World *end, const Table *table, const 
 		break;
 	}
 	}
+	free(seen);
 done:
 	judge_rooms_free(&f);
 	table_free(&t0);

@@ -148,9 +148,106 @@ TEST_CASE(judge_cost_is_a_few_passes)
 	world_free(&w);
 }
 
+/* A wall rectangle [x0, x1] x [y0, y1] as a world-file line. */
+static size_t jt_wall(char *text, size_t len, size_t size, int x0, int y0, int x1, int y1)
+{
+	return (size_t)snprintf(text + len, size - len, "wall %d %d %d %d %d %d %d %d\n", x0, y0, x1, y0, x1, y1, x0,
+				y1);
+}
+
+static int jt_applies(const World *w, const Table *t, const char *task)
+{
+	char why[256];
+	TEST_CHECK(judge_of(w, t, task, why, sizeof why) != NULL);
+	return strstr(why, "does not apply") == NULL;
+}
+
+/* judge.c "whether a task can be done at all", against worlds built so that the
+ * answer is known by construction (seeded): a box of one-square walls in a 44 x 34
+ * room, Utak outside it, a 3 x 3 square inside. Its south side is closed, or has a
+ * gap of 1 or 2 squares, or a gap only at a corner where two walls touch
+ * diagonally (the squeeze the judge allows him). Closed: going to, round or
+ * pushing the square, and going to the next room (the box's inside is the only
+ * other room) do not apply; any gap: they apply. The square touching the box's
+ * wall can still be gone round (box and square stand free of the TABLE's edge);
+ * touching a wall that runs to the verge it cannot (paper 3.4.2's pocket), and
+ * touching one that stops short of the verge it can. */
+TEST_CASE(judge_impossible_tasks_do_not_apply)
+{
+	srand(13);
+	for (int n = 0; n < 40; n++) {
+		char text[4096];
+		size_t len = (size_t)snprintf(text, sizeof text, "table 44 34\n");
+		int bx0 = 14 + rand() % 6, by0 = 8 + rand() % 4, bw = 12 + rand() % 6, bh = 10 + rand() % 6;
+		int bx1 = bx0 + bw, by1 = by0 + bh, gap = rand() % 4; /* 0 closed, 1-2 squares, 3 diagonal */
+		int gx = bx0 + 3 + rand() % (bw - 8);
+		len += jt_wall(text, len, sizeof text, bx0, by1 - 1, bx1, by1);	     /* north */
+		len += jt_wall(text, len, sizeof text, bx0, by0 + 1, bx0 + 1, by1 - 1); /* west */
+		len += jt_wall(text, len, sizeof text, bx1 - 1, by0 - 1, bx1, by1 - 1); /* east, a square low */
+		if (gap == 0) {
+			len += jt_wall(text, len, sizeof text, bx0, by0, bx1 - 1, by0 + 1);
+		} else if (gap < 3) {
+			len += jt_wall(text, len, sizeof text, bx0, by0, gx, by0 + 1);
+			len += jt_wall(text, len, sizeof text, gx + gap, by0, bx1 - 1, by0 + 1);
+		} else { /* the south wall's east part a row lower: its square (gx, by0 - 1) meets
+			  * the west part's (gx - 1, by0) at a corner only */
+			len += jt_wall(text, len, sizeof text, bx0, by0, gx, by0 + 1);
+			len += jt_wall(text, len, sizeof text, gx, by0 - 1, bx1 - 1, by0);
+		}
+		int touch = rand() % 2; /* the square touches the west wall */
+		int sx = touch ? bx0 + 1 : bx0 + 3 + rand() % (bw - 8), sy = by0 + 3 + rand() % (bh - 7);
+		len += (size_t)snprintf(text + len, sizeof text - len, "object s A %d %d %d %d %d %d %d %d\n", sx, sy,
+					sx + 3, sy, sx + 3, sy + 3, sx, sy + 3);
+		len += (size_t)snprintf(text + len, sizeof text - len, "utak 4.5 4.5 north\n");
+		TEST_CHECK(len < sizeof text);
+		World w;
+		Table t;
+		Diag d;
+		TEST_CHECK(world_parse(&w, "box.w", text, len, &d) == 0);
+		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		int open = gap != 0;
+		static const char *const tasks[] = {"go square", "go round square", "push square ne-corner"};
+		for (int i = 0; i < 3; i++) {
+			if (jt_applies(&w, &t, tasks[i]) != open)
+				fprintf(stderr, "  world %d (gap %d): '%s' %s\n%s", n, gap, tasks[i],
+					open ? "does not apply" : "applies", text);
+			TEST_CHECK(jt_applies(&w, &t, tasks[i]) == open);
+		}
+		if (!open)
+			TEST_CHECK(!jt_applies(&w, &t, "go next-room"));
+		table_free(&t);
+		world_free(&w);
+	}
+	/* A pier of wall down from the north verge, or stopping 2 to 4 squares short of
+	 * it, and the square against its east face. */
+	for (int n = 0; n < 20; n++) {
+		char text[1024];
+		int px = 10 + rand() % 20, py = 8 + rand() % 12, reaches = n % 2, top = reaches ? 34 : 31 - rand() % 3;
+		int sy = py + rand() % (top - py - 3);
+		size_t len = (size_t)snprintf(text, sizeof text, "table 44 34\n");
+		len += jt_wall(text, len, sizeof text, px, py, px + 2, top);
+		len += (size_t)snprintf(text + len, sizeof text - len,
+					"object s A %d %d %d %d %d %d %d %d\nutak 4.5 4.5 north\n", px + 2, sy, px + 5,
+					sy, px + 5, sy + 3, px + 2, sy + 3);
+		TEST_CHECK(len < sizeof text);
+		World w;
+		Table t;
+		Diag d;
+		TEST_CHECK(world_parse(&w, "pier.w", text, len, &d) == 0);
+		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		TEST_CHECK(jt_applies(&w, &t, "go square"));
+		if (jt_applies(&w, &t, "go round square") != !reaches)
+			fprintf(stderr, "  pier %d: going round %s\n%s", n, reaches ? "applies" : "does not apply", text);
+		TEST_CHECK(jt_applies(&w, &t, "go round square") == !reaches);
+		table_free(&t);
+		world_free(&w);
+	}
+}
+
 int main(void)
 {
 	TEST_RUN(judge_shape_target_is_the_nearest);
 	TEST_RUN(judge_cost_is_a_few_passes);
+	TEST_RUN(judge_impossible_tasks_do_not_apply);
 	return TEST_EXIT();
 }

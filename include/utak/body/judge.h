@@ -33,7 +33,15 @@
  *                   square of it now lies in the other leg, none in the bend (from
  *                   the bend itself: in either leg, past the bend); if it did not
  *                   start in such a corridor the task does not apply and the
- *                   verdict says so. */
+ *                   verdict says so.
+ * A task no sequence of commands could achieve in the true world does not apply
+ * either, and the verdict says why (judge.c, "whether a task can be done at
+ * all"): the task's object lies where Utak cannot reach it, walls and the verge
+ * closing it off from his start (every object counted as space, since he may push
+ * it away; his squares 8-connected); go next-room with no other room so reached;
+ * go round an object that, with the walls it touches (4-connected), reaches the
+ * TABLE's edge, so that no loop can wind round it. Each test errs toward
+ * "applies": it calls a task impossible only where it is certain. */
 #ifndef UTAK_JUDGE_H
 #define UTAK_JUDGE_H
 
