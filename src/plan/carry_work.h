@@ -1,7 +1,7 @@
-/* carry_work.h - the working state of carry.c, shared with carrypath.c: the
- * planner's caches, the lattice's layers and the checks the plan is made with (see
- * carry.c for the invariants). Private to the carry module: not installed under
- * include/, and nothing outside src/plan/carry*.c includes it. */
+/* carry_work.h - the working state of carry.c, shared with carrypath.c and
+ * carryproof.c: the planner's caches, the lattice's layers and the checks the plan
+ * is made with (see carry.c for the invariants). Private to the carry module:
+ * not installed under include/, and nothing outside src/plan/carry*.c includes it. */
 #ifndef UTAK_CARRY_WORK_H
 #define UTAK_CARRY_WORK_H
 
@@ -108,5 +108,15 @@ bool carry_goal_holds(CarryWork *k, int32_t layer, int32_t x, int32_t y);
 /* carry_path_commands(k, items, x0, y0, plan) (carrypath.c): the lattice path
  * from cell (x0, y0) at angle 0, as items, into plan's poses and commands. */
 void carry_path_commands(CarryWork *k, CarryItems *items, int32_t x0, int32_t y0, CarryPlan *plan);
+
+/* carry_disc_cannot_pass(k, centre, radius) (carryproof.c): true when the disc of
+ * that radius at centre, inside the object, provably cannot reach any place wholly
+ * inside the goal region, so neither can the object (carry.h, PRUNING). */
+bool carry_disc_cannot_pass(CarryWork *k, Vec2 centre, double radius);
+
+/* carry_explain(k, start_layer, sx, sy, name, out) (carryproof.c): why no plan
+ * exists, into out->why (and out->way), once the whole-grid search found none. */
+void carry_explain(CarryWork *k, int32_t start_layer, int32_t sx, int32_t sy, const char *name,
+		   CarryResult *out);
 
 #endif
