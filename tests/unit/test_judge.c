@@ -42,6 +42,15 @@ static const char *judge_of(const World *w, const Table *t, const char *task_tex
 	return why;
 }
 
+/* jt_build(name, text, len, w, t): the world of that text and its TABLE; the test
+ * fails here if either is refused. */
+static void jt_build(const char *name, const char *text, size_t len, World *w, Table *t)
+{
+	Diag d;
+	TEST_CHECK(world_parse(w, name, text, len, &d) == 0);
+	TEST_CHECK(table_build(t, w, &d) == 0);
+}
+
 TEST_CASE(judge_shape_target_is_the_nearest)
 {
 	srand(14);
@@ -85,9 +94,7 @@ TEST_CASE(judge_shape_target_is_the_nearest)
 
 		World w;
 		Table t;
-		Diag d;
-		TEST_CHECK(world_parse(&w, "judge.w", text, len, &d) == 0);
-		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		jt_build("judge.w", text, len, &w, &t);
 		char why[256], want[256];
 		TEST_CHECK(judge_of(&w, &t, "push square sw-corner", why, sizeof why) != NULL);
 		if (best < 0)
@@ -127,9 +134,7 @@ TEST_CASE(judge_cost_is_a_few_passes)
 	TEST_CHECK(len < sizeof text);
 	World w;
 	Table t;
-	Diag d;
-	TEST_CHECK(world_parse(&w, "cost.w", text, len, &d) == 0);
-	TEST_CHECK(table_build(&t, &w, &d) == 0);
+	jt_build("cost.w", text, len, &w, &t);
 	char why[256];
 	const int64_t area = (int64_t)SIDE * SIDE;
 	TEST_CHECK(judge_of(&w, &t, "go ne-corner", why, sizeof why) != NULL);
@@ -202,9 +207,7 @@ TEST_CASE(judge_impossible_tasks_do_not_apply)
 		TEST_CHECK(len < sizeof text);
 		World w;
 		Table t;
-		Diag d;
-		TEST_CHECK(world_parse(&w, "box.w", text, len, &d) == 0);
-		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		jt_build("box.w", text, len, &w, &t);
 		int open = gap != 0;
 		static const char *const tasks[] = {"go square", "go round square", "push square ne-corner"};
 		for (int i = 0; i < 3; i++) {
@@ -232,9 +235,7 @@ TEST_CASE(judge_impossible_tasks_do_not_apply)
 		TEST_CHECK(len < sizeof text);
 		World w;
 		Table t;
-		Diag d;
-		TEST_CHECK(world_parse(&w, "pier.w", text, len, &d) == 0);
-		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		jt_build("pier.w", text, len, &w, &t);
 		TEST_CHECK(jt_applies(&w, &t, "go square"));
 		if (jt_applies(&w, &t, "go round square") != !reaches)
 			fprintf(stderr, "  pier %d: going round %s\n%s", n, reaches ? "applies" : "does not apply", text);
