@@ -347,8 +347,7 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	const uint8_t *mask = b->mask;
 	const int32_t *dist2 = b->s->dist2;
 	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
-	int32_t k = b->count, cur = c + step[d];
-	int back = d ^ 2;
+	int32_t k = b->count, cur;
 	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
 	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
@@ -358,27 +357,57 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	}
 	int32_t md = r.min_dist2;
 	double length = r.length;
-	for (;;) {
-		const int next = PATHGRAPH_NEXT[back][mask[cur]];
-		if (next < 0)
-			break;
-		cell_ref[cur] = ref_base + k;
-		cells[k++] = cur;
-		/* edgerun_push, in directions: the steps into the last cell (pend) and into
-		 * cur (back ^ 2) cut a corner when perpendicular and the fourth cell of
-		 * their 2x2 block, cur - step[pend], is free */
-		if (pend >= 0) {
-			const bool cut = ((pend ^ back) & 1) && dist2[cur - step[pend]] > 0;
-			length += cut ? PATHGRAPH_SQRT2 : 1.0;
-			pend = cut ? -1 : back ^ 2;
-		} else {
-			pend = back ^ 2;
-		}
-		if (dist2[cur] < md)
-			md = dist2[cur];
-		cur += step[next];
-		back = next ^ 2;
+	cur = c;
+	/* A state for each direction of the step into cur, each adding its constant
+	 * to cur, and a branch on the direction on (the switch) rather than cur +=
+	 * step[next]: the branch predictor runs ahead along a corridor, and the loads
+	 * of the cells ahead overlap where the data dependence of the index on each
+	 * mask load made them wait in turn (10-15% off the maze's build, see MEASURED). */
+#define PATHGRAPH_WALK_STEP(D, STEP)                                                               \
+	walk_##D:                                                                                  \
+	{                                                                                          \
+		cur += (STEP);                                                                     \
+		const int next = PATHGRAPH_NEXT[(D) ^ 2][mask[cur]];                               \
+		if (next < 0)                                                                      \
+			goto walk_end;                                                             \
+		cell_ref[cur] = ref_base + k;                                                      \
+		cells[k++] = cur;                                                                  \
+		if (pend >= 0) {                                                                   \
+			const bool cut = ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;        \
+			length += cut ? PATHGRAPH_SQRT2 : 1.0;                                     \
+			pend = cut ? -1 : (D);                                                     \
+		} else {                                                                           \
+			pend = (D);                                                                \
+		}                                                                                  \
+		if (dist2[cur] < md)                                                               \
+			md = dist2[cur];                                                           \
+		switch (next) {                                                                    \
+		case 0:                                                                            \
+			goto walk_0;                                                               \
+		case 1:                                                                            \
+			goto walk_1;                                                               \
+		case 2:                                                                            \
+			goto walk_2;                                                               \
+		default:                                                                           \
+			goto walk_3;                                                               \
+		}                                                                                  \
 	}
+	switch (d) {
+	case 0:
+		goto walk_0;
+	case 1:
+		goto walk_1;
+	case 2:
+		goto walk_2;
+	default:
+		goto walk_3;
+	}
+	PATHGRAPH_WALK_STEP(0, 1)
+	PATHGRAPH_WALK_STEP(1, w)
+	PATHGRAPH_WALK_STEP(2, -1)
+	PATHGRAPH_WALK_STEP(3, -w)
+#undef PATHGRAPH_WALK_STEP
+walk_end:
 	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
 	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
 	b->chain_left -= k - b->count;
