@@ -60,7 +60,32 @@
  *    for 16 times the cells on the synthetic grids, the caches' share. Earlier, a corner
  *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
- *    A* expands cells on the same query. */
+ *    A* expands cells on the same query.
+ *    Then the walk by a branch on the direction (builder_edge_from): instructions
+ *    about equal (maze 23.0 -> 22.2 million, 21.2 a grid cell; rooms 3.80 -> 3.74,
+ *    rects 4.46 -> 4.39, Boston_0_1024 2.90 -> 2.90, den520d 1.97 -> 1.95); the pg
+ *    column at 1024, three runs alternating, medians: maze 4.20 -> 3.92 ms (15.7 ns
+ *    a skeleton cell), rooms 1.01 -> 0.93, rects 1.40 -> 1.30, Boston_0_1024 0.79 ->
+ *    0.86 (within the noise: load 5-6 on 2 cores), den520d 0.47 -> 0.45; at 4096,
+ *    one run each: rooms 22.6 -> 18.7 ms, rects 28.2 -> 24.7, maze 82.9 -> 76.1
+ *    (19.1 ns a skeleton cell), Boston_0_1024 6.0 -> 5.8, den520d 3.16 -> 3.09:
+ *    19-20 times the 1024 figure on rooms and the maze for 16-17 times the skeleton
+ *    cells, 7 times on Boston and den520d for 4.1-4.4 times (their grid, scanned
+ *    whole, 16 times). The maze stays past issue 16's 2 ms. Where its time goes (a
+ *    copy timing each step, mean of 30 rebuilds, each after a skeleton_compute as in
+ *    skelbench): the clearing 0.28 ms, step (1) 0.85, step (2) 2.5, of which the
+ *    walk's loads of dist2 0.8 (the walk without them). Tried and not kept, the same
+ *    graph each time, slower or no faster on the maze: the skeleton handing over a
+ *    row-major list of its cells, step (1) and the clearing working from it (the
+ *    last build's cells not in this one set back to -1 by merging the two lists, the
+ *    cells taken told by a mask bit rather than cell_ref; one run each): maze 1024
+ *    +20%, rooms 4096 -4%, Boston 4096 -5%, step (1) slower but on the maze at 4096
+ *    (rooms 4096 4.8 -> 5.8 ms, Boston 2.2 -> 3.1: each cell's rows above and below
+ *    a line of their own); masks in 8 x 8 tiles (one line each, so a walk up a
+ *    corridor keeps its line) with a corner bit in place of the corner's dist2 load:
+ *    step (2) no faster, step (1) 2.5 times slower (its scattered stores); a walk
+ *    reading only the masks, then measuring the chain in a loop of its own: slower;
+ *    prefetching 2 or 4 cells ahead in the walk's direction: slower. */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
