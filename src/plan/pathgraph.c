@@ -60,7 +60,36 @@
  *    for 16 times the cells on the synthetic grids, the caches' share. Earlier, a corner
  *    to corner query 0.18-0.2 ms, 1.4 ms in the maze, whose path has 60 000 cells to
  *    write out; 116 (maze) to 600 (rooms) times fewer vertices expanded than a grid
- *    A* expands cells on the same query. */
+ *    A* expands cells on the same query.
+ *    Then the walk by a branch on the direction (builder_edge_from): instructions
+ *    about equal (maze 23.0 -> 22.2 million, 21.2 a grid cell; rooms 3.80 -> 3.74,
+ *    rects 4.46 -> 4.39, Boston_0_1024 2.90 -> 2.90, den520d 1.97 -> 1.95); the pg
+ *    column at 1024, three runs alternating, medians: maze 4.20 -> 3.92 ms (15.7 ns
+ *    a skeleton cell), rooms 1.01 -> 0.93, rects 1.40 -> 1.30, Boston_0_1024 0.79 ->
+ *    0.86 (within the noise: load 5-6 on 2 cores), den520d 0.47 -> 0.45; at 4096,
+ *    one run each: rooms 22.6 -> 18.7 ms, rects 28.2 -> 24.7, maze 82.9 -> 76.1
+ *    (19.1 ns a skeleton cell), Boston_0_1024 6.0 -> 5.8, den520d 3.16 -> 3.09:
+ *    19-20 times the 1024 figure on rooms and the maze for 16-17 times the skeleton
+ *    cells, 7 times on Boston and den520d for 4.1-4.4 times (their grid, scanned
+ *    whole, 16 times). Then straight on tested first in the walk and cell_edge
+ *    filled four cells a store: maze 22.2 -> 20.8 million instructions (19.8 a grid
+ *    cell, 81 an edge cell), rooms 3.74 -> 3.55, rects 4.39 -> 4.17,
+ *    Boston_0_1024 2.90 -> 2.78, den520d 1.95 -> 1.89; in time within the noise. The
+ *    maze stays past issue 16's 2 ms. Where its time goes (a copy timing each step,
+ *    mean of 30 rebuilds, each after a skeleton_compute as in skelbench): the
+ *    clearing 0.28 ms, step (1) 0.85, step (2) 2.5, of which the walk's loads of
+ *    dist2 0.8 (the walk without them). Tried and not kept, the same graph each
+ *    time, slower or no faster on the maze: the skeleton handing over a row-major
+ *    list of its cells, step (1) and the clearing working from it (the last build's
+ *    cells not in this one set back to -1 by merging the two lists, the cells taken
+ *    told by a mask bit rather than cell_ref; one run each): maze 1024 +20%, rooms
+ *    4096 -4%, Boston 4096 -5%, step (1) slower but on the maze at 4096 (rooms 4096
+ *    4.8 -> 5.8 ms, Boston 2.2 -> 3.1: each cell's rows above and below a line of
+ *    their own); masks in 8 x 8 tiles (one line each, so a walk up a corridor keeps
+ *    its line) with a corner bit in place of the corner's dist2 load: step (2) no
+ *    faster, step (1) 2.5 times slower (its scattered stores); a walk reading only
+ *    the masks, then measuring the chain in a loop of its own: slower; prefetching 2
+ *    or 4 cells ahead in the walk's direction: slower. */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
@@ -314,8 +343,18 @@ static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, 
 	const int32_t e = pg->edge_count++;
 	pg->edges[e] = (PathgraphEdge){
 	    v0, v1, first, b->count - first, r->length + (r->ready ? 1.0 : 0.0), r->min_dist2};
+	/* four at a time, which the compiler makes one vector store (at -O2 it leaves
+	 * a loop of unknown count scalar): a maze's edges hold 255 000 cells at 1024 */
 	int32_t *cell_edge = pg->cell_edge;
-	for (int32_t k = first, end = b->count; k < end; k++)
+	int32_t k = first;
+	const int32_t end = b->count;
+	for (; k + 4 <= end; k += 4) {
+		cell_edge[k] = e;
+		cell_edge[k + 1] = e;
+		cell_edge[k + 2] = e;
+		cell_edge[k + 3] = e;
+	}
+	for (; k < end; k++)
 		cell_edge[k] = e;
 }
 
@@ -347,8 +386,7 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	const uint8_t *mask = b->mask;
 	const int32_t *dist2 = b->s->dist2;
 	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
-	int32_t k = b->count, cur = c + step[d];
-	int back = d ^ 2;
+	int32_t k = b->count, cur;
 	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
 	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
@@ -358,27 +396,60 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	}
 	int32_t md = r.min_dist2;
 	double length = r.length;
-	for (;;) {
-		const int next = PATHGRAPH_NEXT[back][mask[cur]];
-		if (next < 0)
-			break;
-		cell_ref[cur] = ref_base + k;
-		cells[k++] = cur;
-		/* edgerun_push, in directions: the steps into the last cell (pend) and into
-		 * cur (back ^ 2) cut a corner when perpendicular and the fourth cell of
-		 * their 2x2 block, cur - step[pend], is free */
-		if (pend >= 0) {
-			const bool cut = ((pend ^ back) & 1) && dist2[cur - step[pend]] > 0;
-			length += cut ? PATHGRAPH_SQRT2 : 1.0;
-			pend = cut ? -1 : back ^ 2;
-		} else {
-			pend = back ^ 2;
-		}
-		if (dist2[cur] < md)
-			md = dist2[cur];
-		cur += step[next];
-		back = next ^ 2;
+	cur = c;
+	/* A state for each direction of the step into cur, each adding its constant
+	 * to cur, and a branch on the direction on (the switch) rather than cur +=
+	 * step[next]: the branch predictor runs ahead along a corridor, and the loads
+	 * of the cells ahead overlap where the data dependence of the index on each
+	 * mask load made them wait in turn (10-15% off the maze's build, see MEASURED).
+	 * Straight on is tested first: one predictable branch down a corridor. */
+#define PATHGRAPH_WALK_STEP(D, STEP)                                                               \
+	walk_##D:                                                                                  \
+	{                                                                                          \
+		cur += (STEP);                                                                     \
+		const int next = PATHGRAPH_NEXT[(D) ^ 2][mask[cur]];                               \
+		if (next < 0)                                                                      \
+			goto walk_end;                                                             \
+		cell_ref[cur] = ref_base + k;                                                      \
+		cells[k++] = cur;                                                                  \
+		if (pend >= 0) {                                                                   \
+			const bool cut = ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;        \
+			length += cut ? PATHGRAPH_SQRT2 : 1.0;                                     \
+			pend = cut ? -1 : (D);                                                     \
+		} else {                                                                           \
+			pend = (D);                                                                \
+		}                                                                                  \
+		if (dist2[cur] < md)                                                               \
+			md = dist2[cur];                                                           \
+		if (next == (D))                                                                   \
+			goto walk_##D;                                                             \
+		switch (next) {                                                                    \
+		case 0:                                                                            \
+			goto walk_0;                                                               \
+		case 1:                                                                            \
+			goto walk_1;                                                               \
+		case 2:                                                                            \
+			goto walk_2;                                                               \
+		default:                                                                           \
+			goto walk_3;                                                               \
+		}                                                                                  \
 	}
+	switch (d) {
+	case 0:
+		goto walk_0;
+	case 1:
+		goto walk_1;
+	case 2:
+		goto walk_2;
+	default:
+		goto walk_3;
+	}
+	PATHGRAPH_WALK_STEP(0, 1)
+	PATHGRAPH_WALK_STEP(1, w)
+	PATHGRAPH_WALK_STEP(2, -1)
+	PATHGRAPH_WALK_STEP(3, -w)
+#undef PATHGRAPH_WALK_STEP
+walk_end:
 	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
 	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
 	b->chain_left -= k - b->count;
