@@ -33,17 +33,18 @@
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
- * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.0
- * ms, rects 9.3, maze 39.2 (688 000 cells expanded), Boston_0_1024 13.0, den520d
- * 3.1; libtcod's A* over these 25.9, 32.2, 2.13, 21.3 and 17.2 times (before issue
- * 16's work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 0.56, 0.41, 6.07, 0.72
- * and 0.15 ms, libtcod over it 736, 741, 13.8, 381 and 351 times (before its second
- * round, bits and records: 327, 286, 8.16, 155, 103). At 4096 (utak by skelbench
- * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids):
- * plain A* rooms 333 ms, rects 196, maze 410, libtcod over it 87, 93 and 2.4
- * times; the jump search 13.8, 12.3 and 66.6 ms (before its second round 40, 46
- * and 119), 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A*
- * 5 times libtcod on the maze (2.1-2.4: it expands every cell at about 300
+ * corner to corner, the ends as skelbench picks them). Plain A* at 1024 after its
+ * third round (exact integer keys, 8-byte nodes, gridpath.c): rooms 8.65 ms, rects
+ * 5.30, maze 29.95 (688 000 cells expanded), Boston_0_1024 7.25, den520d 1.67;
+ * libtcod's A* over these 51.2, 61.1, 2.95, 37.1 and 33.2 times (after the second
+ * round 25.9, 32.2, 2.13, 21.3, 17.2; before issue 16's work 12.9, 11.3, 1.34,
+ * 10.6, 8.9). The jump search in the same run: 0.57, 0.51, 6.53, 0.72 and 0.17 ms,
+ * libtcod over it 778, 634, 13.5, 376 and 324 times. At 4096 (the second round's
+ * figures; utak by skelbench --compare --side 4096, libtcod by tcodpath in an
+ * earlier run on the same grids): plain A* rooms 333 ms, rects 196, maze 410,
+ * libtcod over it 87, 93 and 2.4 times; the jump search 13.8, 12.3 and 66.6 ms,
+ * 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A* 5 times
+ * libtcod on the maze (2.95: it expands 87% of the free cells at about 220
  * instructions each, see gridpath.c).
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
