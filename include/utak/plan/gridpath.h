@@ -39,13 +39,14 @@
  * libtcod's A* over these 51.2, 61.1, 2.95, 37.1 and 33.2 times (after the second
  * round 25.9, 32.2, 2.13, 21.3, 17.2; before issue 16's work 12.9, 11.3, 1.34,
  * 10.6, 8.9). The jump search in the same run: 0.57, 0.51, 6.53, 0.72 and 0.17 ms,
- * libtcod over it 778, 634, 13.5, 376 and 324 times. At 4096 (the second round's
- * figures; utak by skelbench --compare --side 4096, libtcod by tcodpath in an
- * earlier run on the same grids): plain A* rooms 333 ms, rects 196, maze 410,
- * libtcod over it 87, 93 and 2.4 times; the jump search 13.8, 12.3 and 66.6 ms,
- * 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A* 5 times
- * libtcod on the maze (2.95: it expands 87% of the free cells at about 220
- * instructions each, see gridpath.c).
+ * libtcod over it 778, 634, 13.5, 376 and 324 times. At 4096 (utak by skelbench
+ * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids,
+ * 29 126, 18 250 and 995 ms): plain A* rooms 197 ms, rects 100, maze 305 (the second
+ * round: 333, 196, 410), libtcod over it 148, 182 and 3.3 times (87, 93, 2.4); the
+ * jump search (the second round's run) 13.8, 12.3 and 66.6 ms, 2 110, 1 480 and 14.9
+ * times. Goal of the issue still unmet: plain A* 5 times libtcod on the maze (2.95
+ * at 1024, 3.3 at 4096: it expands 87% of the free cells at about 220 instructions
+ * each, see gridpath.c).
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
