@@ -10,32 +10,48 @@
  * The open list uses lazy deletion: an improved cell is pushed again and stale
  * entries are skipped when popped (cheaper than decrease-key, whose position index
  * costs a random memory access per swap). Since f never decreases during the
- * search, entries are filed in buckets of f (1/64 of a unit), and only the current
- * bucket is ordered. Plain A* keeps its buckets in a ring of 4 units (its open
- * entries never span more than 2 sqrt 2: "plain A*'s open list" below), the
- * current one a sorted array; the jump search (gridjump.c), whose jumps are long,
- * keeps a page of buckets with an overflow beyond it, the current bucket a binary
- * heap. A neighbour whose f equals the f being expanded (the least in the
- * list) skips the buckets through a stack. Each free cell's legal steps are one
- * byte of its node (made by the first query from the 3 x 3 neighbourhood, by the
- * table legal of gridpath_init), so an expansion walks the set
- * bits in order of d instead of testing eight neighbours and two corners each.
+ * search, entries are filed in buckets of f, and only the current bucket is
+ * ordered. Plain A* keeps its buckets in a ring (its open entries never span more
+ * than 2 sqrt 2: "plain A*'s open list" below), the current one a sorted array,
+ * and orders by exact integer keys (EXACT KEYS); the jump search (gridjump.c),
+ * whose jumps are long, keeps a page of buckets with an overflow beyond it, the
+ * current bucket a binary heap, and doubles (EXACT TIES). A neighbour whose f
+ * equals the f being expanded (the least in the list) skips the buckets through a
+ * stack. Each free cell's legal steps are one byte of its node (made by the first
+ * query from the 3 x 3 neighbourhood, by the table legal of gridpath_init), so an
+ * expansion walks the set bits in order of d instead of testing eight neighbours
+ * and two corners each.
  *
  * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
  * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
- * before = the tree before this round of work, which kept the paged heap for
- * both searches):
- *   plain A*    rooms 230 -> 145 M, rects 149 -> 93, maze 333 -> 209 (688 000 cells
- *               expanded: 485 -> 304 instructions a cell), Boston_0_1024 192 -> 119,
- *               den520d (x2) 51 -> 32;
+ * first = the tree before issue 16's work, which kept the paged heap for both
+ * searches; then the second round's, then this, the third):
+ *   plain A*    rooms 230 -> 145 -> 83 M, rects 149 -> 93 -> 54, maze 333 -> 209 ->
+ *               151 (688 000 cells expanded: 485 -> 304 -> 220 instructions a
+ *               cell), Boston_0_1024 192 -> 119 -> 69, den520d (x2) 51 -> 32 -> 19;
  *   jump points: gridjump.c, PERFORMANCE.
- * The steps, maze plain A*: the parent's neighbours skipped 337 -> 292 M; the ring
- * for the paged heap 292 -> 232; locals instead of fields re-read after byte stores
- * and the sift inline 232 -> 225; the sorted current bucket 225 -> 209 (rooms 172
- * -> 145, and its time about halved: the heap's branches mispredicted). Times and
- * the ratios to libtcod: see gridpath.h. Where the time goes now (perf): the maze's
- * plain A* is bound by instructions (about 2 a cycle), spread over the bucket
- * work, the cost conversions and the neighbour loop.
+ * The steps of the second round, maze plain A*: the parent's neighbours skipped 337
+ * -> 292 M; the ring for the paged heap 292 -> 232; locals instead of fields re-read
+ * after byte stores and the sift inline 232 -> 225; the sorted current bucket 225
+ * -> 209 (rooms 172 -> 145, and its time about halved: the heap's branches
+ * mispredicted). The third: integer keys for the doubles (EXACT KEYS), f's growth
+ * by a table of the cell's region about the goal instead of h from the octile
+ * formula, one test for closed and not improved 209 -> 186; the ring's state in
+ * locals and the step into the marks (no byte store that may alias them) 186 ->
+ * 181; index types without sign extension 181 -> 177; ties in f left in order of
+ * push, last first (TIES), instead of to the larger g 177 -> 162 (rooms 115 -> 96:
+ * no sort moves equal keys); the region tables as byte offsets, the current
+ * bucket's bit cleared when left, steps as byte offsets 162 -> 154; y by a
+ * multiplication instead of carried in each entry 154 -> 149; nodes of 8 bytes, not
+ * 16 (F RELATIVE) 149 -> 154, but the maze's query 1.15 times faster (34.0 -> 29.5
+ * ms alternated, the caches flushed before each query as the benchmark's other jobs
+ * do: at 32 bytes a node it had run 1.25 times slower than at 16, and 2 MB pages by
+ * madvise gained under 5%); the current bucket told by its slot in a push 154 ->
+ * 151. Times and the ratios to libtcod: see gridpath.h. Where the time goes now:
+ * instructions, about 220 a cell expanded in the maze (1.37 pops
+ * and 1.37 pushes a cell, 0.27 of the pops stale, 2.5 neighbours tried), spread
+ * over the neighbour loop, the ring's pushes, pops and sorts, and each expansion's
+ * region and parent's steps (callgrind, by line).
  *
  * PARENT'S NEIGHBOURS: a cell c reached from its parent p need not try a step to p,
  * nor to any cell n one legal step from p: p was expanded, so n already holds a
@@ -46,43 +62,110 @@
  * left to a cell entered straight along a corridor. Maze at 1024: 337 to 292
  * million instructions (callgrind, gridpath_find).
  *
- * EXACT TIES: a cost is kept as two integers, straight and diagonal step counts,
- * and turned into a double by one fixed expression. Since sqrt 2 is irrational,
- * two costs are equal exactly when their counts are, and then their doubles are
- * bit-identical; so ties in f are true ties, and they go to the larger g (the entry
- * nearer the goal), which makes A* run straight down a corridor of equal-f cells
- * instead of flooding it.
+ * EXACT TIES (the jump search, gridjump.c): a cost is kept as two integers,
+ * straight and diagonal step counts, and turned into a double by one fixed
+ * expression. Since sqrt 2 is irrational, two costs are equal exactly when their
+ * counts are, and then their doubles are bit-identical; so ties in f are true ties,
+ * and they go to the larger g (the entry nearer the goal), which makes A* run
+ * straight down a corridor of equal-f cells instead of flooding it.
  *
- * INVARIANTS: node[c].mark == 2 round means c was reached this query and its step
- * counts hold its best known cost; 2 round + 1 means c is closed and its cost final;
- * any other value means unseen. The border cells of the padded copy are never free.
+ * EXACT KEYS (plain A*): a cost a + b sqrt 2 (a straight steps, b diagonal) is the
+ * integer a q + b p, with p / q = 1855077841 / 1311738121 a convergent of sqrt 2
+ * (p^2 - 2 q^2 = -1, so |p - q sqrt 2| = 1 / (p + q sqrt 2) < 2.7e-10). Two
+ * distinct costs differ by |da + db sqrt 2| >= 1 / (|da| + sqrt 2 |db|) (as |da^2 -
+ * 2 db^2| >= 1), their keys by q times that less at most |db| 2.7e-10: so keys are
+ * ordered as the costs while (|da| + sqrt 2 |db|) |db| < q (p + q sqrt 2) = 4.9e18,
+ * which holds for step counts below 2^30; and equal keys mean equal counts (q
+ * divides db p, gcd(p, q) = 1, |db| < q). f is such a key, u64 (below 2^63 for
+ * such counts). Exact for any grid of fewer than 2^29 cells, with no double in the
+ * search. A step's growth of f, step + h(next) - h(cell), depends only
+ * on the signs of the cell's offset (rx, ry) from the goal and on |rx| - |ry|
+ * clamped to [-2, 2] (a step changes each of |rx| and |ry| by one, so only offsets
+ * within 2 of a diagonal can swap the longer axis): 45 regions, df[region][step]
+ * (gridpath_init, which checks that claim on every offset within 5 of the goal), so
+ * a neighbour's f is its cell's f plus one load; 0 sends it to the stack.
+ *
+ * F RELATIVE: a node keeps only the low 32 bits of its f's key, and no g. An offer
+ * to an open cell is compared by f (the same h, so f orders as g would): F, the f
+ * being expanded, is the least in the list and never decreases, and every offer is
+ * at most 2 sqrt 2 above the F of its time, so the open cell's f and the offer's, F
+ * + df, both lie in [F, F + 2 sqrt 2], 3.71e9 of key, under 2^32: their low 32 bits
+ * less F's, modulo 2^32, order them exactly. A closed cell, whose f may lie far
+ * below F, is refused by its mark alone.
+ *
+ * TIES: entries of equal f leave last pushed first (the stack, the insertion from the
+ * end into the current bucket, the stable sort): a depth-first order among equals,
+ * which runs down a corridor of equal-f cells much as the larger g did (rooms 237 185
+ * -> 238 811 cells, maze 687 928 -> 687 929), without comparing g. Any order of
+ * equal f is optimal (consistent h, exact keys), so only which of several shortest
+ * paths comes out may differ: the same points on rooms, rects, Boston_0_1024 and
+ * den520d at 1024, another path of the same length on the maze.
+ *
+ * INVARIANTS: node[c].info's round (bits 13-31) is this query's when c was reached
+ * in it: then f holds the low bits of the key of its best known f and from (bits
+ * 8-11) the step of that path, and bit 12 is set once c is closed, its cost final;
+ * with an earlier round c is unseen. Bits 0-7, its legal steps, never change. The
+ * border cells of the padded copy are never free.
  *
  * MEMORY: see gridpath.h. COMPLEXITY: O(n log n) for n cells expanded, n <= free
  * cells, plus O(L) for a path of length L to skip the empty buckets (64 to a word
  * of nonempty bits); initialisation O(w h) once per grid, and a query touches only
  * what it expands (the round counter replaces clearing the marks) and, for plain
- * A*, the ring's GRIDPATH_RING buckets. */
+ * A*, the ring's GRIDPATH_RING buckets and its region tables, O(w + h). */
 #include "utak/plan/gridpath.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "gridpath_work.h"
 #include "utak/base/util.h"
 
-/* Plain A*'s ring (GRIDPATH_RING buckets, gridpath.h): buckets per unit of f. Of
- * 64, 256 and 1024 (rings of 4 units), 64 ran the maze's query in the fewest
- * instructions (232, 236 and 242 million, callgrind), and it files entries as the
- * jump search's pages do. */
-#define GRIDPATH_RING_PER_UNIT 64
+/* EXACT KEYS (see the header): a cost a + b sqrt 2 is kept as the integer
+ * a GRIDPATH_KEY_ONE + b GRIDPATH_KEY_SQRT2, the two the Pell pair p^2 - 2 q^2 = -1
+ * (p/q a convergent of sqrt 2). */
+#define GRIDPATH_KEY_ONE UINT64_C(1311738121)
+#define GRIDPATH_KEY_SQRT2 UINT64_C(1855077841)
+/* Plain A*'s ring (GRIDPATH_RING buckets, gridpath.h): a bucket is 2^24 of key, 1/78
+ * of a unit of length. It must hold the open entries' span, 2 sqrt 2 units (less
+ * than 3 GRIDPATH_KEY_ONE), and a bucket each side, and be a power of two of
+ * whole words. */
+#define GRIDPATH_BUCKET_SHIFT 24
+/* GridPathNode.info: the legal steps in bits 0-7, from in 8-11, closed in 12, the
+ * round from 13 on (so any mark of this round exceeds any of an earlier one). */
+#define GRIDPATH_MOVES 0xffu
+#define GRIDPATH_FROM_SHIFT 8
+#define GRIDPATH_CLOSED (1u << 12)
+#define GRIDPATH_ROUND_SHIFT 13
 #define GRIDPATH_RING_WORDS (GRIDPATH_RING / 64)
-/* The ring must hold the open entries' span, 2 sqrt 2 units and a bucket each side,
- * and be a power of two of whole words. */
-_Static_assert(GRIDPATH_RING >= 3 * GRIDPATH_RING_PER_UNIT + 2 && GRIDPATH_RING % 64 == 0 &&
-                   (GRIDPATH_RING & (GRIDPATH_RING - 1)) == 0,
-               "GRIDPATH_RING too small for GRIDPATH_RING_PER_UNIT, or not a power of two");
+_Static_assert((3 * GRIDPATH_KEY_ONE >> GRIDPATH_BUCKET_SHIFT) + 3 <= GRIDPATH_RING &&
+                   GRIDPATH_RING % 64 == 0 && (GRIDPATH_RING & (GRIDPATH_RING - 1)) == 0,
+               "GRIDPATH_RING too small for GRIDPATH_BUCKET_SHIFT, or not a power of two");
+_Static_assert(GRIDPATH_KEY_SQRT2 *GRIDPATH_KEY_SQRT2 ==
+                   2 * GRIDPATH_KEY_ONE * GRIDPATH_KEY_ONE - 1,
+               "not a Pell pair");
+
+/* gridpath_key_h(ax, ay): the key of the octile distance over (ax, ay) >= 0. */
+static uint64_t gridpath_key_h(int32_t ax, int32_t ay)
+{
+	const uint64_t lo = (uint64_t)(ax < ay ? ax : ay), hi = (uint64_t)(ax < ay ? ay : ax);
+	return (hi - lo) * GRIDPATH_KEY_ONE + lo * GRIDPATH_KEY_SQRT2;
+}
+
+/* gridpath_region(rx, ry): the region about the goal of a cell at (rx, ry) from it
+ * (goal - cell), 0..44: the signs of rx and ry and |rx| - |ry| clamped to [-2, 2],
+ * all that a step's change of the octile distance depends on (see EXACT KEYS). */
+static inline unsigned gridpath_region(int32_t rx, int32_t ry)
+{
+	const int32_t ax = rx < 0 ? -rx : rx, ay = ry < 0 ? -ry : ry;
+	int32_t dd = ax - ay;
+	dd = dd < -2 ? -2 : dd > 2 ? 2 : dd;
+	return (unsigned)(((rx > 0) - (rx < 0) + 1) * 15 + ((ry > 0) - (ry < 0) + 1) * 5 + dd + 2);
+}
+
 double gridpath_octile(int32_t dx, int32_t dy)
 {
 	int32_t ax = abs(dx), ay = abs(dy);
@@ -150,6 +233,35 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 			}
 			s->skip[d][mp] = (uint8_t)skip;
 		}
+	/* y = c / pw as c div_mul >> div_shift, exact for every index c < pw ph: with
+	 * div_mul = floor(2^k / pw) + 1 = (2^k + r) / pw, 0 < r <= pw, c div_mul / 2^k
+	 * = c / pw + c r / (pw 2^k), whose second term is below 1 / pw when c pw < 2^k,
+	 * so it never carries past the next integer; 2^k >= pw^2 ph makes it so, and c
+	 * div_mul < ph 2^k + pw ph < 2 (pw ph)^2 + pw ph stays in 64 bits for fewer
+	 * than 2^31 padded cells, as the int32_t index demands. */
+	while (((uint64_t)1 << s->div_shift) < (uint64_t)pw * (uint64_t)pw * (uint64_t)ph)
+		s->div_shift++;
+	s->div_mul = ((uint64_t)1 << s->div_shift) / (uint64_t)pw + 1;
+	/* df (EXACT KEYS) from every (rx, ry) in [-5, 5]^2, which meets each region
+	 * more than once: the assert checks that a step's growth of f depends on the
+	 * region alone. A growth is never negative (the octile distance is consistent). */
+	bool seen[45] = {false};
+	for (int32_t ry = -5; ry <= 5; ry++)
+		for (int32_t rx = -5; rx <= 5; rx++) {
+			const unsigned r = gridpath_region(rx, ry);
+			const uint64_t h = gridpath_key_h(abs(rx), abs(ry));
+			for (int d = 0; d < 8; d++) {
+				const uint64_t step = d < 4 ? GRIDPATH_KEY_ONE : GRIDPATH_KEY_SQRT2;
+				const uint64_t df = step +
+				                    gridpath_key_h(abs(rx - gridpath_dx[d]),
+				                                   abs(ry - gridpath_dy[d])) -
+				                    h;
+				assert(df <= 2 * GRIDPATH_KEY_SQRT2 &&
+				       (!seen[r] || s->df[r][d] == df));
+				s->df[r][d] = df;
+			}
+			seen[r] = true;
+		}
 }
 
 void gridpath_free(GridPathSearch *s)
@@ -165,32 +277,39 @@ void gridpath_free(GridPathSearch *s)
 	free(s->ring);
 	free(s->stack);
 	free(s->scratch);
+	free(s->at_stack);
+	free(s->region_x);
+	free(s->region_y);
+	free(s->region_d);
 	gridpath_jump_free(s);
 	*s = (GridPathSearch){0};
 }
 
 /* ------------------------------------------------------- plain A*'s open list
  *
- * A ring of GRIDPATH_RING buckets of f, GRIDPATH_RING_PER_UNIT to a unit: plain
- * A* offers a neighbour at most 2 sqrt 2 above the f being expanded (a step of
- * cost c changes h by at most c), so the open entries span less than 3 units and a
- * ring of 4 units holds them all, with no overflow. Later buckets are unsorted
- * arrays; the current one, ring_now, is sorted (by gridpath_ring_sort when it
- * becomes current) from the entry to leave last to the one to leave first, so a
- * pop takes its last entry, and a push into it is an insertion from the end. In
- * the maze most buckets hold one to three entries: a sorted array beat the binary
- * heap kept before (see PERFORMANCE). */
+ * A ring of GRIDPATH_RING buckets of f, each 2^GRIDPATH_BUCKET_SHIFT of key (1/78
+ * of a unit): plain A* offers a neighbour at most 2 sqrt 2 above the f being
+ * expanded (a step of cost c changes h by at most c), so the open entries span less
+ * than 3 units and the ring holds them all, with no overflow. An entry's key is the
+ * low GRIDPATH_BUCKET_SHIFT bits of its f's key, then 32 bits of its h's key (h =
+ * f - g: on equal f, the smaller h, that is the larger g, leaves first), so one
+ * comparison of words orders two entries of a bucket. Later buckets are unsorted
+ * arrays; the current one, ring_now, is sorted (when it becomes current) from the
+ * entry to leave last to the one to leave first, so a pop takes its last entry, and
+ * a push into it is an insertion from the end. Of entries with equal keys the later
+ * pushed leaves first. In the maze most buckets hold one to three entries: a sorted
+ * array beat a binary heap. */
 
-/* gridpath_ring_sort(a, n, tmp): sorts a[0..n) so that a[n - 1] leaves first
- * (gridpath_before), stable: of entries that tie in f and g, the later in a leaves
- * first. Insertion for short arrays, else merging halves through tmp (n entries). */
-static void gridpath_ring_sort(GridPathOpen *a, int n, GridPathOpen *tmp)
+/* gridpath_ring_sort(a, n, tmp): sorts a[0..n) by key, largest first (a[n - 1]
+ * leaves first), stable: of equal keys, the later in a leaves first. Insertion for
+ * short arrays, else merging halves through tmp (n entries). */
+static void gridpath_ring_sort(GridPathRingEntry *a, int n, GridPathRingEntry *tmp)
 {
 	if (n <= 16) {
 		for (int i = 1; i < n; i++) {
-			const GridPathOpen x = a[i];
+			const GridPathRingEntry x = a[i];
 			int j = i;
-			for (; j > 0 && gridpath_before(&a[j - 1], &x); j--)
+			for (; j > 0 && a[j - 1].key < x.key; j--)
 				a[j] = a[j - 1];
 			a[j] = x;
 		}
@@ -201,7 +320,7 @@ static void gridpath_ring_sort(GridPathOpen *a, int n, GridPathOpen *tmp)
 	gridpath_ring_sort(a + h, n - h, tmp);
 	int i = 0, j = h, k = 0;
 	while (i < h && j < n) /* the one that leaves later first; on a tie, the left */
-		tmp[k++] = gridpath_before(&a[i], &a[j]) ? a[j++] : a[i++];
+		tmp[k++] = a[i].key < a[j].key ? a[j++] : a[i++];
 	while (i < h)
 		tmp[k++] = a[i++];
 	while (j < n)
@@ -209,67 +328,93 @@ static void gridpath_ring_sort(GridPathOpen *a, int n, GridPathOpen *tmp)
 	memcpy(a, tmp, (size_t)n * sizeof *a);
 }
 
-/* gridpath_ring_push(s, e): files e in the bucket of its f (never before ring_now:
- * f never decreases, the clamp only guards rounding). */
-static inline void gridpath_ring_push(GridPathSearch *s, GridPathOpen e)
+/* The ring in locals of gridpath_find (a store into a node may alias any field of
+ * the search it would otherwise be read from again). */
+typedef struct GridPathRing {
+	GridPathRingBucket *bucket;         /* GRIDPATH_RING buckets */
+	int64_t now;                        /* the current bucket's number */
+	unsigned now_slot;                  /* its slot, now mod GRIDPATH_RING */
+	uint64_t bits[GRIDPATH_RING_WORDS]; /* bit i: bucket[i] holds entries */
+} GridPathRing;
+
+/* gridpath_ring_push(r, f, cell): files a cell of f's key f in the bucket of f,
+ * never before r->now: f never decreases. */
+static inline void gridpath_ring_push(GridPathRing *r, uint64_t f, int32_t cell)
 {
-	const double rel = (e.f - s->f_start) * GRIDPATH_RING_PER_UNIT;
-	const int64_t b = rel < (double)s->ring_now ? s->ring_now : (int64_t)rel;
-	const unsigned slot = (unsigned)b & (GRIDPATH_RING - 1);
-	GridPathBucket *k = &s->ring[slot];
-	k->e = gridpath_room(k->e, k->count, &k->cap);
-	s->ring_bits[slot / 64] |= (uint64_t)1 << (slot % 64);
-	int i = k->count++;
-	if (b == s->ring_now) /* the current bucket: sorted, leaving from the end */
-		for (; i > 0 && gridpath_before(&k->e[i - 1], &e); i--)
-			k->e[i] = k->e[i - 1];
-	k->e[i] = e;
+	const unsigned slot = (unsigned)(f >> GRIDPATH_BUCKET_SHIFT) & (GRIDPATH_RING - 1);
+	GridPathRingBucket *k = &r->bucket[slot];
+	int i = k->count;
+	if (i == k->cap)
+		k->e = util_grow(k->e, &k->cap, i + 1, sizeof *k->e);
+	k->count = i + 1;
+	r->bits[slot / 64] |= (uint64_t)1 << (slot % 64);
+	const uint32_t key = (uint32_t)f & (((uint32_t)1 << GRIDPATH_BUCKET_SHIFT) - 1);
+	GridPathRingEntry *e = k->e;
+	/* the current bucket (the slot tells it: the entries span less than the ring)
+	 * is sorted, leaving from the end */
+	if (slot == r->now_slot)
+		for (; i > 0 && e[i - 1].key < key; i--)
+			e[i] = e[i - 1];
+	e[i] = (GridPathRingEntry){key, cell};
 }
 
-/* gridpath_ring_pop(s, e): the first entry into *e; false when the list is empty. */
-static inline bool gridpath_ring_pop(GridPathSearch *s, GridPathOpen *e)
+/* gridpath_ring_next(r, s): makes the next nonempty bucket after the empty current
+ * one current, sorted (scratch from s); false when there is none. */
+static bool gridpath_ring_next(GridPathRing *r, GridPathSearch *s)
 {
-	unsigned slot = (unsigned)s->ring_now & (GRIDPATH_RING - 1);
-	GridPathBucket *k = &s->ring[slot];
-	if (k->count == 0) {
-		/* the next nonempty bucket, cyclically after slot */
-		unsigned next = GRIDPATH_RING;
-		for (unsigned w = 0; w <= GRIDPATH_RING_WORDS; w++) {
-			const unsigned word = (slot / 64 + w) % GRIDPATH_RING_WORDS;
-			uint64_t bits = s->ring_bits[word];
-			if (w == 0)
-				bits &= ~(uint64_t)0 << (slot % 64);
-			if (bits) {
-				next = word * 64 + (unsigned)gridpath_ctz64(bits);
-				break;
-			}
-		}
-		if (next == GRIDPATH_RING)
-			return false;
-		s->ring_now += (next - slot) & (GRIDPATH_RING - 1);
-		slot = next;
-		k = &s->ring[slot];
-		if (k->count == 2) { /* the usual case in the maze, inline */
-			if (gridpath_before(&k->e[0], &k->e[1])) {
-				const GridPathOpen t = k->e[0];
-				k->e[0] = k->e[1];
-				k->e[1] = t;
-			}
-		} else if (k->count > 2) {
-			if (k->count > 16)
-				s->scratch =
-				    gridpath_room_for(s->scratch, k->count, &s->scratch_cap);
-			gridpath_ring_sort(k->e, k->count, s->scratch);
+	const unsigned slot = (unsigned)r->now & (GRIDPATH_RING - 1);
+	r->bits[slot / 64] &= ~((uint64_t)1 << (slot % 64)); /* empty, left */
+	unsigned next = GRIDPATH_RING;
+	for (unsigned w = 0; w <= GRIDPATH_RING_WORDS; w++) {
+		const unsigned word = (slot / 64 + w) % GRIDPATH_RING_WORDS;
+		uint64_t bits = r->bits[word];
+		if (w == 0)
+			bits &= ~(uint64_t)0 << (slot % 64);
+		if (bits) {
+			next = word * 64 + (unsigned)gridpath_ctz64(bits);
+			break;
 		}
 	}
-	*e = k->e[--k->count];
-	if (k->count == 0)
-		s->ring_bits[slot / 64] &= ~((uint64_t)1 << (slot % 64));
+	if (next == GRIDPATH_RING)
+		return false;
+	r->now += (next - slot) & (GRIDPATH_RING - 1);
+	r->now_slot = next;
+	GridPathRingBucket *k = &r->bucket[next];
+	if (k->count == 2) { /* the usual case in the maze, inline */
+		if (k->e[1].key > k->e[0].key) {
+			const GridPathRingEntry t = k->e[0];
+			k->e[0] = k->e[1];
+			k->e[1] = t;
+		}
+	} else if (k->count > 2) {
+		if (k->count > 16 && k->count > s->scratch_cap)
+			s->scratch =
+			    util_grow(s->scratch, &s->scratch_cap, k->count, sizeof *s->scratch);
+		gridpath_ring_sort(k->e, k->count, s->scratch);
+	}
 	return true;
 }
 
-/* gridpath_ring_reset(s): an empty ring for a new query, bucket 0 current. */
-static void gridpath_ring_reset(GridPathSearch *s)
+/* gridpath_ring_pop(r, s, e, f): the first entry into *e, its f's key into *f;
+ * false when the list is empty. The current bucket's bit is cleared when it is
+ * left (gridpath_ring_next), not at each pop. */
+static inline bool gridpath_ring_pop(GridPathRing *r, GridPathSearch *s, GridPathRingEntry *e,
+                                     uint64_t *f)
+{
+	GridPathRingBucket *k = &r->bucket[r->now_slot];
+	if (k->count == 0) {
+		if (!gridpath_ring_next(r, s))
+			return false;
+		k = &r->bucket[r->now_slot];
+	}
+	*e = k->e[--k->count];
+	*f = (uint64_t)r->now << GRIDPATH_BUCKET_SHIFT | e->key;
+	return true;
+}
+
+/* gridpath_ring_reset(s, r, f): an empty ring for a new query, the bucket of f
+ * current. */
+static void gridpath_ring_reset(GridPathSearch *s, GridPathRing *r, uint64_t f)
 {
 	if (!s->ring) {
 		s->ring = util_alloc(GRIDPATH_RING, sizeof *s->ring);
@@ -277,13 +422,15 @@ static void gridpath_ring_reset(GridPathSearch *s)
 	}
 	for (unsigned i = 0; i < GRIDPATH_RING; i++)
 		s->ring[i].count = 0;
-	memset(s->ring_bits, 0, sizeof s->ring_bits);
-	s->ring_now = 0;
+	r->bucket = s->ring;
+	memset(r->bits, 0, sizeof r->bits);
+	r->now = (int64_t)(f >> GRIDPATH_BUCKET_SHIFT);
+	r->now_slot = (unsigned)r->now & (GRIDPATH_RING - 1);
 }
 
-/* gridpath_next_round: a fresh mark value; on wrap-around, clear the marks once. The
+/* gridpath_next_round: a fresh round; on wrap-around, clear the marks once. The
  * nodes are made by the first plain A* query (the jump search needs none), marked
- * unseen, with each cell's legal steps (gridpath_moves). */
+ * unseen, with each cell's legal steps (gridpath_moves), and the region tables. */
 static void gridpath_next_round(GridPathSearch *s)
 {
 	if (!s->node) {
@@ -292,13 +439,20 @@ static void gridpath_next_round(GridPathSearch *s)
 		memset(s->node, 0, n * sizeof *s->node);
 		for (int32_t y = 1; y < s->ph - 1; y++)
 			for (int32_t x = 1; x < s->pw - 1; x++)
-				s->node[(size_t)y * s->pw + x].moves = gridpath_moves(s, x, y);
+				s->node[(size_t)y * s->pw + x].info = gridpath_moves(s, x, y);
+		s->region_x = util_alloc((size_t)s->pw, sizeof *s->region_x);
+		s->region_y = util_alloc((size_t)s->ph, sizeof *s->region_y);
+		s->region_d = util_alloc((size_t)s->pw + (size_t)s->ph + 1, sizeof *s->region_d);
+		for (int32_t i = 0; i <= s->pw + s->ph; i++) {
+			const int32_t dd = i - s->ph;
+			s->region_d[i] = (uint16_t)(64 * ((dd < -2 ? -2 : dd > 2 ? 2 : dd) + 2));
+		}
 		s->round = 0;
 	}
-	if (s->round >= UINT32_MAX / 2 - 1) {
-		size_t n = (size_t)s->pw * (size_t)(s->h + 2);
+	if (s->round >= (UINT32_MAX >> GRIDPATH_ROUND_SHIFT) - 1) {
+		size_t n = (size_t)s->pw * (size_t)s->ph;
 		for (size_t i = 0; i < n; i++)
-			s->node[i].mark = 0;
+			s->node[i].info &= GRIDPATH_MOVES;
 		s->round = 0;
 	}
 	s->round++;
@@ -320,105 +474,140 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	if (s->method == GRIDPATH_JUMP)
 		return gridpath_find_jump(s, sx + 1, sy + 1, gx + 1, gy + 1, path, length);
 
-	int32_t offset[8];
-	for (int d = 0; d < 8; d++)
-		offset[d] = gridpath_dy[d] * pw + gridpath_dx[d];
+	/* a step's offset in cells, and in bytes of nodes (no scaling in the loop) */
+	ptrdiff_t offset[8], node_step[8];
+	for (int d = 0; d < 8; d++) {
+		offset[d] = (ptrdiff_t)gridpath_dy[d] * pw + gridpath_dx[d];
+		node_step[d] = offset[d] * (ptrdiff_t)sizeof(GridPathNode);
+	}
 	gridpath_next_round(s);
-	const uint32_t open_mark = 2 * s->round, closed_mark = 2 * s->round + 1;
-	GridPathNode *node = s->node;
+	/* the round's marks in info (see GridPathNode) */
+	const uint32_t open_mark = s->round << GRIDPATH_ROUND_SHIFT,
+	               closed_mark = open_mark | GRIDPATH_CLOSED;
+	GridPathNode *const node = s->node, *const goal_node = node + goal;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
+	int64_t *const region_x = s->region_x, *const region_y = s->region_y;
+	const uint16_t *const region_d = s->region_d + s->ph;
+	const char *const df_rows = (const char *)s->df;
+	const uint64_t div_mul = s->div_mul;
+	const unsigned div_shift = s->div_shift;
+	/* region_x[x] = |goal x - x| 4096 + 64 15 (its sign + 1), region_y[y] = |goal y
+	 * - y| 4096 + 64 5 (its sign + 1): with region_d's, the byte offset of the
+	 * cell's row of df (gridpath_region) */
+	for (int32_t x = 0; x < pw; x++) {
+		const int64_t r = goal_x - x;
+		region_x[x] = (r < 0 ? -r : r) * 4096 + 64 * 15 * ((r > 0) - (r < 0) + 1);
+	}
+	for (int32_t y = 0; y < s->ph; y++) {
+		const int64_t r = goal_y - y;
+		region_y[y] = (r < 0 ? -r : r) * 4096 + 64 * 5 * ((r > 0) - (r < 0) + 1);
+	}
 
-	gridpath_ring_reset(s);
-	node[start].mark = open_mark;
-	node[start].straight = node[start].diagonal = 0;
-	node[start].from = GRIDPATH_NO_PARENT;
+	GridPathRing ring;
 	{
-		int32_t ax = abs(goal_x - (sx + 1)), ay = abs(goal_y - (sy + 1));
-		int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-		s->f_start = gridpath_cost(hi - lo, lo);
-		gridpath_ring_push(s, (GridPathOpen){s->f_start, 0, start});
+		const uint64_t f = gridpath_key_h(abs(goal_x - (sx + 1)), abs(goal_y - (sy + 1)));
+		node[start].info = (node[start].info & GRIDPATH_MOVES) | open_mark |
+		                   GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
+		node[start].f = (uint32_t)f;
+		gridpath_ring_reset(s, &ring, f);
+		gridpath_ring_push(&ring, f, start);
 	}
 	int64_t expanded = 0;
 	int found = 0;
-	GridPathOpen e;
-	GridPathOpen *stack = s->stack; /* s->stack, in locals (see below) */
-	int stack_count = 0, stack_cap = s->stack_cap;
+	/* the stack in locals, as the ring; sp its top */
+	int32_t *stack = s->at_stack, *sp = stack;
+	int stack_cap = s->at_stack_cap;
+	uint64_t f = 0; /* the key of f of the cell expanded */
 	for (;;) {
-		if (stack_count > 0)
-			e = stack[--stack_count];
-		else if (!gridpath_ring_pop(s, &e))
-			break;
-		int32_t c = e.cell;
-		/* Stale entries need no test of their own: a cell's entries leave the heap
+		ptrdiff_t c;
+		if (sp != stack) { /* f is that of the cell that pushed it */
+			c = *--sp;
+		} else {
+			GridPathRingEntry e;
+			if (!gridpath_ring_pop(&ring, s, &e, &f))
+				break;
+			c = e.cell;
+		}
+		/* Stale entries need no test of their own: a cell's entries leave the list
 		 * in order of f, h is fixed per cell, so the first to leave carries the
 		 * best g, and it closes the cell; the later, stale ones meet the mark. */
-		GridPathNode *nc = &node[c];
-		if (nc->mark == closed_mark)
+		GridPathNode *const nc = node + c;
+		const uint32_t cinfo = nc->info;
+		if (cinfo >= closed_mark)
 			continue;
-		nc->mark = closed_mark;
+		nc->info = cinfo | GRIDPATH_CLOSED;
 		expanded++;
-		if (c == goal) {
+		if (nc == goal_node) {
 			found = 1;
 			break;
 		}
-		/* the legal steps from one byte (gridpath_init), in order of d as before:
-		 * the order of pushes decides ties, and so the path */
-		unsigned m = nc->moves;
-		if (nc->from != GRIDPATH_NO_PARENT)
-			m &= ~(unsigned)s->skip[nc->from][node[c - offset[nc->from]].moves];
-		/* locals: the stores of a byte below (from) may alias anything, so fields
-		 * read through pointers would be read again after each */
-		const int32_t cs = nc->straight, cd = nc->diagonal;
-		const int32_t rx = goal_x - c % pw, ry = goal_y - c / pw; /* goal - c */
+		/* the legal steps from one byte (gridpath_init), in order of d: the order
+		 * of pushes decides ties, and so the path */
+		unsigned m = cinfo & GRIDPATH_MOVES;
+		const unsigned from = cinfo >> GRIDPATH_FROM_SHIFT & 15;
+		if (from != GRIDPATH_NO_PARENT) {
+			const GridPathNode *parent =
+			    (const GridPathNode *)((const char *)nc - node_step[from]);
+			m &= ~(unsigned)s->skip[from][parent->info & GRIDPATH_MOVES];
+		}
+		const uint32_t f_low = (uint32_t)f;
+		/* the row of df of the cell's region (gridpath_region), by tables */
+		const ptrdiff_t y = (ptrdiff_t)((uint64_t)c * div_mul >> div_shift);
+		const int64_t rx = region_x[c - y * pw], ry = region_y[y];
+		const uint64_t *df = (const uint64_t *)(df_rows + (rx & 4095) + (ry & 4095) +
+		                                        region_d[(rx >> 12) - (ry >> 12)]);
 		for (; m; m &= m - 1) {
-			const int d = gridpath_ctz64(m);
-			const int32_t n = c + offset[d];
-			GridPathNode *nn = &node[n];
-			const uint32_t mark = nn->mark;
-			if (mark == closed_mark)
+			const unsigned d = (unsigned)gridpath_ctz64(m);
+			GridPathNode *const nn = (GridPathNode *)((char *)nc + node_step[d]);
+			/* a closed cell's cost is final; an open one's f, the same h plus its
+			 * g, is improved when lower (F RELATIVE) */
+			const uint32_t info = nn->info;
+			if (info >= closed_mark ||
+			    (info >= open_mark && df[d] >= (uint32_t)(nn->f - f_low)))
 				continue;
-			const int32_t ns = cs + (d < 4), nd = cd + (d >= 4);
-			const double ng = gridpath_cost(ns, nd);
-			if (mark == open_mark && !(ng < gridpath_cost(nn->straight, nn->diagonal)))
-				continue;
-			nn->mark = open_mark;
-			nn->straight = ns;
-			nn->diagonal = nd;
-			nn->from = (uint8_t)d;
-			const int32_t ax = abs(rx - gridpath_dx[d]), ay = abs(ry - gridpath_dy[d]);
-			const int32_t lo = ax < ay ? ax : ay, hi = ax < ay ? ay : ax;
-			const GridPathOpen ne = {gridpath_cost(ns + hi - lo, nd + lo), (float)ng,
-			                         n};
-			if (ne.f == e.f) {
-				/* As good as the best open entry: expand it next, no heap. */
-				if (stack_count == stack_cap)
-					stack = util_grow(stack, &stack_cap, stack_count + 1,
-					                  sizeof *stack);
-				stack[stack_count++] = ne;
-			} else
-				gridpath_ring_push(s, ne);
+			nn->info = (info & GRIDPATH_MOVES) | open_mark | d << GRIDPATH_FROM_SHIFT;
+			nn->f = f_low + (uint32_t)df[d];
+			const int32_t n = (int32_t)(nn - node);
+			if (df[d] == 0) {
+				/* As good as the best open entry: expand it next, no ring. */
+				if (sp == stack + stack_cap) {
+					const int count = (int)(sp - stack);
+					stack =
+					    util_grow(stack, &stack_cap, count + 1, sizeof *stack);
+					sp = stack + count;
+				}
+				*sp++ = n;
+			} else {
+				gridpath_ring_push(&ring, f + df[d], n);
+			}
 		}
 	}
-	s->stack = stack;
-	s->stack_cap = stack_cap;
+	s->at_stack = stack;
+	s->at_stack_cap = stack_cap;
 	path->expanded = expanded;
 	if (!found)
 		return GRIDPATH_NO_PATH;
 
-	/* Walk back along from[], then reverse: the path runs start to goal. */
-	int32_t steps = node[goal].straight + node[goal].diagonal;
+	/* Walk back along the marks' from to count the steps, then again to write the
+	 * points from the goal: the path runs start to goal. */
+	int32_t straight = 0, diagonal = 0;
+	for (int32_t c = goal, d;
+	     (d = (int)(node[c].info >> GRIDPATH_FROM_SHIFT & 15)) != GRIDPATH_NO_PARENT;
+	     c -= offset[d])
+		*(d < 4 ? &straight : &diagonal) += 1;
+	const int32_t steps = straight + diagonal;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
 	path->count = steps + 1;                  /* every point is written below */
 	int32_t c = goal, x = goal_x, y = goal_y; /* c = y pw + x: no division */
 	for (int32_t i = steps; i >= 0; i--) {
 		path->pts[i] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
 		if (i > 0) {
-			const int d = node[c].from;
+			const int d = (int)(node[c].info >> GRIDPATH_FROM_SHIFT & 15);
 			c -= offset[d];
 			x -= gridpath_dx[d];
 			y -= gridpath_dy[d];
 		}
 	}
-	*length = gridpath_cost(node[goal].straight, node[goal].diagonal);
+	*length = gridpath_cost(straight, diagonal);
 	return GRIDPATH_FOUND;
 }

@@ -24,25 +24,29 @@
  *
  * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
  * rows and cols; 64 cells to a word, so up to 63 bits more a line), and from the
- * first query of either method, 16 bytes more for plain A* (the node) and 4 and a
- * bit for the jump search (a record index and a seen bit); plus the open list (16
- * bytes per pushed entry; at most 8 pushes per cell, far fewer in practice) and,
- * for the jump search, 28 bytes per jump point seen, all kept between queries.
+ * first query of either method, 8 bytes more for plain A* (the node) and 4 and a
+ * bit for the jump search (a record index and a seen bit); plus the open list (8
+ * bytes per pushed entry for plain A*, 16 for the jump search; at most 8 pushes per
+ * cell, far fewer in practice), for plain A* 18 bytes per column and per row (its
+ * region tables), and for the jump search 28 bytes per jump point seen, all kept
+ * between queries.
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
- * corner to corner, the ends as skelbench picks them). Plain A* at 1024: rooms 16.0
- * ms, rects 9.3, maze 39.2 (688 000 cells expanded), Boston_0_1024 13.0, den520d
- * 3.1; libtcod's A* over these 25.9, 32.2, 2.13, 21.3 and 17.2 times (before issue
- * 16's work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search: 0.56, 0.41, 6.07, 0.72
- * and 0.15 ms, libtcod over it 736, 741, 13.8, 381 and 351 times (before its second
- * round, bits and records: 327, 286, 8.16, 155, 103). At 4096 (utak by skelbench
- * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids):
- * plain A* rooms 333 ms, rects 196, maze 410, libtcod over it 87, 93 and 2.4
- * times; the jump search 13.8, 12.3 and 66.6 ms (before its second round 40, 46
- * and 119), 2 110, 1 480 and 14.9 times. Goal of the issue still unmet: plain A*
- * 5 times libtcod on the maze (2.1-2.4: it expands every cell at about 300
- * instructions each, see gridpath.c).
+ * corner to corner, the ends as skelbench picks them). Plain A* at 1024 after its
+ * third round (exact integer keys, 8-byte nodes, gridpath.c): rooms 8.65 ms, rects
+ * 5.30, maze 29.95 (688 000 cells expanded), Boston_0_1024 7.25, den520d 1.67;
+ * libtcod's A* over these 51.2, 61.1, 2.95, 37.1 and 33.2 times (after the second
+ * round 25.9, 32.2, 2.13, 21.3, 17.2; before issue 16's work 12.9, 11.3, 1.34,
+ * 10.6, 8.9). The jump search in the same run: 0.57, 0.51, 6.53, 0.72 and 0.17 ms,
+ * libtcod over it 778, 634, 13.5, 376 and 324 times. At 4096 (utak by skelbench
+ * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids,
+ * 29 126, 18 250 and 995 ms): plain A* rooms 197 ms, rects 100, maze 305 (the second
+ * round: 333, 196, 410), libtcod over it 148, 182 and 3.3 times (87, 93, 2.4); the
+ * jump search (the second round's run) 13.8, 12.3 and 66.6 ms, 2 110, 1 480 and 14.9
+ * times. Goal of the issue still unmet: plain A* 5 times libtcod on the maze (2.95
+ * at 1024, 3.3 at 4096: it expands 87% of the free cells at about 220 instructions
+ * each, see gridpath.c).
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
@@ -86,13 +90,26 @@ typedef struct GridPathBucket {
 /* The state of one cell for plain A*, kept together so that a visit touches one
  * cache line (the jump search keeps records of its own, gridjump.c). */
 typedef struct GridPathNode {
-	uint32_t mark;    /* 2 round when opened this round, 2 round + 1 when closed */
-	int32_t straight; /* straight steps of the best known path to the cell */
-	int32_t diagonal; /* diagonal steps of the best known path to the cell */
-	uint8_t moves;    /* the legal steps from the cell: bit d for step d of gridpath.c
-	                     (no corner cutting); 0 for blocked and border cells */
-	uint8_t from;     /* direction (0..7) of the step that reached it */
+	uint32_t f;    /* the low 32 bits of the key of f of the cell's best known path
+	                  (gridpath.c, EXACT KEYS and F RELATIVE) */
+	uint32_t info; /* the legal steps from the cell (bits 0-7: bit d for step d of
+	                  gridpath.c, no corner cutting; 0 for blocked and border
+	                  cells), the step that reached it (8-11; 8 for the start),
+	                  closed (12), the round it was reached in (13-31) */
 } GridPathNode;
+
+/* One entry of plain A*'s ring (gridpath.c): the bits of its f's key below its
+ * bucket's, and the cell. */
+typedef struct GridPathRingEntry {
+	uint32_t key;
+	int32_t cell;
+} GridPathRingEntry;
+
+/* One bucket of plain A*'s ring (opaque). */
+typedef struct GridPathRingBucket {
+	GridPathRingEntry *e;
+	int count, cap;
+} GridPathRingBucket;
 
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
  * blocked border one cell wide (width w + 2), so neighbours need no bounds tests. */
@@ -100,11 +117,11 @@ typedef struct GridPathSearch {
 	int32_t w, h;       /* size of the grid searched, in cells */
 	int32_t pw;         /* padded width: w + 2 */
 	GridPathNode *node; /* (w + 2) (h + 2) cells, plain A*'s; NULL before its first query */
-	uint32_t round;     /* query counter; marks of other rounds mean "unseen" */
-	/* The open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length from
-	 * the start's f; the current bucket is a binary heap, later ones are unsorted.
-	 * Only a page of GRIDPATH_PAGE buckets, from bucket page_base on, is kept;
-	 * entries past it wait unsorted in overflow until the page is empty. */
+	uint32_t round;     /* plain A*'s query counter; marks of other rounds mean "unseen" */
+	/* The jump search's open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length
+	 * from the start's f; the current bucket is a binary heap, later ones are unsorted. Only a
+	 * page of GRIDPATH_PAGE buckets, from bucket page_base on, is kept; entries past it wait
+	 * unsorted in overflow until the page is empty. */
 	GridPathBucket *bucket; /* GRIDPATH_PAGE buckets, or NULL before the first query */
 	uint64_t *nonempty;     /* GRIDPATH_PAGE bits: bucket i holds entries */
 	int64_t page_base;      /* the bucket number of bucket[0] */
@@ -116,12 +133,25 @@ typedef struct GridPathSearch {
 	 * list: they may be expanded next in any order, so they skip the heap. */
 	GridPathOpen *stack;
 	int stack_count, stack_cap;
-	/* Plain A*'s open list: a ring of GRIDPATH_RING buckets of f (gridpath.c). */
-	GridPathBucket *ring;                   /* NULL before the first query */
-	uint64_t ring_bits[GRIDPATH_RING / 64]; /* bit i: ring[i] holds entries */
-	int64_t ring_now;                       /* the current bucket's number */
-	GridPathOpen *scratch;                  /* for sorting a bucket */
+	/* Plain A*'s open list: a ring of GRIDPATH_RING buckets of f (gridpath.c), and
+	 * its stack of cells whose f equals the one being expanded. */
+	GridPathRingBucket *ring;   /* NULL before the first query */
+	GridPathRingEntry *scratch; /* for sorting a bucket */
 	int scratch_cap;
+	int32_t *at_stack; /* cells */
+	int at_stack_cap;
+	/* y = c / pw for a padded index c as c div_mul >> div_shift (gridpath_init) */
+	uint64_t div_mul;
+	unsigned div_shift;
+	/* df[r][d]: the growth of f's key by step d from a cell in region r about the
+	 * goal (gridpath_init, see gridpath.c, EXACT KEYS). */
+	uint64_t df[45][8];
+	/* The row of df of a cell's region about the goal (gridpath.c) from its x and
+	 * y, as byte offsets: region_x[x] = |goal x - x| 4096 + 64 15 (sign + 1),
+	 * region_y[y] the same with 64 5 (sign + 1), both set by each query, and
+	 * region_d[|dx| - |dy| + ph] = 64 (that clamped to [-2, 2] + 2). */
+	int64_t *region_x, *region_y;
+	uint16_t *region_d;
 	/* GRIDPATH_ASTAR after gridpath_init; set it to GRIDPATH_JUMP for a jump-point
 	 * search. The jump search scans the grid along rows and columns, so the free
 	 * cells are kept twice, row-major (rows) and column-major (cols), both padded
@@ -133,7 +163,7 @@ typedef struct GridPathSearch {
 	 * column. 128 KB each at 1024 x 1024, so the runs' scans stay in cache. */
 	uint64_t *rows, *cols;
 	int32_t row_words, col_words;
-	/* legal[n]: the legal steps of a cell (GridPathNode.moves) whose 3 x 3
+	/* legal[n]: the legal steps of a cell (GridPathNode.info's bits 0-7) whose 3 x 3
 	 * neighbourhood is n: bit 3 (dy + 1) + dx + 1 for (x + dx, y + dy) free. */
 	uint8_t legal[512];
 	/* The jump search's own state (gridjump.c, JUMP RECORDS), allocated by its first
