@@ -329,7 +329,7 @@ bool goals_inspect(Controller *c, const int32_t *dist, Vec2 *goal)
 	bool found = false;
 	for (int32_t k = 0; k < m->node_count; k++) {
 		const ModelNode *n = &m->node[k];
-		if (n->kind != NODE_OBJECT)
+		if (n->kind != NODE_OBJECT || objects_wall(c, k))
 			continue;
 		Vec2 beside;
 		if (objects_read(c, k).confirmed || !goals_beside(c, k, dist, &beside))
@@ -597,7 +597,7 @@ static bool unexamined(Controller *c, int32_t k, bool nearer, const int32_t *dis
 {
 	double d = nearer ? goals_distance(objects_read(c, k).centroid, c->start) : INFINITY, best = INFINITY;
 	for (int32_t j = 0; j < c->model.node_count; j++) {
-		if (j == k || c->model.node[j].kind != NODE_OBJECT)
+		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j))
 			continue;
 		ObjectReading q = objects_read(c, j);
 		int32_t x, y;

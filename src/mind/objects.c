@@ -106,7 +106,7 @@ int32_t objects_find_target(Controller *c)
 	double best_d = INFINITY, named_d = INFINITY, chosen_d = INFINITY, chosen_near = OBJECTS_SAME;
 	bool chosen_confirmed = false;
 	for (int32_t k = 0; k < m->node_count; k++) {
-		if (m->node[k].kind != NODE_OBJECT)
+		if (m->node[k].kind != NODE_OBJECT || objects_wall(c, k))
 			continue;
 		ObjectReading o = objects_read(c, k);
 		double d = goals_distance(o.centroid, c->start);
@@ -182,6 +182,12 @@ bool objects_felt(const Controller *c, int32_t k)
 	return listed(c->felt, c->felt_count, (int32_t)c->model.node[k].ident);
 }
 
+bool objects_wall(const Controller *c, int32_t k)
+{
+	int32_t ident = (int32_t)c->model.node[k].ident;
+	return listed(c->walls, c->walls_count, ident) && !listed(c->felt, c->felt_count, ident);
+}
+
 bool objects_touching(const Controller *c, int32_t k)
 {
 	int32_t ux, uy;
@@ -233,7 +239,7 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 	 * may be the one the task means. */
 	double d = goals_distance(o.centroid, c->start);
 	for (int32_t j = 0; j < c->model.node_count; j++) {
-		if (j == k || c->model.node[j].kind != NODE_OBJECT)
+		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j))
 			continue;
 		ObjectReading q = objects_read(c, j);
 		if (goals_distance(q.centroid, c->start) >= d)

@@ -84,6 +84,16 @@ void screen_build(Screen *s, const WorldModel *m, const Vec2 *extra, int n)
 			s->free.cells[k] = label == SCREEN_SPACE || label == SCREEN_UNKNOWN ? GRID_FREE : GRID_BLOCKED;
 			s->fixed.cells[k] = label == SCREEN_VERGE ? GRID_BLOCKED : GRID_FREE;
 		}
+	/* Utak's own square, and the object he holds: touch shows its letter, so it is
+	 * an object, space to the rooms, even where the model cannot part it from a
+	 * wall it is pressed against (pushed into a corner, its set joins the verge:
+	 * counted as wall, it would cut the corner beyond it off the room). */
+	s->fixed.cells[(int64_t)(uy - s->y0) * s->w + (ux - s->x0)] = GRID_FREE;
+	for (int32_t h = 0; m->holding && h < m->held_count; h++) {
+		int32_t i = ux + m->held_dx[h] - s->x0, j = uy + m->held_dy[h] - s->y0;
+		if (i >= 0 && j >= 0 && i < s->w && j < s->h)
+			s->fixed.cells[(int64_t)j * s->w + i] = GRID_FREE;
+	}
 }
 
 void screen_dump(const Screen *s, const WorldModel *m, FILE *f)

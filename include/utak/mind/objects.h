@@ -74,6 +74,13 @@ int32_t objects_find_target(Controller *c);
 void objects_feel(Controller *c);
 bool objects_felt(const Controller *c, int32_t k);
 
+/* objects_wall(c, k): touch has felt node k as wall (B) and never as an object's
+ * colour: a stretch of wall standing free, which the eye (gray levels only) takes
+ * for an object. It is no candidate for the task's object and no object to doubt
+ * or to look at again. A set of wall and object the model joins, felt only on its
+ * wall side, is dropped with it: Utak then looks on, and can only fail honestly. */
+bool objects_wall(const Controller *c, int32_t k);
+
 /* objects_touching(c, k): touch shows an object's colour in a square of node k (any
  * object when k < 0). */
 bool objects_touching(const Controller *c, int32_t k);
