@@ -122,6 +122,10 @@ typedef struct Controller {
 	bool surveying;		/* a push into a corner: going to look at the corner first */
 	bool room_look;		/* going to look at a wall that may part two rooms (roomdoubt.h) */
 	Vec2 room_look_at;	/* ... from there, kept until reached */
+	bool room_follow;	/* the start's room runs into the unseen as a passage:
+				   followed from the last look at it (roomdoubt_frontier) */
+	Vec2 room_follow_at;	/* ... that look */
+	bool room_following;	/* ... and it is the current goal, kept until reached */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];
