@@ -540,6 +540,7 @@ static void next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 	carryroom_merge_seen(rm, s, &seen);
 	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room];
 	bool past = here_room >= 0 && sure.merged[here_room] != sp;
+
 	double best_d[2] = {INFINITY, INFINITY};
 	int32_t best[2] = {-1, -1};
 	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
@@ -682,8 +683,11 @@ void goals_choose(Controller *c, GoalResult *out)
 		if (!out->found) {
 			out->exploring = out->found = goals_frontier(c, dist, &out->goal);
 		}
-		/* No door: before saying so, a look at any wall seen only coarsely that
-		 * may part the room in two (roomdoubt_door). */
+		/* No door: before saying so, a touch of any object that would part the
+		 * room in two were it wall (roomdoubt_felt), and a look at any wall
+		 * seen only coarsely that may (roomdoubt_door). */
+		if (!out->found && roomdoubt_felt(c, dist, &out->goal) == ROOMDOUBT_LOOK)
+			out->exploring = out->found = true;
 		if (!out->found && roomdoubt_door(c, dist, &out->goal) == ROOMDOUBT_LOOK)
 			out->exploring = out->found = true;
 		if (!out->found)

@@ -172,6 +172,9 @@ void objects_feel(Controller *c)
 		int32_t ident = (int32_t)c->model.node[k].ident;
 		if (colour == 'B' && !listed(c->walls, c->walls_count, ident) && c->walls_count < CONTROLLER_EXAMINED)
 			c->walls[c->walls_count++] = ident;
+		if (colour == 'B' && !listed(c->model.wall_ident, c->model.wall_count, ident) &&
+		    c->model.wall_count < WORLDMODEL_WALLS)
+			c->model.wall_ident[c->model.wall_count++] = ident; /* the screen's verge */
 		if (colour != 'B' && !listed(c->felt, c->felt_count, ident) && c->felt_count < CONTROLLER_EXAMINED)
 			c->felt[c->felt_count++] = ident;
 	}

@@ -11,6 +11,8 @@
  * room toward a better corner, the coarse occupied squares facing floor near its
  * run. roomdoubt_frontier: the unseen squares beside the start's room, each marking
  * the cells within view of it, then the nearest such cell of the room by steps.
+ * roomdoubt_felt: for each object node not yet felt, a room map with it taken for
+ * wall.
  * MEMORY: a grid and a room map of the screen, freed before returning.
  * COMPLEXITY: O(w h) for the map, O(w h) for the candidates, O(w h) for each
  * goals_near over at most the candidates kept (the nearest first). */
@@ -22,6 +24,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/objects.h"
 
 /* doubtful(m, x, y): the square is seen only coarsely and occupied, or floor beside
  * an occupied square (roomdoubt.h). */
@@ -457,5 +460,60 @@ RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 towa
 	free(cover);
 	carryroom_free(&cr);
 	goals_roommap_free(&rm);
+	return verdict;
+}
+
+RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	int32_t si, sj;
+	if (!goals_cell_of(s, c->start, &si, &sj))
+		return ROOMDOUBT_NONE;
+	int64_t n = (int64_t)s->w * s->h;
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	int32_t best_d = INT32_MAX;
+	for (int32_t k = 0; k < m->node_count; k++) {
+		if (m->node[k].kind != NODE_OBJECT || m->node[k].held || objects_felt(c, k))
+			continue;
+		/* The room map with k taken for wall: does the start's room, merged by
+		 * the verdict's rule, then have a door to another? */
+		RoomMap rm;
+		grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
+		bool any = false;
+		for (int64_t q = 0; q < n; q++) {
+			any |= s->label[q] == k;
+			if (s->label[q] != SCREEN_UNKNOWN && s->label[q] != k && s->fixed.cells[q] == GRID_FREE)
+				rm.known.cells[q] = GRID_FREE;
+		}
+		if (!any) {
+			grid_free(&rm.known);
+			continue;
+		}
+		goals_roommap_find(&rm);
+		CarryRooms cr;
+		carryroom_merge(&rm, &cr);
+		int32_t a = carryroom_at(&cr, &rm, si, sj);
+		bool parts = false;
+		for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count && !parts; q++) {
+			int32_t ra = cr.merged[rm.rooms.doors[q].room_a], rb = cr.merged[rm.rooms.doors[q].room_b];
+			parts = ra != rb && (ra == a || rb == a);
+		}
+		carryroom_free(&cr);
+		goals_roommap_free(&rm);
+		if (!parts)
+			continue;
+		if (verdict == ROOMDOUBT_NONE)
+			verdict = ROOMDOUBT_STUCK;
+		Vec2 near;
+		if (!goals_beside(c, k, dist, &near))
+			continue;
+		int32_t ni, nj;
+		if (!goals_cell_of(s, near, &ni, &nj) || dist[nj * s->w + ni] >= best_d)
+			continue;
+		best_d = dist[nj * s->w + ni];
+		*goal = near;
+		verdict = ROOMDOUBT_LOOK;
+	}
 	return verdict;
 }

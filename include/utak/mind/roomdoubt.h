@@ -125,4 +125,16 @@ RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal);
  * the screen, O(F ROOMDOUBT_VIEW^2) for F unseen squares beside the room. */
 RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 toward, const Vec2 *follow, Vec2 *goal);
 
+/* roomdoubt_felt(c, dist, goal): for "go next-room" when the model shows no door out
+ * of the start's room: whether an object node not yet felt, taken for wall, would
+ * part the start's room from another by the verdict's door rule (carryroom_merge).
+ * An occupied set apart from the verge reads as an object, and objects are space
+ * to rooms; but a free-standing stretch of wall between two doors is such a set
+ * too, and only touch tells them apart (paper 3.4.2: an object's letter is not B;
+ * objects_feel keeps the walls, screen.c counts them as verge). If so, *goal is the
+ * reachable cell beside such a node nearest Utak by steps, not yet reached
+ * (goals_beside); ROOMDOUBT_STUCK when none can be reached. COMPLEXITY: a room map
+ * of the screen for each object node. */
+RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
+
 #endif
