@@ -221,13 +221,28 @@ static bool corner_room_look(Controller *c, RoomDoubt (*check)(const Controller 
 	return look;
 }
 
+/* corner_frontier(c): whether the start's room runs into the unseen as a passage
+ * (roomdoubt_frontier); goals_choose then looks along it before the corner again. */
+static bool corner_frontier(Controller *c)
+{
+	int32_t ui, uj;
+	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
+	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
+	goals_reach(&c->screen.free, ui, uj, dist);
+	Vec2 look;
+	bool seen_in_part = roomdoubt_frontier(c, dist, c->model.utak, c->room_follow ? &c->room_follow_at : NULL,
+					       &look) == ROOMDOUBT_LOOK;
+	free(dist);
+	return seen_in_part;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
 	c->have_plan = false;
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
-		c->room_look = false;
+		c->room_look = c->room_following = false;
 		return;
 	}
 	int64_t short_by;
@@ -248,6 +263,8 @@ static void arrive(Controller *c)
 			c->room_look = true; /* the next goal: a look past the undecided door */
 		else if (corner_room_look(c, roomdoubt_jambs))
 			c->room_look = true; /* the next goal: a look at the door's coarse side */
+		else if (corner_frontier(c))
+			; /* the room seen in part: the next goal is a look at its unseen side */
 		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK)
 			c->phase = PHASE_DONE;
 		/* else not sure of the room: the next goal is a look at the wall between */

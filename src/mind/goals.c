@@ -540,6 +540,7 @@ static void next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 	carryroom_merge_seen(rm, s, &seen);
 	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room];
 	bool past = here_room >= 0 && sure.merged[here_room] != sp;
+
 	double best_d[2] = {INFINITY, INFINITY};
 	int32_t best[2] = {-1, -1};
 	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
@@ -645,6 +646,25 @@ void goals_choose(Controller *c, GoalResult *out)
 		/* A corner only of a room the model can tell is the start's: else a look
 		 * first at the wall between, at fine resolution (roomdoubt.h). */
 		int32_t li, lj;
+		/* Where the start's room runs into the unseen as a passage, a look
+		 * from the nearest cell in view of it, swept from the far side toward
+		 * the corner, and the passage followed (roomdoubt.h). */
+		Vec2 look;
+		if (out->found && !c->surveying &&
+		    roomdoubt_frontier(c, dist, out->goal, c->room_follow ? &c->room_follow_at : NULL, &look) ==
+			ROOMDOUBT_LOOK) {
+			c->room_follow = c->room_following = true;
+			c->room_follow_at = out->goal = look;
+			out->exploring = true;
+			break;
+		}
+		/* A look given up before it was reached (the room map, built on a
+		 * screen that moves with him, may draw the room's edge a cell apart
+		 * from one cycle to the next) counts as taken: else he would go to
+		 * and fro between it and the corner. */
+		if (c->room_following && c->visited_count < CONTROLLER_MAX_VISITED)
+			c->visited[c->visited_count++] = c->room_follow_at;
+		c->room_following = false;
 		if (c->room_look && goals_cell_of(s, c->room_look_at, &li, &lj) && dist[lj * g->w + li] >= 0) {
 			out->goal = c->room_look_at; /* kept: the map may flip as he moves */
 			out->exploring = out->found = true;
@@ -663,8 +683,11 @@ void goals_choose(Controller *c, GoalResult *out)
 		if (!out->found) {
 			out->exploring = out->found = goals_frontier(c, dist, &out->goal);
 		}
-		/* No door: before saying so, a look at any wall seen only coarsely that
-		 * may part the room in two (roomdoubt_door). */
+		/* No door: before saying so, a touch of any object that would part the
+		 * room in two were it wall (roomdoubt_felt), and a look at any wall
+		 * seen only coarsely that may (roomdoubt_door). */
+		if (!out->found && roomdoubt_felt(c, dist, &out->goal) == ROOMDOUBT_LOOK)
+			out->exploring = out->found = true;
 		if (!out->found && roomdoubt_door(c, dist, &out->goal) == ROOMDOUBT_LOOK)
 			out->exploring = out->found = true;
 		if (!out->found)

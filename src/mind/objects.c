@@ -170,8 +170,9 @@ void objects_feel(Controller *c)
 		if (k < 0 || c->model.node[k].kind != NODE_OBJECT || colour < 'A' || colour > 'Z')
 			continue;
 		int32_t ident = (int32_t)c->model.node[k].ident;
-		if (colour == 'B' && !listed(c->walls, c->walls_count, ident) && c->walls_count < CONTROLLER_EXAMINED)
-			c->walls[c->walls_count++] = ident;
+		if (colour == 'B' && !listed(c->model.wall_ident, c->model.wall_count, ident) &&
+		    c->model.wall_count < WORLDMODEL_WALLS)
+			c->model.wall_ident[c->model.wall_count++] = ident; /* the screen's verge */
 		if (colour != 'B' && !listed(c->felt, c->felt_count, ident) && c->felt_count < CONTROLLER_EXAMINED)
 			c->felt[c->felt_count++] = ident;
 	}
@@ -185,7 +186,7 @@ bool objects_felt(const Controller *c, int32_t k)
 bool objects_wall(const Controller *c, int32_t k)
 {
 	int32_t ident = (int32_t)c->model.node[k].ident;
-	return listed(c->walls, c->walls_count, ident) && !listed(c->felt, c->felt_count, ident);
+	return listed(c->model.wall_ident, c->model.wall_count, ident) && !listed(c->felt, c->felt_count, ident);
 }
 
 bool objects_touching(const Controller *c, int32_t k)

@@ -9,7 +9,10 @@
  * candidate, and the one whose nearest reachable cell (goals_near) is nearest Utak,
  * not yet looked at, is looked at. roomdoubt_jambs: for each door of the start's
  * room toward a better corner, the coarse occupied squares facing floor near its
- * run.
+ * run. roomdoubt_frontier: the unseen squares beside the start's room, each marking
+ * the cells within view of it, then the nearest such cell of the room by steps.
+ * roomdoubt_felt: for each object node not yet felt, a room map with it taken for
+ * wall.
  * MEMORY: a grid and a room map of the screen, freed before returning.
  * COMPLEXITY: O(w h) for the map, O(w h) for the candidates, O(w h) for each
  * goals_near over at most the candidates kept (the nearest first). */
@@ -21,6 +24,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/objects.h"
 
 /* doubtful(m, x, y): the square is seen only coarsely and occupied, or floor beside
  * an occupied square (roomdoubt.h). */
@@ -355,5 +359,161 @@ RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
 	}
 	carryroom_free(&cr);
 	goals_roommap_free(&rm);
+	return verdict;
+}
+
+/* across(g, x, y): the width across cell (x, y) between the walls seen on g (the
+ * screen's fixed space: objects and the unseen count as space): the shorter of its
+ * runs of free cells along x and along y; a run that leaves the screen has no wall
+ * seen at that end and is unbounded (INT32_MAX). */
+static int32_t across(const Grid *g, int32_t x, int32_t y)
+{
+	int32_t run[2];
+	for (int axis = 0; axis < 2; axis++) {
+		int32_t dx = axis == 0, dy = axis == 1, n = 1;
+		bool open = false;
+		for (int side = -1; side <= 1 && !open; side += 2)
+			for (int32_t k = 1;; k++) {
+				int32_t u = x + side * k * dx, v = y + side * k * dy;
+				if (u < 0 || v < 0 || u >= g->w || v >= g->h) {
+					open = true;
+					break;
+				}
+				if (!grid_free_at(g, u, v))
+					break;
+				n++;
+			}
+		run[axis] = open ? INT32_MAX : n;
+	}
+	return run[0] < run[1] ? run[0] : run[1];
+}
+
+RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 toward, const Vec2 *follow, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj;
+	if (!goals_cell_of(s, c->start, &si, &sj))
+		return ROOMDOUBT_NONE;
+	RoomMap rm;
+	goals_roommap_build(&rm, s);
+	/* The room as for the corner (goals_room_corner_best). */
+	CarryRooms cr;
+	carryroom_merge_seen(&rm, s, &cr);
+	int32_t a = carryroom_at(&cr, &rm, si, sj);
+	int64_t n = (int64_t)s->w * s->h;
+	const int32_t v = ROOMDOUBT_VIEW;
+	/* cover: the cells from which one impression shows an unseen square beside
+	 * the room that no visited point has had within view (not Utak's own point:
+	 * the goal would flip as he comes near and he would never reach it). */
+	bool *cover = util_alloc((size_t)n, sizeof *cover);
+	for (int64_t k = 0; k < n; k++)
+		cover[k] = false;
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	bool open = false; /* the room meets the unseen wide too: an open room seen in part */
+	for (int64_t k = 0; a >= 0 && k < n; k++) {
+		if (s->label[k] != SCREEN_UNKNOWN)
+			continue;
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
+		Vec2 q = goals_centre(s->x0 + i, s->y0 + j);
+		bool beside = false, followed = follow && goals_distance(q, *follow) <= ROOMDOUBT_FOLLOW;
+		for (int dd = 1; dd < 5 && !beside; dd++) {
+			int32_t x = i + (dd == 1) - (dd == 2), y = j + (dd == 3) - (dd == 4);
+			if (carryroom_at(&cr, &rm, x, y) != a)
+				continue;
+			if (followed || across(&s->fixed, x, y) <= ROOMDOUBT_PASSAGE)
+				beside = true;
+			else
+				open = true;
+		}
+		if (!beside)
+			continue;
+		if (verdict == ROOMDOUBT_NONE)
+			verdict = ROOMDOUBT_STUCK;
+		bool seen_from = false;
+		for (int p = 0; p < c->visited_count && !seen_from; p++)
+			seen_from = goals_distance(q, c->visited[p]) <= v;
+		if (seen_from)
+			continue; /* out of the eye's reach from anywhere near: not again */
+		for (int32_t y = j - v; y <= j + v; y++)
+			for (int32_t x = i - v; x <= i + v; x++)
+				if (x >= 0 && y >= 0 && x < s->w && y < s->h &&
+				    (x - i) * (x - i) + (y - j) * (y - j) <= v * v)
+					cover[(int64_t)y * s->w + x] = true;
+	}
+	if (open && !follow)
+		verdict = ROOMDOUBT_NONE;
+	/* The look nearest Utak and farthest from `toward`: the room is swept away
+	 * from the corner first, so the looks near it fall on the way back. */
+	double best = INFINITY;
+	for (int64_t k = 0; verdict != ROOMDOUBT_NONE && k < n; k++) {
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
+		if (!cover[k] || dist[k] < 0 || s->label[k] != SCREEN_SPACE || carryroom_at(&cr, &rm, i, j) != a)
+			continue;
+		Vec2 p = goals_centre(s->x0 + i, s->y0 + j);
+		double cost = dist[k] - goals_distance(p, toward);
+		if (cost >= best)
+			continue;
+		best = cost;
+		*goal = p;
+		verdict = ROOMDOUBT_LOOK;
+	}
+	free(cover);
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	return verdict;
+}
+
+RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	int32_t si, sj;
+	if (!goals_cell_of(s, c->start, &si, &sj))
+		return ROOMDOUBT_NONE;
+	int64_t n = (int64_t)s->w * s->h;
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	int32_t best_d = INT32_MAX;
+	for (int32_t k = 0; k < m->node_count; k++) {
+		if (m->node[k].kind != NODE_OBJECT || m->node[k].held || objects_felt(c, k))
+			continue;
+		/* The room map with k taken for wall: does the start's room, merged by
+		 * the verdict's rule, then have a door to another? */
+		RoomMap rm;
+		grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
+		bool any = false;
+		for (int64_t q = 0; q < n; q++) {
+			any |= s->label[q] == k;
+			if (s->label[q] != SCREEN_UNKNOWN && s->label[q] != k && s->fixed.cells[q] == GRID_FREE)
+				rm.known.cells[q] = GRID_FREE;
+		}
+		if (!any) {
+			grid_free(&rm.known);
+			continue;
+		}
+		goals_roommap_find(&rm);
+		CarryRooms cr;
+		carryroom_merge(&rm, &cr);
+		int32_t a = carryroom_at(&cr, &rm, si, sj);
+		bool parts = false;
+		for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count && !parts; q++) {
+			int32_t ra = cr.merged[rm.rooms.doors[q].room_a], rb = cr.merged[rm.rooms.doors[q].room_b];
+			parts = ra != rb && (ra == a || rb == a);
+		}
+		carryroom_free(&cr);
+		goals_roommap_free(&rm);
+		if (!parts)
+			continue;
+		if (verdict == ROOMDOUBT_NONE)
+			verdict = ROOMDOUBT_STUCK;
+		Vec2 near;
+		if (!goals_beside(c, k, dist, &near))
+			continue;
+		int32_t ni, nj;
+		if (!goals_cell_of(s, near, &ni, &nj) || dist[nj * s->w + ni] >= best_d)
+			continue;
+		best_d = dist[nj * s->w + ni];
+		*goal = near;
+		verdict = ROOMDOUBT_LOOK;
+	}
 	return verdict;
 }

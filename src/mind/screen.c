@@ -31,11 +31,17 @@ int32_t screen_label(const Screen *s, int32_t i, int32_t j)
 
 /* object_at(m, x, y): the object node whose squares hold square (x, y), or -1.
  * (Occupied sets the model cannot yet read, its uncertain nodes, count as verge:
- * planning treats them as fixed until they are seen to be objects.) */
+ * planning treats them as fixed until they are seen to be objects; so do those
+ * touch has shown to be wall, m->wall_ident.) */
 static int32_t object_at(const WorldModel *m, int32_t x, int32_t y)
 {
 	int32_t k = worldmodel_node_at(m, x, y);
-	return k >= 0 && m->node[k].kind == NODE_OBJECT ? k : -1;
+	if (k < 0 || m->node[k].kind != NODE_OBJECT)
+		return -1;
+	for (int32_t w = 0; w < m->wall_count; w++)
+		if (m->wall_ident[w] == m->node[k].ident)
+			return -1;
+	return k;
 }
 
 void screen_build(Screen *s, const WorldModel *m, const Vec2 *extra, int n)

@@ -116,12 +116,14 @@ typedef struct Controller {
 	int examined_count;
 	int32_t felt[CONTROLLER_EXAMINED];  /* idents touch has shown to be objects (a letter not B) */
 	int felt_count;
-	int32_t walls[CONTROLLER_EXAMINED]; /* idents touch has shown to be wall (B): no objects */
-	int walls_count;
 	bool exploring;		/* the goal is a frontier of the unseen, not the task's */
 	bool surveying;		/* a push into a corner: going to look at the corner first */
 	bool room_look;		/* going to look at a wall that may part two rooms (roomdoubt.h) */
 	Vec2 room_look_at;	/* ... from there, kept until reached */
+	bool room_follow;	/* the start's room runs into the unseen as a passage:
+				   followed from the last look at it (roomdoubt_frontier) */
+	Vec2 room_follow_at;	/* ... that look */
+	bool room_following;	/* ... and it is the current goal, kept until reached */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];

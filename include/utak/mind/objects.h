@@ -70,7 +70,8 @@ int32_t objects_find_target(Controller *c);
  * remembered by what touch felt there: a letter other than B, an object; B, wall
  * (paper 3.4.2: a set the eye takes for an object may be a wall it did not see
  * meet the verge). Utak goes round an object only once he has felt it
- * (objects_felt; controller.c); c->walls keeps what touch found to be wall. */
+ * (objects_felt; controller.c); the world model keeps what touch found to be wall
+ * (wall_ident: the screen counts it as verge). */
 void objects_feel(Controller *c);
 bool objects_felt(const Controller *c, int32_t k);
 

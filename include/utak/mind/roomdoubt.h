@@ -27,6 +27,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "utak/mind/carryroom.h"
 #include "utak/mind/controller.h"
 
 typedef enum RoomDoubt {
@@ -38,6 +39,11 @@ typedef enum RoomDoubt {
 /* The side of the coarsest cell of the retina, in squares (4 x 4 in the periphery):
  * how far a face seen so can lie from where it reads. */
 #define ROOMDOUBT_COARSE_CELL 4
+
+/* How near a square must be for one impression to show it whatever Utak's heading:
+ * the retina spans 32 squares, centred on him (its inscribed circle has radius 16),
+ * less a coarse cell for the squares at its rim that a peripheral cell shares. */
+#define ROOMDOUBT_VIEW 12
 
 /* roomdoubt_check(c, dist, p, goal): whether the model can tell that point p lies in
  * the start's room (the rule above) on c->screen; dist the steps from Utak over the
@@ -86,5 +92,49 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
  * ROOMDOUBT_STUCK when none is left to look at. COMPLEXITY: O(w h) a room map of
  * the screen, O(w h) for each door. */
 RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal);
+
+/* A passage at most this wide (the verdict's widest leg of a corridor, carryroom.h,
+ * and the eye's square of slack) that runs into the unseen may turn there. */
+#define ROOMDOUBT_PASSAGE (CARRYROOM_LEG_WIDTH + CARRYROOM_EYE_SLACK)
+/* How far from the last look at a passage the unseen beside the room is still its
+ * continuation: twice the view, the passage's next look and the one after. */
+#define ROOMDOUBT_FOLLOW (2 * ROOMDOUBT_VIEW)
+
+/* roomdoubt_frontier(c, dist, toward, goal): at a corner Utak would claim, whether
+ * the start's room (by the verdict's rule on the model, carryroom_merge) runs into
+ * the unseen as a PASSAGE: a square never seen 4-adjacent to a cell of the room at
+ * most ROOMDOUBT_PASSAGE wide across (its shorter run along x and y between walls
+ * seen, the unseen counted as space; unbounded where no wall is seen). A corridor that goes on beyond the eye's reach may turn toward the corner
+ * (paper 2.3's "around the corner"), and no bound on the unseen rules that out;
+ * seen from its dead end, with the far part read coarsely, it looks closed. The
+ * edge of the seen across an open room is not asked for, nor a passage of a room
+ * that meets the unseen wide too (an open room seen in part, with a gap between
+ * a wall and a blob not yet resolved at its edge): that would mean sweeping every
+ * room whole before any corner, a cost Utak does not pay (a doubt left, README).
+ * So the room must meet the unseen only through passages. A passage is FOLLOWED: with `follow`
+ * (the last look taken at one, controller.h), every square never seen beside the
+ * room within ROOMDOUBT_FOLLOW of it is asked for too, since where a passage turns
+ * or opens out its walls are not yet seen and it reads wide.
+ * If so, *goal is a seen cell of the room, reachable (dist), within ROOMDOUBT_VIEW
+ * of such a square (one impression from there shows it): of those, the least by
+ * steps from Utak less distance from `toward` (the corner aimed at), so that the
+ * room is swept from its far side toward the corner and the looks near the
+ * corner fall on the way. A square within ROOMDOUBT_VIEW of a visited point stays unseen
+ * however near he comes (beyond the screen's margin): it is not looked for again;
+ * ROOMDOUBT_STUCK when only such squares are left. COMPLEXITY: O(w h) a room map of
+ * the screen, O(F ROOMDOUBT_VIEW^2) for F unseen squares beside the room. */
+RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 toward, const Vec2 *follow, Vec2 *goal);
+
+/* roomdoubt_felt(c, dist, goal): for "go next-room" when the model shows no door out
+ * of the start's room: whether an object node not yet felt, taken for wall, would
+ * part the start's room from another by the verdict's door rule (carryroom_merge).
+ * An occupied set apart from the verge reads as an object, and objects are space
+ * to rooms; but a free-standing stretch of wall between two doors is such a set
+ * too, and only touch tells them apart (paper 3.4.2: an object's letter is not B;
+ * objects_feel keeps the walls, screen.c counts them as verge). If so, *goal is the
+ * reachable cell beside such a node nearest Utak by steps, not yet reached
+ * (goals_beside); ROOMDOUBT_STUCK when none can be reached. COMPLEXITY: a room map
+ * of the screen for each object node. */
+RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
 
 #endif

@@ -89,6 +89,7 @@ enum {
 	WORLDMODEL_DISPARITY_RADIUS = 3, /* positions tried around the predicted one */
 	WORLDMODEL_MIN_COMPARED = 24,    /* cells a position must be judged on to count */
 	WORLDMODEL_HELD_MAX = 1024,      /* squares of a held object the model can carry */
+	WORLDMODEL_WALLS = 64,           /* object nodes touch showed to be wall, kept */
 };
 
 /* Resolutions, finest last, so that a larger number is finer. */
@@ -190,6 +191,11 @@ typedef struct WorldModel {
 	/* The box of the held offsets when the object was taken (or last turned): the
 	 * set may regrow within it, and one square beyond (wm_regrow_held). */
 	int32_t held_x0, held_y0, held_x1, held_y1;
+	/* Idents of object nodes touch has shown to be wall (colour B, paper 3.4.2: an
+	 * occupied set apart from the verge may be a free-standing stretch of wall):
+	 * the screen counts their squares as verge (screen.c), rooms with them. */
+	int32_t wall_ident[WORLDMODEL_WALLS];
+	int32_t wall_count;
 	/* The derived tree (paper 3.3): arrays linked by index. */
 	ModelNode *node;
 	int32_t node_count, node_cap;
