@@ -308,6 +308,9 @@ static void arrive(Controller *c)
 					c->phase = PHASE_FAILED;
 					snprintf(c->why, sizeof c->why, "Utak doubts he went round the %s: %s",
 						 task_shape_name(c->task.shape), doubt);
+				} else if (round_home_doubt(c, doubt, sizeof doubt)) {
+					c->phase = PHASE_FAILED;
+					snprintf(c->why, sizeof c->why, "Utak doubts he is back where he began: %s", doubt);
 				} else
 					c->phase = PHASE_DONE;
 			}
@@ -519,6 +522,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
 	worldmodel_accommodate(&c->model, cmd, imp);
+	if (round_recognise_home(c))
+		c->model.report.corrected = true; /* placed by the first impression: re-plan */
 	path_push(&c->trail, c->model.utak);
 	objects_feel(c);
 	int32_t seen = worldmodel_known_squares(&c->model);

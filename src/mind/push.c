@@ -8,7 +8,10 @@
  * to look at the corner (surveying, controller.c), and at the end seats the object
  * (PHASE_SEAT): one-square pushes along each axis until one makes no headway, so
  * that the walls, not the eye's estimate of them, place it. Squares a move or push
- * bumped into are remembered as blocked (a touch of a kind). The corner is claimed
+ * bumped into are remembered as blocked (a touch of a kind), but not the squares
+ * of a pushed object's edge the eye has seen exactly floor: under noisy motion
+ * (paper 3.5) the object drifts a fraction of a square off the grid and its corner
+ * catches on a neighbour the model already has. The corner is claimed
  * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
  * (push_seat_finish); the survey does not yet make (i)'s looks. */
 #include "utak/mind/push.h"
@@ -47,7 +50,14 @@ void push_bump(Controller *c, const MotorCommand *cmd)
 		bool inside = tx == 0 && ty == 0;
 		for (int32_t j = 0; j < n && !inside; j++)
 			inside = c->model.held_dx[j] == tx && c->model.held_dy[j] == ty;
-		if (!inside && c->bumped_count < CONTROLLER_MAX_BUMPED) {
+		/* A square the eye has seen exactly floor (a cell of one or four squares
+		 * at level 0) stopped nothing: the contact was a fraction of a square
+		 * off the grid, where the object, carried off it by noisy motion (paper
+		 * 3.5), met a neighbour the model already has. Marking it would close
+		 * a passage the eye sees open. */
+		Evidence e = worldmodel_evidence(&c->model, ux + tx, uy + ty);
+		bool floor_seen = k >= 0 && e.res >= WORLDMODEL_RES_INTERMEDIATE && e.p <= 0.1f;
+		if (!inside && !floor_seen && c->bumped_count < CONTROLLER_MAX_BUMPED) {
 			c->bumped_x[c->bumped_count] = ux + tx;
 			c->bumped_y[c->bumped_count++] = uy + ty;
 		}

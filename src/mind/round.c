@@ -15,10 +15,19 @@
  * again would show nothing new. Then, as paper 3.3 has it, a hypothesis is confirmed
  * by seeing it closer: when the loop closes (or, failing that, home), Utak goes and
  * looks at the parts unseen (round_look), then home (round_home), and the loop
- * already walked is judged by its winding. */
+ * already walked is judged by its winding.
+ *
+ * Home under noisy motion (paper 3.5, uncertainty (2)): the disparity places Utak
+ * against a model his own errors have shifted, and across open floor or along a
+ * wall nothing places him at all. Near the start his first impression, taken where
+ * he knew where he stood, corrects him (round_recognise_home); home, he claims the
+ * task only when he may be no more than CONTROLLER_HOME_SD off on each axis
+ * (round_home_doubt). */
 #include "utak/mind/round.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "utak/base/eye.h"
 #include "utak/mind/goals.h"
@@ -183,4 +192,59 @@ bool round_unconfirmed(Controller *c)
 {
 	int32_t k = objects_find_target(c);
 	return k >= 0 && !objects_read(c, k).confirmed;
+}
+
+/* round_home_leg(c): Utak is on the loop's leg home. */
+static bool round_home_leg(const Controller *c)
+{
+	return c->task.kind == TASK_GO_ROUND && c->round_count > 0 && c->round_next == c->round_count - 1 &&
+	       goals_distance(c->round[c->round_next], c->start) < CONTROLLER_ARRIVED;
+}
+
+/* round_recognise_home(c): paper 3.5's fallback, recognition by features. With a
+ * noisy motion (uncertainty (2)) the disparity places Utak against a model his own
+ * errors have shifted: across open floor, or along a wall, nothing corrects them,
+ * and the belief drifts a square or two (the model with it). His first impression
+ * was taken where he knew exactly where he stood: on the leg home, within
+ * WORLDMODEL_DISPARITY_RADIUS of the start, the square where it best predicts what
+ * he sees now is where he is (worldmodel_recognise_first), and the leg goes on from
+ * there. In a world that does not move about him, exact motion leaves the belief
+ * where it is. */
+bool round_recognise_home(Controller *c)
+{
+	if (!round_home_leg(c) || c->round_homed >= CONTROLLER_HOME_FIXES)
+		return false;
+	int32_t x, y, sx = (int32_t)floor(c->start.x), sy = (int32_t)floor(c->start.y);
+	worldmodel_utak_square(&c->model, &x, &y);
+	if (abs(x - sx) > WORLDMODEL_DISPARITY_RADIUS || abs(y - sy) > WORLDMODEL_DISPARITY_RADIUS)
+		return false;
+	int32_t bx = x, by = y;
+	bool placed[2];
+	if (!worldmodel_recognise_first(&c->model, &c->impression, &bx, &by, placed) || (bx == x && by == y))
+		return false;
+	c->round_homed++;
+	c->model.utak = vec2_add(c->model.utak, vec2(bx - x, by - y));
+	return true;
+}
+
+bool round_home_doubt(const Controller *c, char *why, size_t size)
+{
+	double e = worldmodel_motion_error(&c->model);
+	if (e <= 0)
+		return false; /* motion has looked exact: the belief is as good as the model */
+	int32_t x, y;
+	worldmodel_utak_square(&c->model, &x, &y);
+	bool placed[2] = {false, false};
+	worldmodel_recognise_first(&c->model, &c->impression, &x, &y, placed);
+	double sd[2];
+	for (int a = 0; a < 2; a++)
+		sd[a] = placed[a] ? 0 : e * sqrt(c->model.unplaced[a]);
+	int a = sd[1] > sd[0];
+	if (sd[a] <= CONTROLLER_HOME_SD)
+		return false;
+	snprintf(why, size,
+		 "motion errs by about %.2f squares a square, and nothing seen since his last moves places him %s: "
+		 "he may be %.1f off",
+		 e, a ? "ahead or behind" : "left or right", sd[a]);
+	return true;
 }

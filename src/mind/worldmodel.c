@@ -23,6 +23,12 @@
  * prediction, wins if it beats the prediction by WORLDMODEL_DISPARITY_MARGIN.
  * Sliding along a straight wall changes nothing the eye sees, so along a wall
  * the belief can only be as good as these ties.
+ * Motion's error (paper 3.5, uncertainty (2); worldmodel_motion_error): the
+ * corrections no halt explains, over the lengths commanded, estimate its rate; and
+ * for each axis the moves since an impression last placed Utak (a shift of one
+ * square either way would have matched worse by the margin) say how far it may
+ * have carried him unseen. The first impression, taken where he knew where he
+ * stood, can place him again near his first square (worldmodel_recognise_first).
  * The tree (paper 3.3, 3.4.3) is derived from the evidence after every impression:
  * modeltree.c.
  *
@@ -687,6 +693,141 @@ static void wm_carry(WorldModel *m, Vec2 from, Vec2 to, double deg)
 	m->held_count = n;
 }
 
+/* wm_placed(s, x, y, dx, dy, score): the impression places Utak against a shift
+ * from believed square (x, y), of measure score, by (dx, dy): there he could not
+ * stand, or the model would match it worse by WORLDMODEL_DISPARITY_MARGIN, or
+ * could not judge it. */
+static bool wm_placed(WmSearch *s, int32_t x, int32_t y, int32_t dx, int32_t dy, double score)
+{
+	Evidence e = worldmodel_evidence(s->m, x + dx, y + dy);
+	if (e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF)
+		return true;
+	int32_t compared;
+	double other = s->held ? wm_score_holding(s->m, x + dx, y + dy, s->held, s->under, s->imp, &compared)
+	                       : wm_score(s->m, x + dx, y + dy, s->imp, &compared);
+	return compared < WORLDMODEL_MIN_COMPARED || other >= score + WORLDMODEL_DISPARITY_MARGIN;
+}
+
+/* wm_drift(m, s, cmd, corrected): after a move or push, the evidence of motion's
+ * error (worldmodel_motion_error): the correction's part no halt explains (a halt
+ * ends the move short on its line: so the part across the line, and the part past
+ * its end), and the squared length commanded. */
+static void wm_drift(WorldModel *m, WmSearch *s, const MotorCommand *cmd, bool corrected)
+{
+	if (cmd->kind != MOTOR_MOVE && cmd->kind != MOTOR_PUSH)
+		return;
+	double len = hypot(cmd->dx, cmd->dy);
+	if (len <= 0 || (cmd->kind == MOTOR_PUSH && !m->holding))
+		return;
+	double cx = corrected ? s->bx - s->px : 0, cy = corrected ? s->by - s->py : 0;
+	double along = (cx * cmd->dx + cy * cmd->dy) / len, across = (cx * cmd->dy - cy * cmd->dx) / len;
+	m->drift_sq += across * across + (along > 0 ? along * along : 0);
+	m->drift_len_sq += len * len;
+	int32_t x = corrected ? s->bx : s->px, y = corrected ? s->by : s->py, compared;
+	double score = s->held ? wm_score_holding(m, x, y, s->held, s->under, s->imp, &compared)
+	                       : wm_score(m, x, y, s->imp, &compared);
+	for (int a = 0; a < 2; a++) {
+		m->unplaced[a] += len * len;
+		if (wm_placed(s, x, y, a == 0, a == 1, score) && wm_placed(s, x, y, -(a == 0), -(a == 1), score))
+			m->unplaced[a] = 0;
+	}
+}
+
+double worldmodel_motion_error(const WorldModel *m)
+{
+	return m->drift_len_sq > 0 ? sqrt(m->drift_sq / m->drift_len_sq) : 0;
+}
+
+/* wm_first_square(m, x, y): what the first impression showed of square (x, y): 1
+ * occupied, 0 floor (a cell empty or full: a 4 x 4 cell's level 0 or 7 allows one
+ * square the other way, the rounding worldmodel_predict accepts too), -1 unknown.
+ * Utak's own first square is floor. */
+static int wm_first_square(const WorldModel *m, int32_t x, int32_t y)
+{
+	if (x == 0 && y == 0)
+		return 0;
+	int32_t i = eye_cell_at(x, y);
+	if (i < 0)
+		return -1;
+	int level = m->first.level[i];
+	return level == 0 ? 0 : level == EYE_MAX_LEVEL ? 1 : -1;
+}
+
+/* wm_first_score(m, x, y, imp, &compared): wm_score with the first impression in
+ * place of the model. */
+static double wm_first_score(const WorldModel *m, int32_t x, int32_t y, const Impression *imp, int32_t *compared)
+{
+	int32_t utak_cell = eye_cell_at(0, 0), n = 0;
+	double sum = 0;
+	for (int32_t i = 0; i < RETINA_CELLS; i++) {
+		if (i == utak_cell)
+			continue;
+		EyeCell c = eye_cell(i);
+		int occupied = 0;
+		bool ok = true;
+		for (int dy = 0; dy < c.size && ok; dy++)
+			for (int dx = 0; dx < c.size && ok; dx++) {
+				int v = wm_first_square(m, x + c.ox + dx, y + c.oy + dy);
+				ok = v >= 0;
+				occupied += v == 1;
+			}
+		if (ok) {
+			sum += abs(eye_level(occupied, c.size * c.size) - (int)imp->level[i]) / (double)EYE_MAX_LEVEL;
+			n++;
+		}
+	}
+	*compared = n;
+	double cells = RETINA_CELLS - 1;
+	return (sum + WM_UNKNOWN_COST * (cells - n)) / cells;
+}
+
+bool worldmodel_recognise_first(const WorldModel *m, const Impression *imp, int32_t *x, int32_t *y,
+                                bool placed[2])
+{
+	enum { R = WORLDMODEL_DISPARITY_RADIUS, SIDE = 2 * R + 3 };
+	/* Scores of the candidates and one square round them, INFINITY where none. */
+	double score[SIDE][SIDE];
+	int32_t bx = *x, by = *y;
+	double best = INFINITY;
+	for (int32_t j = 0; j < SIDE; j++)
+		for (int32_t i = 0; i < SIDE; i++) {
+			int32_t cx = *x + i - R - 1, cy = *y + j - R - 1, compared;
+			double v = wm_first_score(m, cx, cy, imp, &compared);
+			/* Not where the first impression showed something: he cannot stand there. */
+			score[j][i] = compared >= WORLDMODEL_MIN_COMPARED && wm_first_square(m, cx, cy) != 1 ? v : INFINITY;
+			bool inner = i >= 1 && i < SIDE - 1 && j >= 1 && j < SIDE - 1;
+			/* Ties to the nearest to (*x, *y): a cost far below a cell's. */
+			double key = score[j][i] + WM_DISTANCE_COST * hypot(cx - *x, cy - *y);
+			if (inner && key < best) {
+				best = key;
+				bx = cx;
+				by = cy;
+			}
+		}
+	if (best == INFINITY)
+		return false;
+	/* As the disparity does: (*x, *y) stands unless another does better by the margin. */
+	if (score[R + 1][R + 1] < INFINITY && score[by - *y + R + 1][bx - *x + R + 1] + WORLDMODEL_DISPARITY_MARGIN >=
+	                                          score[R + 1][R + 1]) {
+		bx = *x;
+		by = *y;
+	}
+	/* Placed on an axis: every square tried off the best one along it matches worse
+	 * by the margin (a square off on both axes would not do: a shift along one
+	 * can mimic one along the other). */
+	int32_t bi = bx - *x + R + 1, bj = by - *y + R + 1;
+	double at = score[bj][bi] + WORLDMODEL_DISPARITY_MARGIN;
+	placed[0] = placed[1] = true;
+	for (int32_t j = 0; j < SIDE; j++)
+		for (int32_t i = 0; i < SIDE; i++) {
+			placed[0] &= i == bi || score[j][i] >= at;
+			placed[1] &= j == bj || score[j][i] >= at;
+		}
+	*x = bx;
+	*y = by;
+	return true;
+}
+
 /* wm_seen_window(m): counts the squares seen and their rectangle (WorldModel's seen_
  * fields): one scan of the tiles allocated, after every change to the evidence. */
 static void wm_seen_window(WorldModel *m)
@@ -756,7 +897,7 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp)
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
 	wm_observe(m, ux, uy, imp);
-	m->last = *imp;
+	m->last = m->first = *imp;
 	m->impressions = 1;
 	wm_seen_window(m);
 	modeltree_derive(m);
@@ -848,6 +989,7 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		rep->best_mismatch = rep->mismatch;
 	}
 	rep->believed = m->utak;
+	wm_drift(m, &s, cmd, rep->corrected);
 
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);

@@ -54,6 +54,13 @@
  * (the judge's test); else Utak goes round it again, at most this many more times. */
 #define CONTROLLER_ROUND_TURNS 0.99
 #define CONTROLLER_ROUND_LOOPS 2
+/* Going home, Utak's position may be corrected by what his first impression showed
+ * at most this many times (round_recognise_home): each correction is a re-plan. */
+#define CONTROLLER_HOME_FIXES 4
+/* ... and he doubts he is home when his position may be off by this much, one
+ * standard deviation of motion's error on an axis (round_home_doubt): a third of
+ * the judge's JUDGE_HOME (1.5), which a Gaussian error passes about once in 100. */
+#define CONTROLLER_HOME_SD 0.5
 /* Frontier goals remembered as reached (older ones are forgotten first). */
 #define CONTROLLER_MAX_VISITED 256
 /* Squares remembered as bumped into (later ones are dropped). */
@@ -141,6 +148,7 @@ typedef struct Controller {
 	 * looks at the parts unseen (round_look), then goes home, once a task. */
 	bool round_looking, round_looked;
 	int32_t round_ident;	/* the object they go round (its model ident) */
+	int round_homed;	/* positions corrected by the first impression, going home */
 	Path trail;		/* where Utak believed he stood, the start and after each cycle */
 	Box round_rect;		/* and its rectangle when they were laid out */
 	/* Bookkeeping for the trace. */

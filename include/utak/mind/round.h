@@ -26,4 +26,11 @@ double round_believed_turns(const Controller *c, int32_t k);
 /* round_stale(c): the loop was laid out round what is no longer the task's object. */
 bool round_stale(Controller *c);
 
+/* round_recognise_home(c): on the leg home, near the start, Utak's position corrected
+ * by what his first impression showed; true when it was (the belief moved). */
+bool round_recognise_home(Controller *c);
+/* round_home_doubt(c, why, size): home, by his belief, but motion has erred and
+ * what he sees does not place him where he began: true, and why, when he doubts it. */
+bool round_home_doubt(const Controller *c, char *why, size_t size);
+
 #endif

@@ -212,6 +212,18 @@ typedef struct WorldModel {
 	 * y0..y1, inclusive; meaningless when seen_count is 0). Kept by every change
 	 * to the grid, so that no reader has to scan the whole evidence window. */
 	int32_t seen_count, seen_x0, seen_y0, seen_x1, seen_y1;
+	/* Motion's error as the disparity shows it (paper 3.5, uncertainty (2)): the
+	 * squared corrections no halted move explains (across the commanded line, or
+	 * past its end), and the squared lengths of all the moves and pushes
+	 * commanded (worldmodel_motion_error). */
+	double drift_sq, drift_len_sq;
+	/* The squared lengths moved since the last impression that placed Utak on x,
+	 * on y: one whose disparity measure a shift of one square along the axis,
+	 * either way, would have made worse by WORLDMODEL_DISPARITY_MARGIN. */
+	double unplaced[2];
+	/* The first impression, taken where Utak's position is known exactly: his
+	 * first square, (0, 0) (worldmodel_recognise_first). */
+	Impression first;
 } WorldModel;
 
 /* worldmodel_init(m): the default world model (paper 3.4.3): Utak at the centre of
@@ -239,6 +251,30 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
  * evidence is recorded there and the tree derived again. The result is in
  * m->report. */
 void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impression *imp);
+
+/* worldmodel_motion_error(m): how far motion errs, in squares per square moved on
+ * each axis, as the disparity has shown it (paper 3.5, uncertainty (2)): the root
+ * of the squared corrections no halt explains over the squared lengths commanded
+ * (a Gaussian error per move adds sigma^2 L^2 of variance on each axis). 0 while
+ * there have been none: motion looks exact. Utak is never told the error. */
+double worldmodel_motion_error(const WorldModel *m);
+
+/* worldmodel_recognise_first(m, imp, &x, &y, placed): where, within
+ * WORLDMODEL_DISPARITY_RADIUS of square (*x, *y), the first impression best
+ * predicts imp (paper 3.5's fallback, recognition by features: the first
+ * impression was taken where Utak's position is known exactly, so it places him
+ * however far his belief has drifted since, while he is near enough to his first
+ * square to see what it showed, and nothing seen has moved). It predicts a cell
+ * where every square under it lay in a cell of the first impression that was
+ * empty or full; (*x, *y) stands unless another does better by
+ * WORLDMODEL_DISPARITY_MARGIN. On return (*x, *y) is the best square, and
+ * placed[0], placed[1] say whether every square tried (one beyond the radius too)
+ * with another x, another y, matched worse by the margin (or could not be judged):
+ * the first impression places him on that axis. False, (*x, *y) and
+ * placed untouched, when no candidate can be judged on WORLDMODEL_MIN_COMPARED
+ * cells. */
+bool worldmodel_recognise_first(const WorldModel *m, const Impression *imp, int32_t *x, int32_t *y,
+                                bool placed[2]);
 
 /* worldmodel_predict(m, x, y, pred, known): the impression the model predicts with
  * Utak on square (x, y); known[i] false where cell i's squares are not all known
