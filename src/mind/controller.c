@@ -272,7 +272,10 @@ static void arrive(Controller *c)
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {
 			char doubt[160];
-			if (objects_doubt(c, objects_find_target(c), doubt, sizeof doubt)) {
+			if (objects_misread(c, objects_find_target(c)) && goals_more_to_see(c)) {
+				/* Beside one he would doubt, seen closely only now: the next
+				 * goal is a look further for one beyond doubt (goals.c). */
+			} else if (objects_doubt(c, objects_find_target(c), doubt, sizeof doubt)) {
 				c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
 				snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
 					 task_shape_name(c->task.shape), doubt);
@@ -347,7 +350,9 @@ static void arrive(Controller *c)
 			c->seat_axis = c->seat_pushes = 0;
 		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
-		else if (objects_touching_target(c)) {
+		else if (objects_touching_target(c) && objects_misread(c, objects_find_target(c)) && goals_more_to_see(c)) {
+			/* Beside one he would doubt: a look further first (goals.c). */
+		} else if (objects_touching_target(c)) {
 			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
 			if (!objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt))
 				c->doubt[0] = '\0';

@@ -731,6 +731,18 @@ void goals_choose(Controller *c, GoalResult *out)
 				out->exploring = out->found = true;
 				break;
 			}
+			/* A target the fovea has shown misread (objects_misread: read
+			 * between a square and a brick, or fitted by no rectangle exactly)
+			 * may be no object of the task's shape: while anything reachable
+			 * is unseen, or an object not seen whole is left, Utak looks there
+			 * first for one beyond doubt (which objects_find_target then
+			 * prefers); only when nothing is left does he go to the doubtful
+			 * one, and says what he doubts. */
+			if (k >= 0 && objects_misread(c, k) &&
+			    (unexamined(c, k, false, dist, &out->goal) || goals_frontier(c, dist, &out->goal))) {
+				out->exploring = out->found = true;
+				break;
+			}
 			/* A hypothesis is looked at closer first: beside the part of it the
 			 * fovea has not yet seen. */
 			if (k >= 0 && objects_unconfirmed_square(c, k, &ux, &uy) &&

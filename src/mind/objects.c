@@ -9,8 +9,10 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/shapefit.h"
 
 static const char *doubt_own(const ObjectReading *o);
+static bool inexact(const ObjectReading *o);
 static bool listed(const int32_t *list, int n, int32_t ident);
 
 /* Scale (shape.h) of each resolution: the side of its cells. */
@@ -125,7 +127,11 @@ int32_t objects_find_target(Controller *c)
 			best_d = d;
 			best = k;
 		}
-		if (o.shape == c->task.shape && o.confirmed && !doubt_own(&o) && d < sure_d) {
+		/* Sure: read the shape beyond doubt from squares all seen in the
+		 * fovea, now or before (examined: a later look from afar may have
+		 * coarsened them; going to it, Utak confirms it again before any
+		 * claim, objects_touching_target). */
+		if (o.shape == c->task.shape && (o.confirmed || (o.examined && !o.guessed)) && !doubt_own(&o) && d < sure_d) {
 			sure_d = d;
 			best_sure = k;
 		}
@@ -214,6 +220,13 @@ bool objects_touching_target(Controller *c)
 	return o.confirmed && o.shape == c->task.shape;
 }
 
+/* inexact(o): o is read a square or a brick, and no rectangle the fit found covers
+ * exactly its squares (objects.h, INEXACT). */
+static bool inexact(const ObjectReading *o)
+{
+	return (o->shape == SHAPE_SQUARE || o->shape == SHAPE_BRICK) && o->reading.fit_error[FIT_RECT] > 0;
+}
+
 /* doubt_own(o, shape): objects_doubt's measures on one reading (NULL: none). */
 static const char *doubt_own(const ObjectReading *o)
 {
@@ -223,7 +236,19 @@ static const char *doubt_own(const ObjectReading *o)
 		return "gap";
 	if (o->shape == SHAPE_BRICK && o->reading.aspect < SHAPE_BRICK_ASPECT)
 		return "gap";
+	if (inexact(o))
+		return "inexact";
 	return NULL;
+}
+
+bool objects_misread(Controller *c, int32_t k)
+{
+	ObjectReading o = objects_read(c, k);
+	const char *why = o.confirmed ? doubt_own(&o) : NULL;
+	/* doubt_own names a crumb first: the other measures asked apart. */
+	bool gap = (o.shape == SHAPE_SQUARE && o.reading.aspect > SHAPE_SQUARE_ASPECT) ||
+		   (o.shape == SHAPE_BRICK && o.reading.aspect < SHAPE_BRICK_ASPECT);
+	return why && (gap || inexact(&o));
 }
 
 bool objects_doubtful(Controller *c, int32_t k)
@@ -232,10 +257,54 @@ bool objects_doubtful(Controller *c, int32_t k)
 	return o.confirmed && doubt_own(&o);
 }
 
+/* other_frame(c, k, &aspect): node k's squares, read again in each of the 8 frames
+ * a quarter turn and a mirror make of the model's, fit exactly (no square off) a
+ * rectangle whose proportions are not the task's shape's: the fits start from the
+ * hull's measures and find one rectangle of many that cover the same squares, and
+ * which one depends on how the squares are turned (objects.h, OTHER FRAME). */
+static bool other_frame(const Controller *c, int32_t k, double *aspect)
+{
+	const ModelNode *n = &c->model.node[k];
+	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
+	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
+	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
+	if (cap <= 0 || (c->task.shape != SHAPE_SQUARE && c->task.shape != SHAPE_BRICK))
+		return false;
+	int32_t *xs = util_alloc((size_t)cap, sizeof *xs), *ys = util_alloc((size_t)cap, sizeof *ys), count = 0;
+	int32_t *tx = util_alloc((size_t)cap, sizeof *tx), *ty = util_alloc((size_t)cap, sizeof *ty);
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++)
+			if (worldmodel_node_at(&c->model, x, y) == k) {
+				xs[count] = x - x0;
+				ys[count++] = y - y0;
+			}
+	bool other = false;
+	for (int f = 1; f < 8 && !other; f++) { /* frame 0 is the model's own, read already */
+		for (int32_t i = 0; i < count; i++) {
+			int32_t a = f & 4 ? ys[i] : xs[i], b = f & 4 ? xs[i] : ys[i];
+			tx[i] = f & 1 ? -a : a;
+			ty[i] = f & 2 ? -b : b;
+		}
+		ShapeReading r;
+		shape_read(tx, ty, count, 1, &r);
+		bool exact = r.fit_error[FIT_RECT] == 0 && r.width >= SHAPE_MIN_SIDE;
+		if (exact && (c->task.shape == SHAPE_SQUARE ? r.aspect > SHAPE_SQUARE_ASPECT : r.aspect < SHAPE_BRICK_ASPECT)) {
+			other = true;
+			*aspect = r.aspect;
+		}
+	}
+	free(xs);
+	free(ys);
+	free(tx);
+	free(ty);
+	return other;
+}
+
 bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 {
 	ObjectReading o = objects_read(c, k);
 	const char *shape = task_shape_name(c->task.shape);
+	double aspect = 0;
 	/* Another of the shape nearer the start, not sure or not yet seen whole,
 	 * may be the one the task means. */
 	double d = goals_distance(o.centroid, c->start);
@@ -246,7 +315,7 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 		if (goals_distance(q.centroid, c->start) >= d)
 			continue;
 		const Box *r = &c->model.node[j].rect;
-		bool unnamed_crumb = q.shape == SHAPE_NONE && q.squares <= OBJECTS_CRUMB &&
+		bool unnamed_crumb = q.shape == SHAPE_NONE && q.squares >= OBJECTS_CRUMB_LEAST && q.squares <= OBJECTS_CRUMB &&
 				     r->hi.x - r->lo.x >= 3 && r->hi.y - r->lo.y >= 3;
 		if (!q.examined || unnamed_crumb || (q.shape == c->task.shape && doubt_own(&q))) {
 			snprintf(why, size, "what may be another %s lies nearer the start, at (%.1f, %.1f)", shape,
@@ -265,6 +334,12 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 	else if (o.shape == SHAPE_BRICK && o.reading.aspect < SHAPE_BRICK_ASPECT)
 		snprintf(why, size, "the %s reads %.2f times as long as wide, under a brick's %.1f", shape,
 			 o.reading.aspect, SHAPE_BRICK_ASPECT);
+	else if (inexact(&o))
+		snprintf(why, size, "no rectangle covers the %s's %d squares exactly (the best %d off): it may have more corners",
+			 shape, (int)o.squares, (int)o.reading.fit_error[FIT_RECT]);
+	else if (o.confirmed && o.shape == c->task.shape && other_frame(c, k, &aspect))
+		snprintf(why, size, "a rectangle %.2f times as long as wide covers the %s's %d squares exactly too", aspect,
+			 shape, (int)o.squares);
 	else
 		return false;
 	return true;

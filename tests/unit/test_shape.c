@@ -11,6 +11,7 @@
 
 #include "test.h"
 #include "utak/base/geom.h"
+#include "utak/mind/objects.h"
 #include "utak/mind/shape.h"
 
 enum { FIELD = 64, MOST_SQUARES = FIELD * FIELD };
@@ -207,6 +208,70 @@ TEST_CASE(min_width_bounds_every_width)
 		}
 }
 
+/* project_box(l, w, deg, cx, cy, &w_span, &h_span): sq_* set to the squares of an
+ * l x w rectangle turned deg about its centre (cx, cy), by geom_project (the
+ * TABLE's rule); the spans of the squares across x and y. */
+static void project_box(double l, double w, double deg, double cx, double cy, int32_t *xs, int32_t *ys)
+{
+	double c, s;
+	geom_cos_sin(deg, &c, &s);
+	const double d[4][2] = {{-l / 2, -w / 2}, {l / 2, -w / 2}, {l / 2, w / 2}, {-l / 2, w / 2}};
+	Polygon p = {.count = 4};
+	for (int k = 0; k < 4; k++)
+		p.v[k] = vec2(cx + c * d[k][0] - s * d[k][1], cy + s * d[k][0] + c * d[k][1]);
+	sq_n = 0;
+	geom_project(&p, FIELD, FIELD, span, NULL);
+	int32_t x0 = FIELD, x1 = -1, y0 = FIELD, y1 = -1;
+	for (int32_t i = 0; i < sq_n; i++) {
+		x0 = sq_x[i] < x0 ? sq_x[i] : x0;
+		x1 = sq_x[i] > x1 ? sq_x[i] : x1;
+		y0 = sq_y[i] < y0 ? sq_y[i] : y0;
+		y1 = sq_y[i] > y1 ? sq_y[i] : y1;
+	}
+	*xs = x1 - x0 + 1;
+	*ys = y1 - y0 + 1;
+}
+
+/* A 4 x 3 block of squares (what a 3 x 2 brick covers off the grid's lines) is
+ * also exactly what a 3 x 1.1 rectangle, under 2 wide, and a 2.5 square cover:
+ * min_width's 1 is no loose bound, and no reading can name it (objects_doubt's
+ * crumb). */
+TEST_CASE(block_4_by_3_is_ambiguous)
+{
+	static const double boxes[3][4] = {{3, 1.1, 10.5 + 1.5, 10.95 + 0.55}, /* under 2 wide */
+					   {2.5, 2.5, 10.75 + 1.25, 10.25 + 1.25}, /* a square */
+					   {3, 2, 10.5 + 1.5, 10.5 + 1}};           /* a brick */
+	for (int b = 0; b < 3; b++) {
+		int32_t xs, ys;
+		project_box(boxes[b][0], boxes[b][1], 0, boxes[b][2], boxes[b][3], &xs, &ys);
+		TEST_CHECK(sq_n == 12 && xs == 4 && ys == 3);
+		ShapeReading r;
+		shape_read(sq_x, sq_y, sq_n, 1, &r);
+		TEST_CHECK(fabs(r.min_width - 1) < 1e-9);
+	}
+}
+
+/* OBJECTS_CRUMB_LEAST (objects.h): a square 2 wide or more whose squares span 3
+ * each way covers that many squares at least, and a 2 x 2 square turned covers
+ * exactly that many somewhere (so the bound is the least, not merely a bound).
+ * Every degree and twentieth of a square of offset, sides 2 and 2.4. */
+TEST_CASE(crumb_least_squares)
+{
+	int32_t least[2] = {INT32_MAX, INT32_MAX};
+	static const double sides[2] = {2.0, 2.4};
+	for (int k = 0; k < 2; k++)
+		for (int deg = 0; deg < 90; deg++)
+			for (int i = 0; i < 20; i++)
+				for (int j = 0; j < 20; j++) {
+					int32_t xs, ys;
+					project_box(sides[k], sides[k], deg, 20 + i / 20.0, 20 + j / 20.0, &xs, &ys);
+					if (xs >= 3 && ys >= 3 && sq_n < least[k])
+						least[k] = sq_n;
+				}
+	TEST_CHECK(least[0] == OBJECTS_CRUMB_LEAST);
+	TEST_CHECK(least[1] >= OBJECTS_CRUMB_LEAST);
+}
+
 int main(void)
 {
 	TEST_RUN(rectangles_at_every_angle);
@@ -214,5 +279,7 @@ int main(void)
 	TEST_RUN(unnamed_shapes_at_every_angle);
 	TEST_RUN(shape_of_coordinates);
 	TEST_RUN(min_width_bounds_every_width);
+	TEST_RUN(block_4_by_3_is_ambiguous);
+	TEST_RUN(crumb_least_squares);
 	return TEST_EXIT();
 }

@@ -105,7 +105,8 @@ bool objects_touching_target(Controller *c);
  *   start; another object nearer may be it when its squares were never all seen
  *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
  *   squares or more each way (a square two wide or more, unless its sides lie on
- *   the grid's lines, does). A crumb named another shape is taken at its name.
+ *   the grid's lines, does) and has OBJECTS_CRUMB_LEAST squares or more (such a
+ *   square covers no fewer). A crumb named another shape is taken at its name.
  *   THE NEARER UNSEEN: where floor the model knows borders unseen squares nearer
  *   the start than the object's centroid (goals_unseen_within), an object of
  *   the shape may lie there; goals.c looks at such space before going to the
@@ -113,6 +114,20 @@ bool objects_touching_target(Controller *c);
  *   THE GAP: a square is at most SHAPE_SQUARE_ASPECT long for its width, a brick at
  *   least SHAPE_BRICK_ASPECT; read between the two (shape.h names it the nearer),
  *   the object may be neither.
+ *   INEXACT: read a square or a brick, but the best rectangle the fit found
+ *   differs from the squares on some (ShapeReading.fit_error): the squares a
+ *   rectangle covers, seen in the fovea, are fitted exactly (measured: 5000 of
+ *   5000 rectangles of aspect up to 1.2, sides 2.5 to 8, at random angles and
+ *   offsets; 2992 of 3000 of aspect up to 3), and a polygon of more corners
+ *   often leaves a square in or out that no rectangle does (worldgen's pieces).
+ *   OTHER FRAME: the fit finds one rectangle of the many that may cover the
+ *   same squares; read again with the squares turned a quarter or mirrored, it
+ *   may find another, exact too, of other proportions (a 22-square set read 1.02
+ *   one way and 1.26 another): then the object may be neither a square nor a
+ *   brick. Asked only of the object claimed (8 readings). True squares of sides
+ *   3 to 7 at random angles and offsets are doubted so about 4% of the time
+ *   (measured, 23 of 571; mostly the small ones), rightly: their squares are a
+ *   rectangle's of other proportions too.
  * What it cannot tell, and no eye can at this scale: a polygon of more corners
  * whose cut corners fall within the squares of a rectangle's (a hexagon with
  * corners cut by under a square reads as the rectangle). */
@@ -121,6 +136,13 @@ bool objects_touching_target(Controller *c);
  * offsets, 14; a 1.99 square covers at most 12): an unnamed set nearer the start
  * no larger may be a square (objects_doubt). */
 #define OBJECTS_CRUMB 14
+/* The fewest squares a square two wide or more covers when they span 3 squares
+ * each way (off the grid's lines): measured, every quarter degree and hundredth
+ * of a square of offset, 8 (a 2 x 2 square turned 37 degrees); a larger square
+ * holds a concentric 2 x 2 one and covers its squares too. An unnamed set nearer
+ * the start of fewer squares (clutter.w's 7-square triangle) is no such square
+ * (tests/unit/test_shape.c checks the count against geom_project). */
+#define OBJECTS_CRUMB_LEAST 8
 /* The least width the verdicts give a name (doc/verdicts.md: a polygon narrower
  * is unnamed). A set of squares that a polygon narrower than this may cover is a
  * crumb to objects_doubt (shape.h, min_width: a bound on the width of every
@@ -128,10 +150,17 @@ bool objects_touching_target(Controller *c);
 #define OBJECTS_NAMED_WIDTH 2.0
 bool objects_doubt(Controller *c, int32_t k, char *why, size_t size);
 /* objects_doubtful(c, k): node k is seen whole and doubtful by its own measures
- * (a crumb, or in the gap): one of the shape beyond doubt goes before it as the
+ * (a crumb, in the gap, or inexact): one of the shape beyond doubt goes before it as the
  * task's object (objects_find_target), and after a loop round it Utak looks once
  * more for one (controller.c). */
 bool objects_doubtful(Controller *c, int32_t k);
+/* objects_misread(c, k): node k is seen whole and its own reading puts its name in
+ * doubt (in the gap, or inexact), not only its width (a crumb read squarely the
+ * task's shape, most often a small one of it). Before going to such a one Utak
+ * looks further, while anything is left to see, for one beyond doubt (goals.c,
+ * controller.c): a brick 3 x 2 off the grid's lines covers a 4 x 3 block, read
+ * 1.33 long for its width, and is the commonest such (perturbed clutter.w). */
+bool objects_misread(Controller *c, int32_t k);
 
 /* objects_lacks(c, k, x, y): square (x, y) is one that node k's confirmation lacks:
  * not seen in the fovea, and a square of k or a 4-neighbour of one. */
