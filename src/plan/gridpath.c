@@ -473,6 +473,8 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 
 	if (s->method == GRIDPATH_JUMP)
 		return gridpath_find_jump(s, sx + 1, sy + 1, gx + 1, gy + 1, path, length);
+	if ((int64_t)s->pw * s->ph >= GRIDPATH_MAX_CELLS)
+		return GRIDPATH_TOO_LARGE; /* the keys' proof holds below it: EXACT KEYS */
 
 	/* a step's offset in cells, and in bytes of nodes (no scaling in the loop) */
 	ptrdiff_t offset[8], node_step[8];

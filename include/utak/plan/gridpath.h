@@ -67,7 +67,14 @@ typedef enum GridPathStatus {
 	GRIDPATH_FOUND = 0,    /* a shortest path was found */
 	GRIDPATH_NO_PATH,      /* start and goal are free but not connected */
 	GRIDPATH_BAD_ENDPOINT, /* start or goal is outside the grid or blocked */
+	GRIDPATH_TOO_LARGE,    /* plain A* on a grid of GRIDPATH_MAX_CELLS or more (padded):
+	                          past what its exact integer costs cover (gridpath.c) */
 } GridPathStatus;
+
+/* Plain A*'s integer costs order paths exactly on a grid, padded by a ring of
+ * cells, of fewer cells than this (gridpath.c, EXACT KEYS); the jump search has no
+ * such bound. utak's own grids stay far below it (8192 x 4096 at most). */
+#define GRIDPATH_MAX_CELLS ((int64_t)1 << 29)
 
 /* One entry of the open list: a cell and its priority. Public only so that the
  * search state below can be allocated by the caller; treat it as opaque. */
