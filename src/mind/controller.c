@@ -190,15 +190,23 @@ static void remember(Controller *c, Vec2 p)
 		c->visited[c->visited_count++] = p;
 }
 
-/* corner_room_doubt(c): whether the model can tell that Utak's point is in the room
- * he started in (roomdoubt.h), on this cycle's screen (goals_corner_shortfall built
- * it). */
-static RoomDoubt corner_room_doubt(Controller *c)
+/* utak_reach(c): breadth-first steps from Utak's cell over this cycle's screen
+ * (goals_reach), for roomdoubt.h's checks; the caller frees. */
+static int32_t *utak_reach(const Controller *c)
 {
 	int32_t ui, uj;
 	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
 	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
 	goals_reach(&c->screen.free, ui, uj, dist);
+	return dist;
+}
+
+/* corner_room_doubt(c): whether the model can tell that Utak's point is in the room
+ * he started in (roomdoubt.h), on this cycle's screen (goals_corner_shortfall built
+ * it). */
+static RoomDoubt corner_room_doubt(Controller *c)
+{
+	int32_t *dist = utak_reach(c);
 	Vec2 look;
 	RoomDoubt d = roomdoubt_check(c, dist, c->model.utak, &look);
 	free(dist);
@@ -212,10 +220,7 @@ static RoomDoubt corner_room_doubt(Controller *c)
  * to look from. */
 static bool corner_room_look(Controller *c, RoomDoubt (*check)(const Controller *, const int32_t *, Vec2 *))
 {
-	int32_t ui, uj;
-	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
-	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
-	goals_reach(&c->screen.free, ui, uj, dist);
+	int32_t *dist = utak_reach(c);
 	bool look = check(c, dist, &c->room_look_at) == ROOMDOUBT_LOOK;
 	free(dist);
 	return look;
@@ -225,10 +230,7 @@ static bool corner_room_look(Controller *c, RoomDoubt (*check)(const Controller 
  * (roomdoubt_frontier); goals_choose then looks along it before the corner again. */
 static bool corner_frontier(Controller *c)
 {
-	int32_t ui, uj;
-	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
-	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
-	goals_reach(&c->screen.free, ui, uj, dist);
+	int32_t *dist = utak_reach(c);
 	Vec2 look;
 	bool seen_in_part = roomdoubt_frontier(c, dist, c->model.utak, c->room_follow ? &c->room_follow_at : NULL,
 					       &look) == ROOMDOUBT_LOOK;

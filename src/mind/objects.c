@@ -227,14 +227,20 @@ static bool inexact(const ObjectReading *o)
 	return (o->shape == SHAPE_SQUARE || o->shape == SHAPE_BRICK) && o->reading.fit_error[FIT_RECT] > 0;
 }
 
+/* in_gap(o): o is read a square or a brick, its proportions between a square's and
+ * a brick's (SHAPE_SQUARE_ASPECT to SHAPE_BRICK_ASPECT). */
+static bool in_gap(const ObjectReading *o)
+{
+	return (o->shape == SHAPE_SQUARE && o->reading.aspect > SHAPE_SQUARE_ASPECT) ||
+	       (o->shape == SHAPE_BRICK && o->reading.aspect < SHAPE_BRICK_ASPECT);
+}
+
 /* doubt_own(o, shape): objects_doubt's measures on one reading (NULL: none). */
 static const char *doubt_own(const ObjectReading *o)
 {
 	if (o->reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
 		return "crumb";
-	if (o->shape == SHAPE_SQUARE && o->reading.aspect > SHAPE_SQUARE_ASPECT)
-		return "gap";
-	if (o->shape == SHAPE_BRICK && o->reading.aspect < SHAPE_BRICK_ASPECT)
+	if (in_gap(o))
 		return "gap";
 	if (inexact(o))
 		return "inexact";
@@ -244,11 +250,8 @@ static const char *doubt_own(const ObjectReading *o)
 bool objects_misread(Controller *c, int32_t k)
 {
 	ObjectReading o = objects_read(c, k);
-	const char *why = o.confirmed ? doubt_own(&o) : NULL;
-	/* doubt_own names a crumb first: the other measures asked apart. */
-	bool gap = (o.shape == SHAPE_SQUARE && o.reading.aspect > SHAPE_SQUARE_ASPECT) ||
-		   (o.shape == SHAPE_BRICK && o.reading.aspect < SHAPE_BRICK_ASPECT);
-	return why && (gap || inexact(&o));
+	/* doubt_own's measures but the crumb's (a crumb may yet be a small square). */
+	return o.confirmed && (in_gap(&o) || inexact(&o));
 }
 
 bool objects_doubtful(Controller *c, int32_t k)

@@ -202,31 +202,54 @@ RoomDoubt roomdoubt_door(const Controller *c, const int32_t *dist, Vec2 *goal)
 	return verdict;
 }
 
+/* StartRooms: the rooms of this cycle's screen (goals_roommap_build), merged by the
+ * verdict's door rule where both sides are seen whole (carryroom_merge_seen), and
+ * the start's cell: what roomdoubt_beyond, _jambs and _frontier begin with. */
+typedef struct StartRooms {
+	RoomMap rm;
+	CarryRooms cr;
+	int32_t si, sj; /* the start's cell of the screen */
+} StartRooms;
+
+/* start_rooms_build(c, r): r for c's screen; false (nothing built) when the start
+ * lies off the screen. */
+static bool start_rooms_build(const Controller *c, StartRooms *r)
+{
+	if (!goals_cell_of(&c->screen, c->start, &r->si, &r->sj))
+		return false;
+	goals_roommap_build(&r->rm, &c->screen);
+	carryroom_merge_seen(&r->rm, &c->screen, &r->cr);
+	return true;
+}
+
+static void start_rooms_free(StartRooms *r)
+{
+	carryroom_free(&r->cr);
+	goals_roommap_free(&r->rm);
+}
+
 RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
-	int32_t si, sj;
-	if (!goals_cell_of(s, c->start, &si, &sj))
+	StartRooms sr;
+	if (!start_rooms_build(c, &sr))
 		return ROOMDOUBT_NONE;
-	RoomMap rm;
-	goals_roommap_build(&rm, s);
-	CarryRooms cr;
-	carryroom_merge_seen(&rm, s, &cr);
-	int32_t a = rooms_at(&rm.rooms, si, sj);
+	int32_t si = sr.si, sj = sr.sj;
+	int32_t a = rooms_at(&sr.rm.rooms, si, sj);
 	RoomDoubt verdict = ROOMDOUBT_NONE;
-	int64_t here = a >= 0 ? goals_room_corner_best(c, &rm, rooms_at(&rm.rooms, si, sj)) : INT64_MAX;
+	int64_t here = a >= 0 ? goals_room_corner_best(c, &sr.rm, a) : INT64_MAX;
 	double best = INFINITY;
-	for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count; q++) {
-		const RoomsDoor *d = &rm.rooms.doors[q];
-		int32_t ra = cr.merged[d->room_a], rb = cr.merged[d->room_b];
-		if (!cr.undecided[q] || (ra != a && rb != a))
+	for (int32_t q = 0; a >= 0 && q < sr.rm.rooms.door_count; q++) {
+		const RoomsDoor *d = &sr.rm.rooms.doors[q];
+		int32_t ra = sr.cr.merged[d->room_a], rb = sr.cr.merged[d->room_b];
+		if (!sr.cr.undecided[q] || (ra != a && rb != a))
 			continue;
 		int32_t other = ra == a ? rb : ra;
 		/* Only a side that may hold a better corner: a cell of it, or a square
 		 * never seen beside it, scores above the best of the start's room. */
 		bool better = false;
 		for (int32_t k = 0; k < s->w * s->h && !better; k++) {
-			if (rooms_at(&rm.rooms, k % s->w, k / s->w) != other)
+			if (rooms_at(&sr.rm.rooms, k % s->w, k / s->w) != other)
 				continue;
 			for (int dd = 0; dd < 5 && !better; dd++) {
 				int32_t x = k % s->w + (dd == 1) - (dd == 2), y = k / s->w + (dd == 3) - (dd == 4);
@@ -240,7 +263,7 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 		}
 		if (!better)
 			continue;
-		const RoomsRoom *r = &rm.rooms.rooms[ra == a ? d->room_b : d->room_a];
+		const RoomsRoom *r = &sr.rm.rooms.rooms[ra == a ? d->room_b : d->room_a];
 		Vec2 centre = goals_centre(s->x0 + r->x, s->y0 + r->y), near;
 		if (!goals_near(c, centre, dist, &near))
 			continue;
@@ -254,8 +277,7 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 			verdict = ROOMDOUBT_LOOK;
 		}
 	}
-	carryroom_free(&cr);
-	goals_roommap_free(&rm);
+	start_rooms_free(&sr);
 	return verdict;
 }
 
@@ -279,20 +301,17 @@ static bool jamb_wide(double peak, double c)
 RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
-	int32_t si, sj;
-	if (!goals_cell_of(s, c->start, &si, &sj))
+	StartRooms sr;
+	if (!start_rooms_build(c, &sr))
 		return ROOMDOUBT_NONE;
-	RoomMap rm;
-	goals_roommap_build(&rm, s);
-	CarryRooms cr;
-	carryroom_merge_seen(&rm, s, &cr);
-	int32_t a0 = rooms_at(&rm.rooms, si, sj), a = a0 >= 0 ? cr.merged[a0] : -1;
+	int32_t si = sr.si, sj = sr.sj;
+	int32_t a0 = rooms_at(&sr.rm.rooms, si, sj), a = a0 >= 0 ? sr.cr.merged[a0] : -1;
 	RoomDoubt verdict = ROOMDOUBT_NONE;
-	int64_t here = a0 >= 0 ? goals_room_corner_best(c, &rm, a0) : INT64_MAX;
+	int64_t here = a0 >= 0 ? goals_room_corner_best(c, &sr.rm, a0) : INT64_MAX;
 	double best = INFINITY;
-	for (int32_t q = 0; a >= 0 && q < rm.rooms.door_count; q++) {
-		const RoomsDoor *d = &rm.rooms.doors[q];
-		int32_t ra = cr.merged[d->room_a], rb = cr.merged[d->room_b];
+	for (int32_t q = 0; a >= 0 && q < sr.rm.rooms.door_count; q++) {
+		const RoomsDoor *d = &sr.rm.rooms.doors[q];
+		int32_t ra = sr.cr.merged[d->room_a], rb = sr.cr.merged[d->room_b];
 		/* Doors the verdict's rule keeps on the model, out of the start's room,
 		 * undecided ones too: a look past one (roomdoubt_beyond) may leave it
 		 * undecided, its width still the coarse squares'. */
@@ -301,7 +320,7 @@ RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
 		int32_t other = ra == a ? rb : ra;
 		bool better = false;
 		for (int32_t k = 0; k < s->w * s->h && !better; k++)
-			better = carryroom_at(&cr, &rm, k % s->w, k / s->w) == other &&
+			better = carryroom_at(&sr.cr, &sr.rm, k % s->w, k / s->w) == other &&
 				 goals_corner_score(c->task.corner, s->x0 + k % s->w, s->y0 + k / s->w) > here;
 		if (!better)
 			continue;
@@ -321,12 +340,12 @@ RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
 			if (pass == 1) {
 				if (coarsest[0] == WORLDMODEL_RES_FOVEA && coarsest[1] == WORLDMODEL_RES_FOVEA)
 					break; /* no square seen coarsely sets its width */
-				double c1 = sqrt((double)rm.skeleton.dist2[d->y * s->w + d->x]);
+				double c1 = sqrt((double)sr.rm.skeleton.dist2[d->y * s->w + d->x]);
 				for (int end = 0; end < 2; end++)
 					c1 += coarsest[end] == WORLDMODEL_RES_PERIPHERAL     ? (ROOMDOUBT_COARSE_CELL - 1) / 2.0
 					      : coarsest[end] == WORLDMODEL_RES_INTERMEDIATE ? 0.5
 											     : 0;
-				if (jamb_wide(cr.peak[a], c1))
+				if (jamb_wide(sr.cr.peak[a], c1))
 					break;
 				if (verdict == ROOMDOUBT_NONE)
 					verdict = ROOMDOUBT_STUCK;
@@ -357,8 +376,7 @@ RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
 				}
 		}
 	}
-	carryroom_free(&cr);
-	goals_roommap_free(&rm);
+	start_rooms_free(&sr);
 	return verdict;
 }
 
@@ -391,15 +409,12 @@ static int32_t across(const Grid *g, int32_t x, int32_t y)
 RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 toward, const Vec2 *follow, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
-	int32_t si, sj;
-	if (!goals_cell_of(s, c->start, &si, &sj))
-		return ROOMDOUBT_NONE;
-	RoomMap rm;
-	goals_roommap_build(&rm, s);
+	StartRooms sr;
 	/* The room as for the corner (goals_room_corner_best). */
-	CarryRooms cr;
-	carryroom_merge_seen(&rm, s, &cr);
-	int32_t a = carryroom_at(&cr, &rm, si, sj);
+	if (!start_rooms_build(c, &sr))
+		return ROOMDOUBT_NONE;
+	int32_t si = sr.si, sj = sr.sj;
+	int32_t a = carryroom_at(&sr.cr, &sr.rm, si, sj);
 	int64_t n = (int64_t)s->w * s->h;
 	const int32_t v = ROOMDOUBT_VIEW;
 	/* cover: the cells from which one impression shows an unseen square beside
@@ -418,7 +433,7 @@ RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 towa
 		bool beside = false, followed = follow && goals_distance(q, *follow) <= ROOMDOUBT_FOLLOW;
 		for (int dd = 1; dd < 5 && !beside; dd++) {
 			int32_t x = i + (dd == 1) - (dd == 2), y = j + (dd == 3) - (dd == 4);
-			if (carryroom_at(&cr, &rm, x, y) != a)
+			if (carryroom_at(&sr.cr, &sr.rm, x, y) != a)
 				continue;
 			if (followed || across(&s->fixed, x, y) <= ROOMDOUBT_PASSAGE)
 				beside = true;
@@ -447,7 +462,7 @@ RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 towa
 	double best = INFINITY;
 	for (int64_t k = 0; verdict != ROOMDOUBT_NONE && k < n; k++) {
 		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
-		if (!cover[k] || dist[k] < 0 || s->label[k] != SCREEN_SPACE || carryroom_at(&cr, &rm, i, j) != a)
+		if (!cover[k] || dist[k] < 0 || s->label[k] != SCREEN_SPACE || carryroom_at(&sr.cr, &sr.rm, i, j) != a)
 			continue;
 		Vec2 p = goals_centre(s->x0 + i, s->y0 + j);
 		double cost = dist[k] - goals_distance(p, toward);
@@ -458,8 +473,7 @@ RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 towa
 		verdict = ROOMDOUBT_LOOK;
 	}
 	free(cover);
-	carryroom_free(&cr);
-	goals_roommap_free(&rm);
+	start_rooms_free(&sr);
 	return verdict;
 }
 
