@@ -9,14 +9,13 @@
  * is consistent: a cell is final when it is first closed and is never reopened.
  * The open list uses lazy deletion: an improved cell is pushed again and stale
  * entries are skipped when popped (cheaper than decrease-key, whose position index
- * costs a random memory access per swap). Since f never decreases during the
- * search, entries are filed in buckets of f, and only the current bucket is
- * ordered. Plain A* keeps its buckets in a ring (its open entries never span more
- * than 2 sqrt 2: "plain A*'s open list" below), the current one a sorted array,
- * and orders by exact integer keys (EXACT KEYS); the jump search (gridjump.c),
- * whose jumps are long, keeps a page of buckets with an overflow beyond it, the
- * current bucket a binary heap, and doubles (EXACT TIES). A neighbour whose f
- * equals the f being expanded (the least in the list) skips the buckets through a
+ * costs a random memory access per swap). Plain A* files its entries in five
+ * first-in first-out queues, one for each growth of f a step can make above zero
+ * (FIFO QUEUES), and orders by exact integer keys (EXACT KEYS); the jump search
+ * (gridjump.c), whose growths are arbitrary, files them in buckets of f, a page of
+ * them with an overflow beyond it, the current bucket a binary heap, and orders by
+ * doubles (EXACT TIES). A neighbour whose f equals the f being expanded (the least
+ * in the list) skips the queues or buckets through a
  * stack. Each free cell's legal steps are one byte of its node (made by the first
  * query from the 3 x 3 neighbourhood, by the table legal of gridpath_init), so an
  * expansion walks the set bits in order of d instead of testing eight neighbours
@@ -93,13 +92,29 @@
  * less F's, modulo 2^32, order them exactly. A closed cell, whose f may lie far
  * below F, is refused by its mark alone.
  *
- * TIES: entries of equal f leave last pushed first (the stack, the insertion from the
- * end into the current bucket, the stable sort): a depth-first order among equals,
- * which runs down a corridor of equal-f cells much as the larger g did (rooms 237 185
- * -> 238 811 cells, maze 687 928 -> 687 929), without comparing g. Any order of
- * equal f is optimal (consistent h, exact keys), so only which of several shortest
- * paths comes out may differ: the same points on rooms, rects, Boston_0_1024 and
- * den520d at 1024, another path of the same length on the maze.
+ * FIFO QUEUES: a step's growth of f (EXACT KEYS) is 0 or one of five values, 2 -
+ * sqrt 2, 2 sqrt 2 - 2, sqrt 2, 2 and 2 sqrt 2 (gridpath_init finds them in df and
+ * asserts that there are five). An entry pushed with growth w has the key F + w,
+ * F the f being expanded; F never decreases (consistent h), so the keys pushed
+ * into the queue of w never decrease either, and a first-in first-out queue per
+ * growth is sorted by construction: the least entry of the list is the least of
+ * the five heads (and the stack's, F itself, before them). A pop compares five
+ * keys (hk, the heads' keys, kept per queue); a push appends. No bucket, no sort,
+ * no bitmap of nonempty buckets. Their entries span at most 2 sqrt 2 (F RELATIVE),
+ * so an entry keeps its key's low 32 bits and a head's key is F plus their
+ * difference.
+ *
+ * TIES: entries of equal f leave in this order: the stack's, last pushed first (a
+ * depth-first order among equals, which runs down a corridor of equal-f cells much
+ * as a larger g first would, without comparing g); then the queue of the smaller
+ * growth first (its entry was pushed from a larger F, later), and in a queue first
+ * pushed first. Any order of equal f is optimal (consistent h, exact keys), so only
+ * which of several shortest paths comes out may differ, and the count of cells
+ * expanded by a few of those of the last f: the same lengths everywhere, and with
+ * the queues, not the ring of sorted buckets (LIFO among equals) of the third
+ * round: rooms 238 811 -> 237 769 cells, rects 142 903 -> 142 581, maze 687 929
+ * (another path of the same length), Boston_0_1024 190 205 -> 190 559, den520d
+ * 50 584 -> 50 682.
  *
  * INVARIANTS: node[c].info's round (bits 13-31) is this query's when c was reached
  * in it: then f holds the low bits of the key of its best known f and from (bits
@@ -107,11 +122,11 @@
  * with an earlier round c is unseen. Bits 0-7, its legal steps, never change. The
  * border cells of the padded copy are never free.
  *
- * MEMORY: see gridpath.h. COMPLEXITY: O(n log n) for n cells expanded, n <= free
- * cells, plus O(L) for a path of length L to skip the empty buckets (64 to a word
- * of nonempty bits); initialisation O(w h) once per grid, and a query touches only
+ * MEMORY: see gridpath.h. COMPLEXITY: plain A* O(n) for n cells expanded, n <=
+ * free cells (a push or a pop is O(1), FIFO QUEUES; the queues' arrays grow by
+ * doubling); the jump search: gridjump.c. Initialisation O(w h) once per grid, and a query touches only
  * what it expands (the round counter replaces clearing the marks) and, for plain
- * A*, the ring's GRIDPATH_RING buckets and its region tables, O(w + h). */
+ * A*, its region tables, O(w + h). */
 #include "utak/plan/gridpath.h"
 
 #include <assert.h>
@@ -129,21 +144,14 @@
  * (p/q a convergent of sqrt 2). */
 #define GRIDPATH_KEY_ONE UINT64_C(1311738121)
 #define GRIDPATH_KEY_SQRT2 UINT64_C(1855077841)
-/* Plain A*'s ring (GRIDPATH_RING buckets, gridpath.h): a bucket is 2^24 of key, 1/78
- * of a unit of length. It must hold the open entries' span, 2 sqrt 2 units (less
- * than 3 GRIDPATH_KEY_ONE), and a bucket each side, and be a power of two of
- * whole words. */
-#define GRIDPATH_BUCKET_SHIFT 24
 /* GridPathNode.info: the legal steps in bits 0-7, from in 8-11, closed in 12, the
  * round from 13 on (so any mark of this round exceeds any of an earlier one). */
 #define GRIDPATH_MOVES 0xffu
 #define GRIDPATH_FROM_SHIFT 8
 #define GRIDPATH_CLOSED (1u << 12)
 #define GRIDPATH_ROUND_SHIFT 13
-#define GRIDPATH_RING_WORDS (GRIDPATH_RING / 64)
-_Static_assert((3 * GRIDPATH_KEY_ONE >> GRIDPATH_BUCKET_SHIFT) + 3 <= GRIDPATH_RING &&
-                   GRIDPATH_RING % 64 == 0 && (GRIDPATH_RING & (GRIDPATH_RING - 1)) == 0,
-               "GRIDPATH_RING too small for GRIDPATH_BUCKET_SHIFT, or not a power of two");
+/* A queue's first array (FIFO QUEUES), a power of two. */
+#define GRIDPATH_QUEUE_FIRST 256
 _Static_assert(GRIDPATH_KEY_SQRT2 *GRIDPATH_KEY_SQRT2 ==
                    2 * GRIDPATH_KEY_ONE * GRIDPATH_KEY_ONE - 1,
                "not a Pell pair");
@@ -262,6 +270,29 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 			}
 			seen[r] = true;
 		}
+	/* FIFO QUEUES: the growths above zero, each the index of its queue (their rank,
+	 * smallest first) above its low 32 bits */
+	uint64_t growth[GRIDPATH_QUEUES];
+	int growths = 0;
+	for (int r = 0; r < 45; r++)
+		for (int d = 0; d < 8; d++) {
+			int i = 0;
+			while (i < growths && growth[i] != s->df[r][d])
+				i++;
+			if (i == growths && s->df[r][d] != 0) {
+				assert(growths < GRIDPATH_QUEUES);
+				growth[growths++] = s->df[r][d];
+			}
+		}
+	assert(growths == GRIDPATH_QUEUES);
+	for (int r = 0; r < 45; r++)
+		for (int d = 0; d < 8; d++) {
+			uint64_t rank = 0;
+			for (int i = 0; i < growths; i++)
+				rank += growth[i] < s->df[r][d];
+			if (s->df[r][d] != 0)
+				s->df[r][d] |= rank << 32;
+		}
 }
 
 void gridpath_free(GridPathSearch *s)
@@ -271,12 +302,9 @@ void gridpath_free(GridPathSearch *s)
 		free(s->rows - 1); /* the word before the lines, see gridpath_init */
 	if (s->cols)
 		free(s->cols - 1);
-	if (s->ring)
-		for (int i = 0; i < GRIDPATH_RING; i++)
-			free(s->ring[i].e);
-	free(s->ring);
+	for (int i = 0; i < GRIDPATH_QUEUES; i++)
+		free(s->queue[i].e);
 	free(s->stack);
-	free(s->scratch);
 	free(s->at_stack);
 	free(s->region_x);
 	free(s->region_y);
@@ -287,145 +315,23 @@ void gridpath_free(GridPathSearch *s)
 
 /* ------------------------------------------------------- plain A*'s open list
  *
- * A ring of GRIDPATH_RING buckets of f, each 2^GRIDPATH_BUCKET_SHIFT of key (1/78
- * of a unit): plain A* offers a neighbour at most 2 sqrt 2 above the f being
- * expanded (a step of cost c changes h by at most c), so the open entries span less
- * than 3 units and the ring holds them all, with no overflow. An entry's key is the
- * low GRIDPATH_BUCKET_SHIFT bits of its f's key, then 32 bits of its h's key (h =
- * f - g: on equal f, the smaller h, that is the larger g, leaves first), so one
- * comparison of words orders two entries of a bucket. Later buckets are unsorted
- * arrays; the current one, ring_now, is sorted (when it becomes current) from the
- * entry to leave last to the one to leave first, so a pop takes its last entry, and
- * a push into it is an insertion from the end. Of entries with equal keys the later
- * pushed leaves first. In the maze most buckets hold one to three entries: a sorted
- * array beat a binary heap. */
+ * FIFO QUEUES (see the header): a queue per growth of f above zero, in the order
+ * of the growths, smallest first; the stack takes the growths of zero. */
 
-/* gridpath_ring_sort(a, n, tmp): sorts a[0..n) by key, largest first (a[n - 1]
- * leaves first), stable: of equal keys, the later in a leaves first. Insertion for
- * short arrays, else merging halves through tmp (n entries). */
-static void gridpath_ring_sort(GridPathRingEntry *a, int n, GridPathRingEntry *tmp)
+/* gridpath_queue_grown(q): q, full, with an array twice as long, its entries moved
+ * to the front in order. By value, so that no queue's address escapes
+ * gridpath_find (a store into a node could then alias it). */
+static GridPathQueue gridpath_queue_grown(GridPathQueue q)
 {
-	if (n <= 16) {
-		for (int i = 1; i < n; i++) {
-			const GridPathRingEntry x = a[i];
-			int j = i;
-			for (; j > 0 && a[j - 1].key < x.key; j--)
-				a[j] = a[j - 1];
-			a[j] = x;
-		}
-		return;
-	}
-	const int h = n / 2;
-	gridpath_ring_sort(a, h, tmp);
-	gridpath_ring_sort(a + h, n - h, tmp);
-	int i = 0, j = h, k = 0;
-	while (i < h && j < n) /* the one that leaves later first; on a tie, the left */
-		tmp[k++] = a[i].key < a[j].key ? a[j++] : a[i++];
-	while (i < h)
-		tmp[k++] = a[i++];
-	while (j < n)
-		tmp[k++] = a[j++];
-	memcpy(a, tmp, (size_t)n * sizeof *a);
-}
-
-/* The ring in locals of gridpath_find (a store into a node may alias any field of
- * the search it would otherwise be read from again). */
-typedef struct GridPathRing {
-	GridPathRingBucket *bucket;         /* GRIDPATH_RING buckets */
-	int64_t now;                        /* the current bucket's number */
-	unsigned now_slot;                  /* its slot, now mod GRIDPATH_RING */
-	uint64_t bits[GRIDPATH_RING_WORDS]; /* bit i: bucket[i] holds entries */
-} GridPathRing;
-
-/* gridpath_ring_push(r, f, cell): files a cell of f's key f in the bucket of f,
- * never before r->now: f never decreases. */
-static inline void gridpath_ring_push(GridPathRing *r, uint64_t f, int32_t cell)
-{
-	const unsigned slot = (unsigned)(f >> GRIDPATH_BUCKET_SHIFT) & (GRIDPATH_RING - 1);
-	GridPathRingBucket *k = &r->bucket[slot];
-	int i = k->count;
-	if (i == k->cap)
-		k->e = util_grow(k->e, &k->cap, i + 1, sizeof *k->e);
-	k->count = i + 1;
-	r->bits[slot / 64] |= (uint64_t)1 << (slot % 64);
-	const uint32_t key = (uint32_t)f & (((uint32_t)1 << GRIDPATH_BUCKET_SHIFT) - 1);
-	GridPathRingEntry *e = k->e;
-	/* the current bucket (the slot tells it: the entries span less than the ring)
-	 * is sorted, leaving from the end */
-	if (slot == r->now_slot)
-		for (; i > 0 && e[i - 1].key < key; i--)
-			e[i] = e[i - 1];
-	e[i] = (GridPathRingEntry){key, cell};
-}
-
-/* gridpath_ring_next(r, s): makes the next nonempty bucket after the empty current
- * one current, sorted (scratch from s); false when there is none. */
-static bool gridpath_ring_next(GridPathRing *r, GridPathSearch *s)
-{
-	const unsigned slot = (unsigned)r->now & (GRIDPATH_RING - 1);
-	r->bits[slot / 64] &= ~((uint64_t)1 << (slot % 64)); /* empty, left */
-	unsigned next = GRIDPATH_RING;
-	for (unsigned w = 0; w <= GRIDPATH_RING_WORDS; w++) {
-		const unsigned word = (slot / 64 + w) % GRIDPATH_RING_WORDS;
-		uint64_t bits = r->bits[word];
-		if (w == 0)
-			bits &= ~(uint64_t)0 << (slot % 64);
-		if (bits) {
-			next = word * 64 + (unsigned)gridpath_ctz64(bits);
-			break;
-		}
-	}
-	if (next == GRIDPATH_RING)
-		return false;
-	r->now += (next - slot) & (GRIDPATH_RING - 1);
-	r->now_slot = next;
-	GridPathRingBucket *k = &r->bucket[next];
-	if (k->count == 2) { /* the usual case in the maze, inline */
-		if (k->e[1].key > k->e[0].key) {
-			const GridPathRingEntry t = k->e[0];
-			k->e[0] = k->e[1];
-			k->e[1] = t;
-		}
-	} else if (k->count > 2) {
-		if (k->count > 16 && k->count > s->scratch_cap)
-			s->scratch =
-			    util_grow(s->scratch, &s->scratch_cap, k->count, sizeof *s->scratch);
-		gridpath_ring_sort(k->e, k->count, s->scratch);
-	}
-	return true;
-}
-
-/* gridpath_ring_pop(r, s, e, f): the first entry into *e, its f's key into *f;
- * false when the list is empty. The current bucket's bit is cleared when it is
- * left (gridpath_ring_next), not at each pop. */
-static inline bool gridpath_ring_pop(GridPathRing *r, GridPathSearch *s, GridPathRingEntry *e,
-                                     uint64_t *f)
-{
-	GridPathRingBucket *k = &r->bucket[r->now_slot];
-	if (k->count == 0) {
-		if (!gridpath_ring_next(r, s))
-			return false;
-		k = &r->bucket[r->now_slot];
-	}
-	*e = k->e[--k->count];
-	*f = (uint64_t)r->now << GRIDPATH_BUCKET_SHIFT | e->key;
-	return true;
-}
-
-/* gridpath_ring_reset(s, r, f): an empty ring for a new query, the bucket of f
- * current. */
-static void gridpath_ring_reset(GridPathSearch *s, GridPathRing *r, uint64_t f)
-{
-	if (!s->ring) {
-		s->ring = util_alloc(GRIDPATH_RING, sizeof *s->ring);
-		memset(s->ring, 0, GRIDPATH_RING * sizeof *s->ring);
-	}
-	for (unsigned i = 0; i < GRIDPATH_RING; i++)
-		s->ring[i].count = 0;
-	r->bucket = s->ring;
-	memset(r->bits, 0, sizeof r->bits);
-	r->now = (int64_t)(f >> GRIDPATH_BUCKET_SHIFT);
-	r->now_slot = (unsigned)r->now & (GRIDPATH_RING - 1);
+	/* A query pushes fewer than 8 entries a cell, under 2^32 for fewer than 2^29
+	 * cells (GRIDPATH_MAX_CELLS): a queue never holds 2^32, and at 2^31 the mask
+	 * below wraps to UINT32_MAX, a 2^32-entry array. */
+	const uint32_t cap = q.mask + 1, count = q.tail - q.head;
+	GridPathQueueEntry *e = util_alloc((size_t)cap * 2, sizeof *e);
+	for (uint32_t i = 0; i < count; i++)
+		e[i] = q.e[(q.head + i) & q.mask];
+	free(q.e);
+	return (GridPathQueue){e, 0, count, 2 * cap - 1};
 }
 
 /* gridpath_next_round: a fresh round; on wrap-around, clear the marks once. The
@@ -505,30 +411,59 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		region_y[y] = (r < 0 ? -r : r) * 4096 + 64 * 5 * ((r > 0) - (r < 0) + 1);
 	}
 
-	GridPathRing ring;
-	{
-		const uint64_t f = gridpath_key_h(abs(goal_x - (sx + 1)), abs(goal_y - (sy + 1)));
-		node[start].info = (node[start].info & GRIDPATH_MOVES) | open_mark |
-		                   GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
-		node[start].f = (uint32_t)f;
-		gridpath_ring_reset(s, &ring, f);
-		gridpath_ring_push(&ring, f, start);
+	/* the queues and their heads' keys in locals (no store into a node aliases
+	 * them); hk[i] = UINT64_MAX when queue i is empty */
+	GridPathQueue q[GRIDPATH_QUEUES];
+	uint64_t hk[GRIDPATH_QUEUES];
+	for (int i = 0; i < GRIDPATH_QUEUES; i++) {
+		if (!s->queue[i].e) {
+			s->queue[i].e = util_alloc(GRIDPATH_QUEUE_FIRST, sizeof *s->queue[i].e);
+			s->queue[i].mask = GRIDPATH_QUEUE_FIRST - 1;
+		}
+		q[i] = (GridPathQueue){s->queue[i].e, 0, 0, s->queue[i].mask};
+		hk[i] = UINT64_MAX;
 	}
-	int64_t expanded = 0;
-	int found = 0;
-	/* the stack in locals, as the ring; sp its top */
+	/* the stack in locals, as the queues; sp its top. The start goes on it, f its
+	 * key. */
+	if (s->at_stack_cap == 0)
+		s->at_stack = util_grow(s->at_stack, &s->at_stack_cap, 1, sizeof *s->at_stack);
 	int32_t *stack = s->at_stack, *sp = stack;
 	int stack_cap = s->at_stack_cap;
-	uint64_t f = 0; /* the key of f of the cell expanded */
+	/* the key of f of the cell expanded */
+	uint64_t f = gridpath_key_h(abs(goal_x - (sx + 1)), abs(goal_y - (sy + 1)));
+	node[start].info = (node[start].info & GRIDPATH_MOVES) | open_mark |
+	                   GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
+	node[start].f = (uint32_t)f;
+	*sp++ = start;
+	int64_t expanded = 0;
+	int found = 0;
 	for (;;) {
 		ptrdiff_t c;
 		if (sp != stack) { /* f is that of the cell that pushed it */
 			c = *--sp;
 		} else {
-			GridPathRingEntry e;
-			if (!gridpath_ring_pop(&ring, s, &e, &f))
+			/* the queue whose head has the least f; on a tie the first (the
+			 * smaller growth: its entry was pushed from a larger f, later) */
+			_Static_assert(GRIDPATH_QUEUES == 5, "the tree below picks of five");
+			const uint64_t k0 = hk[0], k1 = hk[1], k2 = hk[2], k3 = hk[3], k4 = hk[4];
+			const bool l01 = k1 < k0, l23 = k3 < k2;
+			const uint64_t m01 = l01 ? k1 : k0, m23 = l23 ? k3 : k2;
+			const unsigned b01 = l01, b23 = 2 + (unsigned)l23;
+			const bool l03 = m23 < m01;
+			const uint64_t m03 = l03 ? m23 : m01;
+			const unsigned b03 = l03 ? b23 : b01;
+			const bool l04 = k4 < m03;
+			const uint64_t best = l04 ? k4 : m03;
+			const unsigned b = l04 ? 4 : b03;
+			if (best == UINT64_MAX)
 				break;
-			c = e.cell;
+			f = best;
+			GridPathQueue *const qb = &q[b];
+			c = qb->e[qb->head++ & qb->mask].cell;
+			/* the next head's key lies in [f, f + 2^32) (F RELATIVE) */
+			hk[b] = qb->head == qb->tail
+			            ? UINT64_MAX
+			            : f + (uint32_t)(qb->e[qb->head & qb->mask].key - (uint32_t)f);
 		}
 		/* Stale entries need no test of their own: a cell's entries leave the list
 		 * in order of f, h is fixed per cell, so the first to leave carries the
@@ -563,15 +498,16 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			GridPathNode *const nn = (GridPathNode *)((char *)nc + node_step[d]);
 			/* a closed cell's cost is final; an open one's f, the same h plus its
 			 * g, is improved when lower (F RELATIVE) */
-			const uint32_t info = nn->info;
+			const uint64_t grow = df[d];
+			const uint32_t info = nn->info, dfd = (uint32_t)grow;
 			if (info >= closed_mark ||
-			    (info >= open_mark && df[d] >= (uint32_t)(nn->f - f_low)))
+			    (info >= open_mark && dfd >= (uint32_t)(nn->f - f_low)))
 				continue;
 			nn->info = (info & GRIDPATH_MOVES) | open_mark | d << GRIDPATH_FROM_SHIFT;
-			nn->f = f_low + (uint32_t)df[d];
+			nn->f = f_low + dfd;
 			const int32_t n = (int32_t)(nn - node);
-			if (df[d] == 0) {
-				/* As good as the best open entry: expand it next, no ring. */
+			if (dfd == 0) {
+				/* As good as the best open entry: expand it next, no queue. */
 				if (sp == stack + stack_cap) {
 					const int count = (int)(sp - stack);
 					stack =
@@ -580,10 +516,19 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 				}
 				*sp++ = n;
 			} else {
-				gridpath_ring_push(&ring, f + df[d], n);
+				/* its growth's queue, whose keys never decrease (FIFO QUEUES) */
+				const unsigned i = (unsigned)(grow >> 32);
+				GridPathQueue *const qi = &q[i];
+				if (qi->tail - qi->head > qi->mask)
+					*qi = gridpath_queue_grown(*qi);
+				if (qi->tail == qi->head)
+					hk[i] = f + dfd;
+				qi->e[qi->tail++ & qi->mask] = (GridPathQueueEntry){f_low + dfd, n};
 			}
 		}
 	}
+	for (int i = 0; i < GRIDPATH_QUEUES; i++)
+		s->queue[i] = q[i];
 	s->at_stack = stack;
 	s->at_stack_cap = stack_cap;
 	path->expanded = expanded;

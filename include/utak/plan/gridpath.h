@@ -85,8 +85,10 @@ typedef struct GridPathOpen {
 	int32_t cell; /* index into the padded grid */
 } GridPathOpen;
 
-/* Buckets in plain A*'s ring (gridpath.c): a power of two. */
-#define GRIDPATH_RING 256
+/* Plain A*'s open list (gridpath.c, FIFO QUEUES): one first-in first-out queue for
+ * each growth of f a step can make above zero, of which the octile distance has
+ * five (2 - sqrt 2, 2 sqrt 2 - 2, sqrt 2, 2, 2 sqrt 2). */
+#define GRIDPATH_QUEUES 5
 
 /* One bucket of the open list (opaque, see below). */
 typedef struct GridPathBucket {
@@ -105,18 +107,19 @@ typedef struct GridPathNode {
 	                  closed (12), the round it was reached in (13-31) */
 } GridPathNode;
 
-/* One entry of plain A*'s ring (gridpath.c): the bits of its f's key below its
- * bucket's, and the cell. */
-typedef struct GridPathRingEntry {
+/* One entry of a queue of plain A* (gridpath.c): the low 32 bits of its f's key,
+ * and the cell. */
+typedef struct GridPathQueueEntry {
 	uint32_t key;
 	int32_t cell;
-} GridPathRingEntry;
+} GridPathQueueEntry;
 
-/* One bucket of plain A*'s ring (opaque). */
-typedef struct GridPathRingBucket {
-	GridPathRingEntry *e;
-	int count, cap;
-} GridPathRingBucket;
+/* One queue of plain A* (opaque): a circular array of mask + 1 entries, a power of
+ * two; head and tail count the entries taken and put, modulo 2^32. */
+typedef struct GridPathQueue {
+	GridPathQueueEntry *e; /* NULL before the first query */
+	uint32_t head, tail, mask;
+} GridPathQueue;
 
 /* The search state for one grid. Cells are indexed in a copy of the grid with a
  * blocked border one cell wide (width w + 2), so neighbours need no bounds tests. */
@@ -140,18 +143,17 @@ typedef struct GridPathSearch {
 	 * list: they may be expanded next in any order, so they skip the heap. */
 	GridPathOpen *stack;
 	int stack_count, stack_cap;
-	/* Plain A*'s open list: a ring of GRIDPATH_RING buckets of f (gridpath.c), and
-	 * its stack of cells whose f equals the one being expanded. */
-	GridPathRingBucket *ring;   /* NULL before the first query */
-	GridPathRingEntry *scratch; /* for sorting a bucket */
-	int scratch_cap;
+	/* Plain A*'s open list: its queues (gridpath.c, FIFO QUEUES), and the stack of
+	 * cells whose f equals the one being expanded. */
+	GridPathQueue queue[GRIDPATH_QUEUES];
 	int32_t *at_stack; /* cells */
 	int at_stack_cap;
 	/* y = c / pw for a padded index c as c div_mul >> div_shift (gridpath_init) */
 	uint64_t div_mul;
 	unsigned div_shift;
 	/* df[r][d]: the growth of f's key by step d from a cell in region r about the
-	 * goal (gridpath_init, see gridpath.c, EXACT KEYS). */
+	 * goal in the low 32 bits, the index of its queue above them (gridpath_init, see
+	 * gridpath.c, EXACT KEYS and FIFO QUEUES). */
 	uint64_t df[45][8];
 	/* The row of df of a cell's region about the goal (gridpath.c) from its x and
 	 * y, as byte offsets: region_x[x] = |goal x - x| 4096 + 64 15 (sign + 1),
