@@ -394,11 +394,12 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		return GRIDPATH_TOO_LARGE; /* the keys' proof holds below it: EXACT KEYS */
 
 	/* a step's offset in cells, and in bytes of nodes (no scaling in the loop) */
-	ptrdiff_t offset[8], node_step[8];
+	ptrdiff_t offset[8], node_step[9];
 	for (int d = 0; d < 8; d++) {
 		offset[d] = (ptrdiff_t)gridpath_dy[d] * pw + gridpath_dx[d];
 		node_step[d] = offset[d] * (ptrdiff_t)sizeof(GridPathNode);
 	}
+	node_step[GRIDPATH_NO_PARENT] = 0;
 	gridpath_next_round(s);
 	/* the round's marks in info (see GridPathNode) */
 	const uint32_t open_mark = s->round << GRIDPATH_ROUND_SHIFT,
@@ -496,7 +497,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		 * of pushes decides ties, and so the path */
 		unsigned m = cinfo & GRIDPATH_MOVES;
 		const unsigned from = cinfo >> GRIDPATH_FROM_SHIFT & 15;
-		if (from != GRIDPATH_NO_PARENT) {
+		{ /* the start's "parent" is itself (node_step[8] = 0), skip[8][] = 0 */
 			const GridPathNode *parent =
 			    (const GridPathNode *)((const char *)nc - node_step[from]);
 			m &= ~(unsigned)s->skip[from][parent->info & GRIDPATH_MOVES];
