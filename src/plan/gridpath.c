@@ -24,10 +24,11 @@
  * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
  * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
  * first = the tree before issue 16's work, which kept the paged heap for both
- * searches; then the second round's, then this, the third):
- *   plain A*    rooms 230 -> 145 -> 83 M, rects 149 -> 93 -> 54, maze 333 -> 209 ->
- *               151 (688 000 cells expanded: 485 -> 304 -> 220 instructions a
- *               cell), Boston_0_1024 192 -> 119 -> 69, den520d (x2) 51 -> 32 -> 19;
+ * searches; then the second round's, the third's, then this, the fourth):
+ *   plain A*    rooms 230 -> 145 -> 83 -> 64.7 M, rects 149 -> 93 -> 54 -> 39.5,
+ *               maze 333 -> 209 -> 151 -> 146.4 (688 000 cells expanded: 485 ->
+ *               304 -> 220 -> 213 instructions a cell), Boston_0_1024 192 -> 119 ->
+ *               69 -> 53.4, den520d (x2) 51 -> 32 -> 19 -> 14.0;
  *   jump points: gridjump.c, PERFORMANCE.
  * The steps of the second round, maze plain A*: the parent's neighbours skipped 337
  * -> 292 M; the ring for the paged heap 292 -> 232; locals instead of fields re-read
@@ -46,11 +47,33 @@
  * ms alternated, the caches flushed before each query as the benchmark's other jobs
  * do: at 32 bytes a node it had run 1.25 times slower than at 16, and 2 MB pages by
  * madvise gained under 5%); the current bucket told by its slot in a push 154 ->
- * 151. Times and the ratios to libtcod: see gridpath.h. Where the time goes now:
- * instructions, about 220 a cell expanded in the maze (1.37 pops
- * and 1.37 pushes a cell, 0.27 of the pops stale, 2.5 neighbours tried), spread
- * over the neighbour loop, the ring's pushes, pops and sorts, and each expansion's
- * region and parent's steps (callgrind, by line).
+ * 151. The fourth: the ring of 256 sorted buckets replaced by five first-in
+ * first-out queues (FIFO QUEUES) 151 -> 143 (a push appends: 36 -> 23 instructions;
+ * no sort; branch mispredictions in callgrind's model 2.2 -> 1.7 M a query); the
+ * prefetches (PREFETCH) 143 -> 147, but the time down by a fifth at 1024 and a
+ * third at 4096; no branch for the start's parent 147 -> 146. Time, best of 9
+ * alternated with the third round's code in one session (warm caches): rooms 8.59
+ * -> 6.06 ms (1.42 times faster), rects 4.61 -> 3.53 (1.30), maze 25.8 -> 20.9
+ * (1.23), Boston_0_1024 7.02 -> 4.71 (1.49), den520d 1.33 -> 1.18 (1.13); maze at
+ * 4096, best of 3, 312 -> 210 ms (1.48). Ratios to libtcod: see gridpath.h.
+ * Where the time goes now: about 213 instructions a cell expanded in the maze
+ * (2.6 neighbours tried: 38% unseen, 8% improved, 39% open and not improved, 14%
+ * closed; a pop about 40, a push about 23, the region and the parent's steps about
+ * 30), and branch mispredictions, about 2.5 a cell (the neighbours' tests and the
+ * loop's end: which neighbour is taken is data). The search is bound by the latency
+ * from a pop to the node it reads to the next pop, which branch prediction lets
+ * the processor run ahead of: a version that chose by masks instead of branches
+ * (the neighbours' tests, the queue of the least head) mispredicted a fifth less
+ * but ran 1.1 to 1.3 times slower; so did a first pass for the mask of taken
+ * neighbours, and buckets 4 or 16 times finer (153, 159 M).
+ *
+ * PREFETCH: a cell pushed by step d is expanded later and then reads the line of
+ * the cell one more step d beyond it, a new row or column that no hardware
+ * prefetcher foresees when the search runs along a column; gridpath_prefetch asks
+ * for it at the push, and for the node of a queue's next head at each pop. The
+ * nodes are 8 MB at 1024 (past the 1 MB L2 cache here, and flushed by the
+ * benchmark's other jobs) and 134 MB at 4096 (past every cache). Further lines
+ * (the cells beside the one beyond, or two steps beyond) gained nothing measurable.
  *
  * PARENT'S NEIGHBOURS: a cell c reached from its parent p need not try a step to p,
  * nor to any cell n one legal step from p: p was expanded, so n already holds a
@@ -124,9 +147,9 @@
  *
  * MEMORY: see gridpath.h. COMPLEXITY: plain A* O(n) for n cells expanded, n <=
  * free cells (a push or a pop is O(1), FIFO QUEUES; the queues' arrays grow by
- * doubling); the jump search: gridjump.c. Initialisation O(w h) once per grid, and a query touches only
- * what it expands (the round counter replaces clearing the marks) and, for plain
- * A*, its region tables, O(w + h). */
+ * doubling); the jump search: gridjump.c. Initialisation O(w h) once per grid,
+ * and a query touches only what it expands (the round counter replaces clearing
+ * the marks) and, for plain A*, its region tables, O(w + h). */
 #include "utak/plan/gridpath.h"
 
 #include <assert.h>

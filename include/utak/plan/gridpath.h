@@ -25,28 +25,31 @@
  * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
  * rows and cols; 64 cells to a word, so up to 63 bits more a line), and from the
  * first query of either method, 8 bytes more for plain A* (the node) and 4 and a
- * bit for the jump search (a record index and a seen bit); plus the open list (8
- * bytes per pushed entry for plain A*, 16 for the jump search; at most 8 pushes per
- * cell, far fewer in practice), for plain A* 18 bytes per column and per row (its
- * region tables), and for the jump search 28 bytes per jump point seen, all kept
+ * bit for the jump search (a record index and a seen bit); plus the open list (for
+ * plain A* five queues of 8-byte entries, each a power of two of at least 256
+ * entries and at most twice the most it held at once, and 4 bytes per entry of its
+ * stack; for the jump search 16 bytes per pushed entry; at most 8 pushes per cell,
+ * far fewer in practice), for plain A* 18 bytes per column and per row (its region
+ * tables), and for the jump search 28 bytes per jump point seen, all kept
  * between queries.
  *
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
  * corner to corner, the ends as skelbench picks them). Plain A* at 1024 after its
- * third round (exact integer keys, 8-byte nodes, gridpath.c): rooms 8.65 ms, rects
- * 5.30, maze 29.95 (688 000 cells expanded), Boston_0_1024 7.25, den520d 1.67;
- * libtcod's A* over these 51.2, 61.1, 2.95, 37.1 and 33.2 times (after the second
- * round 25.9, 32.2, 2.13, 21.3, 17.2; before issue 16's work 12.9, 11.3, 1.34,
- * 10.6, 8.9). The jump search in the same run: 0.57, 0.51, 6.53, 0.72 and 0.17 ms,
- * libtcod over it 778, 634, 13.5, 376 and 324 times. At 4096 (utak by skelbench
- * --compare --side 4096, libtcod by tcodpath in an earlier run on the same grids,
- * 29 126, 18 250 and 995 ms): plain A* rooms 197 ms, rects 100, maze 305 (the second
- * round: 333, 196, 410), libtcod over it 148, 182 and 3.3 times (87, 93, 2.4); the
- * jump search (the second round's run) 13.8, 12.3 and 66.6 ms, 2 110, 1 480 and 14.9
- * times. Goal of the issue still unmet: plain A* 5 times libtcod on the maze (2.95
- * at 1024, 3.3 at 4096: it expands 87% of the free cells at about 220 instructions
- * each, see gridpath.c).
+ * fourth round (five first-in first-out queues, prefetches; gridpath.c): rooms 6.47
+ * ms, rects 3.63, maze 21.73 (688 000 cells expanded), Boston_0_1024 4.96, den520d
+ * 1.25; libtcod's A* over these 67.7, 89.2, 4.62, 55.6 and 44.4 times (after the
+ * third round 51.2, 61.1, 2.95, 37.1, 33.2; the second 25.9, 32.2, 2.13, 21.3,
+ * 17.2; before issue 16's work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search in the
+ * same run: 0.52, 0.42, 6.68, 0.74 and 0.15 ms, libtcod over it 842, 778, 15.0, 371
+ * and 366 times. At 4096 (skelbench --compare --side 4096, medians of 5, and
+ * libtcod's tcodpath on the maze right after it, median of 3, 946 ms; on rooms and
+ * rects from an earlier run on the same grids, 29 126 and 18 250 ms): plain A*
+ * rooms 111 ms, rects 65.4, maze 212 (the third round: 197, 100, 305), libtcod over
+ * it 261, 279 and 4.47 times (148, 182, 3.3); the jump search 16.5, 15.0 and 83.4
+ * ms. Goal of the issue still unmet: plain A* 5 times libtcod on the maze (4.62 at
+ * 1024, 4.47 at 4096: it expands 87% of the free cells at about 213 instructions
+ * and 2.5 branch mispredictions each, see gridpath.c).
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
