@@ -89,23 +89,27 @@
  *       p + e, n (m to n is the straight step s, n free as c to n is legal) costs
  *       sqrt 2 + 1, as much as p, c, n.
  * Why the search stays exact (every cell's cost final when it is closed, as plain
- * A* with consistent h): suppose a cell n is closed with a cost above its least,
- * the first such. Take a shortest path to n, its first cell v not closed at its
- * least cost, and its predecessor u, which is (so u's parent p is too, closed
- * before u at its least). The offer u, v is one of a shortest path, so neither (a)
- * nor (c) skipped it: both skip only offers that a strictly shorter path beats.
- * If u made it, v is open at its least cost; if (b) skipped it, p, m, v is another
- * shortest path to v, m one step from p: take v := m, u := p and repeat (m's offer
- * to v, the straight s, is never skipped by (b), and (a) and (c) skip no offer of a
- * shortest path; each repeat lowers the least cost of v, so it ends). Either way an
- * open cell x lies on a shortest path to n at its least cost, f(x) <= the least
- * f(n) < f(n) (consistent h), and x would have left the list before n:
+ * A* with consistent h): suppose a cell n is about to be closed with a cost above
+ * its least, the first such. Take a shortest path to n, its first cell v not
+ * closed at its least cost, and v's predecessor u on it, which is (and so is u's
+ * parent p, closed before u). The offer u, v lies on a shortest path, so neither
+ * (a) nor (c) skipped it: both skip only offers that a strictly shorter path
+ * beats. If u made it, v is open at its least cost. If (b) skipped it, p, m, v is
+ * a shortest path too (m = p + e costs at most p's least + sqrt 2); on the
+ * shortest path through p, m and v, take the first cell not closed at its least:
+ * either v again, now after m, whose offer to v (the straight s) was made since
+ * no rule skips it ((b) skips diagonals only), so v is open at its least; or a
+ * cell of lower least cost than v, and repeat (this ends: the least costs fall).
+ * So some open cell x lies on a shortest path to n at its least cost, and f(x) <=
+ * the least f(n) < f(n) (consistent h): x leaves the list before n, a
  * contradiction. The offers skipped would never have been taken or never have been
  * needed, so the lengths are those of plain A* (test_gridpath against Dijkstra and
- * the published Moving AI optima); the cells expanded are the same (the same f),
- * and where shortest paths tie another may come out. Maze at 1024: (a) alone 337
+ * the published Moving AI optima), and so are the cells expanded of f below the
+ * optimum (those of f equal to it depend on the order of ties: the same counts on
+ * the five 1024 maps and the 4096 maze); where shortest paths tie another may
+ * come out. Maze at 1024: (a) alone 337
  * -> 292 M instructions (callgrind, gridpath_find, second round); (b) 146 -> 112 M,
- * (c) 112 -> 105 M (this round): in the maze the neighbours tried a cell fell from
+ * (c) 112 -> 105 M (this round); in the maze the neighbours tried a cell fell from
  * 2.6 (38% unseen, 8% improved, 39% open and not improved, 14% closed) to 1.0, all
  * unseen (every free cell is offered once, by one parent); rooms 1.02, 98.5%
  * unseen.
@@ -305,7 +309,7 @@ void gridpath_init(GridPathSearch *s, const Grid *grid)
 					skip |= 1u << e; /* diagonal first: p, p + e, n */
 				else if (d >= 4 && e >= 4 && (rx == 0 || ry == 0) &&
 				         (mp >> gridpath_dir_of[ry / 2 + 1][rx / 2 + 1] & 1))
-					skip |= 1u << e; /* two straight steps from p, 2 < 2 sqrt 2 */
+					skip |= 1u << e; /* p, p + s, n: 2 < 2 sqrt 2 */
 			}
 			s->skip[d][mp] = (uint8_t)skip;
 		}
