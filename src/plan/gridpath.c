@@ -25,10 +25,10 @@
  * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
  * first = the tree before issue 16's work, which kept the paged heap for both
  * searches; then the second round's, the third's, then this, the fourth):
- *   plain A*    rooms 230 -> 145 -> 83 -> 64.7 M, rects 149 -> 93 -> 54 -> 39.5,
- *               maze 333 -> 209 -> 151 -> 146.4 (688 000 cells expanded: 485 ->
- *               304 -> 220 -> 213 instructions a cell), Boston_0_1024 192 -> 119 ->
- *               69 -> 53.4, den520d (x2) 51 -> 32 -> 19 -> 14.0;
+ *   plain A*    rooms 230 -> 145 -> 83 -> 35.4 M, rects 149 -> 93 -> 54 -> 20.8,
+ *               maze 333 -> 209 -> 151 -> 105.3 (688 000 cells expanded: 485 ->
+ *               304 -> 220 -> 153 instructions a cell), Boston_0_1024 192 -> 119 ->
+ *               69 -> 28.7, den520d (x2) 51 -> 32 -> 19 -> 7.4;
  *   jump points: gridjump.c, PERFORMANCE.
  * The steps of the second round, maze plain A*: the parent's neighbours skipped 337
  * -> 292 M; the ring for the paged heap 292 -> 232; locals instead of fields re-read
@@ -51,21 +51,24 @@
  * first-out queues (FIFO QUEUES) 151 -> 143 (a push appends: 36 -> 23 instructions;
  * no sort; branch mispredictions in callgrind's model 2.2 -> 1.7 M a query); the
  * prefetches (PREFETCH) 143 -> 147, but the time down by a fifth at 1024 and a
- * third at 4096; no branch for the start's parent 147 -> 146. Time, best of 9
- * alternated with the third round's code in one session (warm caches): rooms 8.59
- * -> 6.06 ms (1.42 times faster), rects 4.61 -> 3.53 (1.30), maze 25.8 -> 20.9
- * (1.23), Boston_0_1024 7.02 -> 4.71 (1.49), den520d 1.33 -> 1.18 (1.13); maze at
- * 4096, best of 3, 312 -> 210 ms (1.48). Ratios to libtcod: see gridpath.h.
- * Where the time goes now: about 213 instructions a cell expanded in the maze
- * (2.6 neighbours tried: 38% unseen, 8% improved, 39% open and not improved, 14%
- * closed; a pop about 40, a push about 23, the region and the parent's steps about
- * 30), and branch mispredictions, about 2.5 a cell (the neighbours' tests and the
- * loop's end: which neighbour is taken is data). The search is bound by the latency
- * from a pop to the node it reads to the next pop, which branch prediction lets
- * the processor run ahead of: a version that chose by masks instead of branches
- * (the neighbours' tests, the queue of the least head) mispredicted a fifth less
- * but ran 1.1 to 1.3 times slower; so did a first pass for the mask of taken
- * neighbours, and buckets 4 or 16 times finer (153, 159 M).
+ * third at 4096; no branch for the start's parent 147 -> 146; the steps skipped by
+ * DIAGONAL FIRST, (b) of PARENT'S NEIGHBOURS, 146 -> 112, and by (c) 112 -> 105 (the
+ * neighbours tried a cell 2.6 -> 1.0, mispredictions 1.7 -> 0.7 M). Time, best of
+ * 9 alternated with the third round's code in one session (warm caches): rooms
+ * 8.33 -> 3.32 ms (2.51 times faster), rects 4.95 -> 1.96 (2.52), maze 29.2 ->
+ * 15.7 (1.86), Boston_0_1024 6.89 -> 2.73 (2.53), den520d 1.37 -> 0.62 (2.21);
+ * maze at 4096, best of 3, 313-324 -> 160-175 ms. Without the prefetches it runs
+ * 1.30-1.34 times slower at 1024, 1.35 at 4096 (211-216 against 158-160 ms).
+ * Ratios to libtcod: see gridpath.h. Where the time goes now, in the maze: about
+ * 153 instructions a cell expanded (a pop about 40, a push about 23, the region and
+ * the parent's steps about 30, one neighbour tried) and about 1.0 branch
+ * misprediction (the queue of the least head, the loop's end). The search is bound
+ * by the latency from a pop to the node it reads to the next pop, which branch
+ * prediction lets the processor run ahead of: before the skips of (b) and (c),
+ * with 2.5 mispredictions a cell, a version that chose by masks instead of
+ * branches (the neighbours' tests, the queue of the least head) mispredicted a
+ * fifth less but ran 1.1 to 1.3 times slower; so did a first pass for the mask of
+ * taken neighbours, and buckets 4 or 16 times finer (153, 159 M).
  *
  * PREFETCH: a cell pushed by step d is expanded later and then reads the line of
  * the cell one more step d beyond it, a new row or column that no hardware

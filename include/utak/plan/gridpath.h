@@ -36,20 +36,21 @@
  * PERFORMANCE (issue 16; `make bench-compare SIDE=1024`, one run on this shared
  * 2-core machine, one thread, thread CPU time, medians of 5 (utak) and 3 (libtcod);
  * corner to corner, the ends as skelbench picks them). Plain A* at 1024 after its
- * fourth round (five first-in first-out queues, prefetches; gridpath.c): rooms 6.47
- * ms, rects 3.63, maze 21.73 (688 000 cells expanded), Boston_0_1024 4.96, den520d
- * 1.25; libtcod's A* over these 67.7, 89.2, 4.62, 55.6 and 44.4 times (after the
- * third round 51.2, 61.1, 2.95, 37.1, 33.2; the second 25.9, 32.2, 2.13, 21.3,
- * 17.2; before issue 16's work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search in the
- * same run: 0.52, 0.42, 6.68, 0.74 and 0.15 ms, libtcod over it 842, 778, 15.0, 371
- * and 366 times. At 4096 (skelbench --compare --side 4096, medians of 5, and
- * libtcod's tcodpath on the maze right after it, median of 3, 946 ms; on rooms and
- * rects from an earlier run on the same grids, 29 126 and 18 250 ms): plain A*
- * rooms 111 ms, rects 65.4, maze 212 (the third round: 197, 100, 305), libtcod over
- * it 261, 279 and 4.47 times (148, 182, 3.3); the jump search 16.5, 15.0 and 83.4
- * ms. Goal of the issue still unmet: plain A* 5 times libtcod on the maze (4.62 at
- * 1024, 4.47 at 4096: it expands 87% of the free cells at about 213 instructions
- * and 2.5 branch mispredictions each, see gridpath.c).
+ * fourth round (five first-in first-out queues, prefetches, the steps its parent
+ * makes needless skipped; gridpath.c): rooms 3.46 ms, rects 2.07, maze 16.70
+ * (688 000 cells expanded), Boston_0_1024 2.84, den520d 0.81; libtcod's A* over
+ * these 138, 164, 5.63, 114 and 75.8 times (after the third round 51.2, 61.1,
+ * 2.95, 37.1, 33.2; the second 25.9, 32.2, 2.13, 21.3, 17.2; before issue 16's
+ * work 12.9, 11.3, 1.34, 10.6, 8.9). The jump search in the same run: 0.55, 0.40,
+ * 6.94, 0.76 and 0.15 ms, libtcod over it 878, 852, 13.6, 429 and 414 times. At
+ * 4096 (skelbench --compare --side 4096, medians of 5, and libtcod's tcodpath on
+ * the maze right after it, median of 3, 990 ms; on rooms and rects from an earlier
+ * run on the same grids, 29 126 and 18 250 ms): plain A* rooms 68.1 ms, rects 35.0,
+ * maze 167 (the third round: 197, 100, 305), libtcod over it 428, 521 and 5.93
+ * times (148, 182, 3.3); the jump search 19.9, 15.0 and 75.3 ms. The issue's 5
+ * times libtcod for plain A* is met on every map at 1024 and on the three run at
+ * 4096 (the maze 5.63 and 5.93, at about 153 instructions a cell expanded, see
+ * gridpath.c); the Moving AI maps at 4096 were not run this round.
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
