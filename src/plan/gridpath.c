@@ -86,7 +86,8 @@
  *       |pn| < |pc| + |cn| (one step is shorter than two);
  *   (c) c entered diagonally (step e), to the cell n two straight steps s from p
  *       (s a component of e, the step c, n the other diagonal with that
- *       component), when the step s from p is legal: p, p + s, n costs 2 < 2 sqrt 2;
+ *       component), when the step s from p is legal (always, as c to n needs
+ *       its corner p + s free): p, p + s, n costs 2 < 2 sqrt 2;
  *   (b) DIAGONAL FIRST: c entered straight (step s), to n = c + e for a diagonal
  *       e with component s, when the diagonal e from p is legal: the path p, m =
  *       p + e, n (m to n is the straight step s, n free as c to n is legal) costs

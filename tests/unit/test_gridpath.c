@@ -136,6 +136,58 @@ TEST_CASE(gridpath_equals_dijkstra_on_random_grids)
 	path_free(&p);
 }
 
+/* Plain A* skips the steps its parent makes needless (gridpath.c, PARENT'S
+ * NEIGHBOURS: one step from the parent, two straight steps from it, or a diagonal
+ * the parent could take first), which corridors, lattices and diagonal stripes meet
+ * at every turn: against Dijkstra on such grids, corridors 1 to 3 wide. */
+TEST_CASE(gridpath_equals_dijkstra_on_corridor_grids)
+{
+	Path p;
+	path_init(&p);
+	int queries = 0;
+	for (int trial = 0; trial < 240; trial++) {
+		int w = 4 + (int)(rng_next() % 37), h = 4 + (int)(rng_next() % 37);
+		int pitch = 2 + (int)(rng_next() % 3), gap = 30 + (int)(rng_next() % 50);
+		int kind = trial % 3;
+		Grid g;
+		grid_init(&g, w, h, GRID_FREE);
+		for (int y = 0; y < h; y++)
+			for (int x = 0; x < w; x++) {
+				int wall = kind == 0   ? (x % pitch == 0 || y % pitch == 0)
+				           : kind == 1 ? ((x + y) % (pitch + 1) == 0 ||
+				                          x % (pitch + 2) == 0)
+				                       : ((x + 2 * y) % (pitch + 2) == 0);
+				if (wall && (int)(rng_next() % 100) < gap)
+					g.cells[y * w + x] = GRID_BLOCKED;
+			}
+		GridPathSearch s;
+		gridpath_init(&s, &g);
+		for (int q = 0; q < 6; q++) {
+			int sx = (int)(rng_next() % (uint32_t)w),
+			    sy = (int)(rng_next() % (uint32_t)h);
+			int gx = (int)(rng_next() % (uint32_t)w),
+			    gy = (int)(rng_next() % (uint32_t)h);
+			if (!grid_free_at(&g, sx, sy) || !grid_free_at(&g, gx, gy))
+				continue;
+			double len;
+			GridPathStatus st = gridpath_find(&s, sx, sy, gx, gy, &p, &len);
+			double want = dijkstra_length(&g, sx, sy, gx, gy);
+			queries++;
+			if (want < 0) {
+				TEST_CHECK(st == GRIDPATH_NO_PATH);
+				continue;
+			}
+			TEST_CHECK(st == GRIDPATH_FOUND);
+			TEST_NEAR(len, want, 1e-9);
+			TEST_CHECK(check_path(&g, &p, sx, sy, gx, gy, len));
+		}
+		gridpath_free(&s);
+		grid_free(&g);
+	}
+	TEST_CHECK(queries > 800);
+	path_free(&p);
+}
+
 TEST_CASE(gridpath_refuses_bad_endpoints)
 {
 	Grid g;
@@ -358,6 +410,7 @@ int main(void)
 {
 	TEST_RUN(gridpath_octile_by_hand);
 	TEST_RUN(gridpath_equals_dijkstra_on_random_grids);
+	TEST_RUN(gridpath_equals_dijkstra_on_corridor_grids);
 	TEST_RUN(gridpath_refuses_bad_endpoints);
 	TEST_RUN(gridpath_matches_published_optima);
 	TEST_RUN(gridpath_jump_equals_dijkstra_on_random_grids);
