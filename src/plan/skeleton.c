@@ -38,8 +38,9 @@
  *    order and a stack (4 bytes a cell each; the stack holds the transform's 2 bytes a
  *    cell of column distances before the thinning uses it), and the counting-sort
  *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
- *    quarter of the cells). skeleton_edt alone keeps them in dist2's first half; the
- *    transform's other scratch is a few arrays of one row.
+ *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack).
+ *    The transform alone (skeleton_edt) keeps its column distances in dist2's first
+ *    half; its other scratch is a few arrays of one row.
  *
  * COMPLEXITY  O(w h) after the transform (edt.c): the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
@@ -75,6 +76,44 @@
  *    to 4096 a side the sort grows 14-16 times, the visits 18 (maze) to 43 times
  *    (rects: many distance levels, each a sweep of the 17 MB state) before the
  *    prefetch above 8 MB (thinner_visit_all), which takes 10-25% off at 4096.
+ *    A fifth round, on the maze (the goal: 5 times scikit-image's skeletonize there,
+ *    17.8 ms at 1024, so about 3.5 ms with the transform). By phase on the 1024 maze
+ *    (an instrumented copy, best of 11, two rounds alternating with the code before):
+ *    the transform with its histogram 2.47 ms -> 1.17 and 0.97 (the histogram made
+ *    here, in split tables, from rows of dist2 read again, with the state), the
+ *    sort 0.98 (unchanged), the visits 2.6 -> 2.45 (thinner_visits inlined by force),
+ *    pruning 0.97 -> 0.88 (the junctions' clearances loaded after the scan), about
+ *    7.1 -> 6.5 ms in all; on rooms, rects, Boston_0_1024 and den520d 0.3-0.6 ms less.
+ *    Callgrind (skeleton_compute with its transform, 1024 grids): maze 78.8 -> 83.9
+ *    million instructions, rooms 92.2 -> 94.2, rects 80.2 -> 82.9, Boston_0_1024
+ *    80.6 -> 82.7, den520d 63.3 -> 68.3 (80, 90, 79, 79 and 65 a cell: the split
+ *    tables take more instructions than the transform's one table, and less time);
+ *    the visits alone 33.5 -> 29.3 million on the maze. skelbench --compare (caches
+ *    cold after the other jobs; medians of 5 runs alternating with the code before):
+ *    maze 7.98 -> 7.47 ms. make bench-compare SIDE=1024 (at 5b82d35, the machine
+ *    loaded: the transform took 1.2-2.4 ms): the skeleton in 9.05, 8.55, 7.45, 9.87
+ *    and 7.31 ms on rooms, rects, maze, Boston_0_1024 and den520d, scikit-image's
+ *    skeletonize 7.77, 14.3, 2.39, 19.1 and 18.9 times as long (2.53 on the maze at
+ *    48fe8a7, a quieter run): the maze's 5 is not met. What stands in the way there:
+ *    the transform (1.0-1.2 ms), dist2 read twice more (histogram and sort, 0.3 ms
+ *    each), the histogram's stores (one a cell), the sort's 3 cycles a cell (blocked
+ *    cells included), and 786 429 visits at about 3 ns, each a chain of loads, a
+ *    multiply, a table load and a branch: 3.5 ms leaves no room for the visits and
+ *    the sort as they are. Tried and not kept: the ridge test at a visit decided by a
+ *    bit in the order's entry (some neighbour has a larger dist2, exact at a cell's
+ *    first visit) made during the sort, the visits 0.1 ms faster and the sort 1.7
+ *    slower (the 3 x 3 maxima not vectorised at -O2); the levels holding a sixteenth
+ *    of the cells or more (the maze's dist2 1 and 4: 93% of its free cells) visited by
+ *    scans of a code byte a cell instead of sorted, the visits 2.45 -> 4.7 ms (the loop
+ *    over a word's cells mispredicted at every word) and the codes' histogram
+ *    0.75 -> 1.55; skipping the sort's groups of 4 blocked cells, 0.98 -> 1.2 ms on
+ *    the maze (mispredicted); the histogram kept in the transform's row loop with the
+ *    split tables (edt.c), no faster at 1024 and 2-4 ms faster at 4096 (left out:
+ *    edt.c is the transform's); listing the cells to test again while removing the
+ *    spurs, 2 ms slower at 4096; THIN_AHEAD 8, 32 or 64, no change above the noise.
+ *    At 4096 the maze (instrumented, best of 3): the transform 18-20 ms, state and
+ *    histogram 15, sort 16, visits 55-57, pruning 24 (scan and walks 14, the list to
+ *    test again 5), about 130 ms against skeletonize's 295 (2.12 times at 48fe8a7).
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
