@@ -38,8 +38,9 @@
  *    order and a stack (4 bytes a cell each; the stack holds the transform's 2 bytes a
  *    cell of column distances before the thinning uses it), and the counting-sort
  *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
- *    quarter of the cells). skeleton_edt alone keeps them in dist2's first half; the
- *    transform's other scratch is a few arrays of one row.
+ *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack).
+ *    The transform alone (skeleton_edt) keeps its column distances in dist2's first
+ *    half; its other scratch is a few arrays of one row.
  *
  * COMPLEXITY  O(w h) after the transform (edt.c): the sort is two passes;
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
@@ -75,6 +76,52 @@
  *    to 4096 a side the sort grows 14-16 times, the visits 18 (maze) to 43 times
  *    (rects: many distance levels, each a sweep of the 17 MB state) before the
  *    prefetch above 8 MB (thinner_visit_all), which takes 10-25% off at 4096.
+ *    A fifth round, on the maze (the goal: 5 times scikit-image's skeletonize there,
+ *    17.8 ms at 1024, so about 3.5 ms with the transform). By phase on the 1024 maze
+ *    (an instrumented copy, best of 11, two rounds alternating with the code before):
+ *    the transform with its histogram 2.47 ms -> 1.17 and 0.97 (the histogram made
+ *    here, in split tables, from rows of dist2 read again, with the state), the
+ *    sort 0.98 (unchanged), the visits 2.6 -> 2.45 (thinner_visits inlined by force),
+ *    pruning 0.97 -> 0.88 (the junctions' clearances loaded after the scan), about
+ *    7.1 -> 6.5 ms in all; on rooms, rects, Boston_0_1024 and den520d 0.3-0.6 ms less.
+ *    Callgrind (skeleton_compute with its transform, 1024 grids): maze 78.8 -> 83.9
+ *    million instructions, rooms 92.2 -> 94.2, rects 80.2 -> 82.9, Boston_0_1024
+ *    80.6 -> 82.7, den520d 63.3 -> 68.3 (80, 90, 79, 79 and 65 a cell: the split
+ *    tables take more instructions than the transform's one table, and less time);
+ *    the visits alone 33.5 -> 29.3 million on the maze. skelbench --compare (caches
+ *    cold after the other jobs; medians of 5 runs alternating with the code before):
+ *    maze 7.98 -> 7.47 ms. make bench-compare SIDE=1024 (at 5b82d35, the machine
+ *    loaded: the transform took 1.2-2.4 ms): the skeleton in 9.05, 8.55, 7.45, 9.87
+ *    and 7.31 ms on rooms, rects, maze, Boston_0_1024 and den520d, scikit-image's
+ *    skeletonize 7.77, 14.3, 2.39, 19.1 and 18.9 times as long (2.53 on the maze at
+ *    48fe8a7, a quieter run): the maze's 5 is not met. What stands in the way there:
+ *    the transform (1.0-1.2 ms), dist2 read twice more (histogram and sort, 0.3 ms
+ *    each), the histogram's stores (one a cell), the sort's 3 cycles a cell (blocked
+ *    cells included), and 786 429 visits at about 3 ns, each a chain of loads, a
+ *    multiply, a table load and a branch: 3.5 ms leaves no room for the visits and
+ *    the sort as they are. Tried and not kept: the ridge test at a visit decided by a
+ *    bit in the order's entry (some neighbour has a larger dist2, exact at a cell's
+ *    first visit) made during the sort, the visits 0.1 ms faster and the sort 1.7
+ *    slower (the 3 x 3 maxima not vectorised at -O2); the levels holding a sixteenth
+ *    of the cells or more (the maze's dist2 1 and 4: 93% of its free cells) visited by
+ *    scans of a code byte a cell instead of sorted, the visits 2.45 -> 4.7 ms (the loop
+ *    over a word's cells mispredicted at every word) and the codes' histogram
+ *    0.75 -> 1.55; skipping the sort's groups of 4 blocked cells, 0.98 -> 1.2 ms on
+ *    the maze (mispredicted); the histogram kept in the transform's row loop with the
+ *    split tables (edt.c), no faster at 1024 and 2-4 ms faster at 4096 (left out:
+ *    edt.c is the transform's); listing the cells to test again while removing the
+ *    spurs, 2 ms slower at 4096; THIN_AHEAD 8, 32 or 64, no change above the noise;
+ *    the visits by bits, 64 cells of a row and a level at a time (the neighbourhoods
+ *    gathered from the state bytes by multiplications, the simple-point test by
+ *    Yokoi's connectivity number on 64-bit words, the dependence on the west cell
+ *    solved by composing each cell's function of it in six doubling steps, the ridge
+ *    test only where the solved west cell makes it needed, and a cascade left to
+ *    thinner_retry and the rest of the window to single visits): the same skeleton
+ *    on the 30 grids, but the maze 6.5 -> 9.8 ms at 1024 (the gathering and the
+ *    per-window setup cost more than the 20 to 30 visits of a window they replace).
+ *    At 4096 the maze (instrumented, best of 3): the transform 18-20 ms, state and
+ *    histogram 15, sort 16, visits 55-57, pruning 24 (scan and walks 14, the list to
+ *    test again 5), about 130 ms against skeletonize's 295 (2.12 times at 48fe8a7).
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
@@ -402,6 +449,14 @@ static void thinner_retry(Thinner *t, int32_t pi)
  * interior (all 8 neighbours in the set) when its turn comes, as the distance order
  * makes each cell part of the front then; so a border queue would save no visit, and
  * was not built. */
+#if defined(__GNUC__)
+/* inlined by force into thinner_visit_all's two calls, so that each is a loop of its
+ * own: GCC 12 kept one function testing prefetch on every visit, and, short of
+ * registers, reloaded pw's offsets and the table from the stack (29.3 million
+ * instructions in the visits on the 1024 maze, from 33.5; 0.4-0.8 ms less on every
+ * 1024 grid, alternating runs in one session) */
+__attribute__((always_inline))
+#endif
 static inline void thinner_visits(Thinner *t, const int32_t *order, int32_t nfree, bool prefetch)
 {
 	uint8_t *const st = t->state;
@@ -507,16 +562,26 @@ static inline uint64_t thinner_load8(const uint8_t *p)
 	return v;
 }
 
-/* thinner_walk(t, end, remove, nremove, longest): walks from the end point end to a
- * junction; when the branch is a spur (see the header comment), its cells are added
- * to remove[0 .. nremove); returns the new count. The next cell is the first
- * 4-neighbour in the set, in the ring's order, other than the way back: found by masks
- * of the 4-neighbours, with no branch on the way the walk turns, and the next cell's
- * mask gives its degree and its way on. The cells are written after remove[nremove - 1]
- * as the walk goes, and kept when it finds a spur (a walk's cells are no other walk's:
- * a branch has one end point). longest: see thinner_prune. */
+/* thinner_walk(t, end, remove, nremove, longest, pending): walks from the end point end
+ * to a junction; when the branch is a spur (see the header comment), or may be one,
+ * its cells are added to remove[0 .. nremove); returns the new count. The next cell is
+ * the first 4-neighbour in the set, in the ring's order, other than the way back: found
+ * by masks of the 4-neighbours, with no branch on the way the walk turns, and the next
+ * cell's mask gives its degree and its way on. The cells are written after
+ * remove[nremove - 1] as the walk goes, and kept when it finds a spur (a walk's cells
+ * are no other walk's: a branch has one end point). longest: see thinner_prune. A
+ * branch that reaches its junction within SKELETON_SPUR_FACTOR + SKELETON_SPUR_SLACK
+ * cells is a spur whatever the junction (a free cell's clearance is at least 1); a
+ * longer one needs the junction's dist2, and is listed in pending as three entries
+ * (its first place in remove, its length, the junction) for thinner_prune to judge
+ * after the scan, where the loads do not wait for one another: loaded here, that
+ * dist2 was a cache miss the walk waited for (on the maze, whose branches from the
+ * corners reach their junctions in 4 cells, the scan and walks took 0.94 ms at 1024
+ * and 30 at 4096; now 0.91 and 25). pending has room: each listed branch has 3 cells
+ * or more (thinner_prune asserts the constants allow no fewer), no cell is on two,
+ * so its entries are no more than the cells. */
 static inline int32_t thinner_walk(const Thinner *t, int32_t end, int32_t *remove, int32_t nremove,
-                                   double longest)
+                                   double longest, int32_t *pending, int32_t *npending)
 {
 	static const uint8_t first[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
 	static const uint8_t degree[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
@@ -532,9 +597,13 @@ static inline int32_t thinner_walk(const Thinner *t, int32_t end, int32_t *remov
 		const unsigned mn = thinner_mask4(st, next, pw);
 		const int d = degree[mn];
 		if (d >= 3) {
-			double r = sqrt((double)t->dist2[thinner_unpadded(t, next)]);
-			return length > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK ? nremove
-			                                                               : nremove + length;
+			if (length > SKELETON_SPUR_FACTOR + SKELETON_SPUR_SLACK) {
+				int32_t *e = pending + 3 * (*npending)++;
+				e[0] = nremove;
+				e[1] = length;
+				e[2] = next;
+			}
+			return nremove + length;
 		}
 		if (d <= 1)
 			return nremove; /* the branch is all the component: no spur */
@@ -549,8 +618,8 @@ static inline int32_t thinner_walk(const Thinner *t, int32_t end, int32_t *remov
 
 /* thinner_prune(t, scratch, maxd): removes the spurs (see the header comment), then
  * deletes what that makes deletable; returns the number of cells removed as spurs.
- * scratch is an array as long as the grid. Spurs are found on the set as thinned,
- * then removed. The end points are found by a scan of the set in raster order, eight
+ * scratch is an array as long as the grid (the walks' pending branches, then the
+ * cells to test again). Spurs are found on the set as thinned, then removed. The end points are found by a scan of the set in raster order, eight
  * cells a word: each lane holds a cell's bit 0, the sum of four neighbours' lanes its
  * degree (at most 4: no carry), and a lane of degree ^ 1 is zero exactly where
  * ((lane & 0x7f) + 0x7f) | lane has no top bit; most words hold no end and cost no
@@ -564,8 +633,9 @@ static inline int32_t thinner_walk(const Thinner *t, int32_t end, int32_t *remov
 static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 {
 	const double longest = SKELETON_SPUR_FACTOR * sqrt((double)maxd) + SKELETON_SPUR_SLACK;
+	assert(SKELETON_SPUR_FACTOR + SKELETON_SPUR_SLACK >= 2.0); /* thinner_walk's pending */
 	/* cells to remove are collected in the stack array, as long as the grid */
-	int32_t nremove = 0;
+	int32_t nremove = 0, npending = 0;
 	int32_t *remove = t->stack;
 	const uint8_t *st = t->state;
 	const int32_t w = t->w, pw = t->pw;
@@ -587,12 +657,32 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 				continue;
 			for (int32_t j = 0; j < 8; j++)
 				if ((p[j] & SKELETON_IN) && thinner_degree(t, row + x + j) == 1)
-					nremove = thinner_walk(t, row + x + j, remove, nremove, longest);
+					nremove = thinner_walk(t, row + x + j, remove, nremove, longest, scratch,
+					                       &npending);
 		}
 		for (; x < w; x++)
 			if ((st[row + x] & SKELETON_IN) && thinner_degree(t, row + x) == 1)
-				nremove = thinner_walk(t, row + x, remove, nremove, longest);
+				nremove = thinner_walk(t, row + x, remove, nremove, longest, scratch, &npending);
 	}
+	/* the branches listed by the walks as pending: judged by their junctions' dist2,
+	 * the loads independent of one another; the spurs' cells stay in remove, the
+	 * others' are taken out (the list in scratch is in the order of remove) */
+	for (int32_t k = 0; k < npending; k++) {
+		int32_t *e = scratch + 3 * k;
+		const double r = sqrt((double)t->dist2[thinner_unpadded(t, e[2])]);
+		e[2] = e[1] > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK; /* no spur */
+	}
+	int32_t kept = 0, from = 0;
+	for (int32_t k = 0; k < npending; k++) {
+		const int32_t *e = scratch + 3 * k;
+		if (!e[2])
+			continue;
+		memmove(remove + kept, remove + from, (size_t)(e[0] - from) * sizeof *remove);
+		kept += e[0] - from;
+		from = e[0] + e[1];
+	}
+	memmove(remove + kept, remove + from, (size_t)(nremove - from) * sizeof *remove);
+	nremove = kept + (nremove - from);
 	for (int32_t k = 0; k < nremove; k++)
 		t->state[remove[k]] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
 	/* only a cell next to a removed one has a new neighbourhood (every other was
@@ -620,6 +710,11 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 }
 
 /* ---------------------------------------------------------------- the skeleton */
+
+/* The histogram's split tables (skeleton_compute): values below THIN_SMALL, in
+ * THIN_SPLIT tables by column (a power of two). */
+#define THIN_SMALL 256 /* a power of two: a word of values below it ORs below it */
+#define THIN_SPLIT 8
 
 /* The working space of skeleton_compute, kept between calls so that computing the
  * skeleton of a grid of the same size again touches no new memory. */
@@ -685,7 +780,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	int32_t *start = wk->start, *order = wk->order;
 	/* the stack is scratch until the thinning: the transform's column distances
 	 * (2 bytes a cell of its 4; malloc'd memory takes the type it is written as) */
-	const int32_t maxd = skeleton_edt_count(g, s->dist2, start, (uint16_t *)(void *)wk->stack);
+	const int32_t maxd = skeleton_edt_count(g, s->dist2, NULL, (uint16_t *)(void *)wk->stack);
 	assert((size_t)maxd + 2 <= wk->start_cap);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
@@ -697,7 +792,17 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	}
 	thinner_init_tables(&t);
 
-	/* the padded state: the free cells in the set, the ring around the grid not */
+	/* the padded state: the free cells in the set, the ring around the grid not; and
+	 * the counting sort's histogram of dist2, start[d + 1] the free cells of value d.
+	 * Values below THIN_SMALL are counted in THIN_SPLIT tables by column, summed after
+	 * (each table padded so that no two share their low 12 address bits: 4K aliasing).
+	 * Counted in one table as the transform made each row (skeleton_edt_count's count),
+	 * each increment of a value waited for the last one's store: on a grid of few
+	 * values (the maze: six) the transform took 2.3-2.4 ms with its count at 1024 and
+	 * 1.0 without, and 37 and 18 ms at 4096; here, on rows read again, the state and
+	 * the histogram take 0.9 ms (0.3 of it the read) and 15. */
+	int32_t small[THIN_SPLIT][THIN_SMALL + 16];
+	memset(small, 0, sizeof small);
 	memset(t.state, 0, (size_t)t.pw);
 	memset(t.state + (size_t)(h + 1) * t.pw, 0, (size_t)t.pw + 3);
 	for (int32_t y = 0; y < h; y++) {
@@ -714,9 +819,27 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		}
 		for (; x < w; x++)
 			st[x + 1] = c[x] == GRID_FREE ? SKELETON_IN : 0;
+		/* the histogram of the row's dist2 (see the sort below) */
+		const int32_t *restrict d2 = s->dist2 + (size_t)y * w;
+		for (x = 0; x + THIN_SPLIT <= w; x += THIN_SPLIT) {
+			int32_t any = 0;
+			for (int j = 0; j < THIN_SPLIT; j++)
+				any |= d2[x + j];
+			if (any < THIN_SMALL)
+				for (int j = 0; j < THIN_SPLIT; j++)
+					small[j][d2[x + j]]++;
+			else
+				for (int j = 0; j < THIN_SPLIT; j++)
+					start[d2[x + j] + 1]++;
+		}
+		for (; x < w; x++)
+			start[d2[x] + 1]++;
 	}
-	/* counting sort of the cells by dist2, ties by index (the histogram of the free
-	 * cells came with the distance transform): the blocked cells, dist2 0, come first,
+	for (int32_t d = 1; d < THIN_SMALL && d <= maxd; d++)
+		for (int j = 0; j < THIN_SPLIT; j++)
+			start[d + 1] += small[j][d];
+	/* counting sort of the cells by dist2, ties by index (the histogram made with the
+	 * state above): the blocked cells, dist2 0, come first,
 	 * so that the loop needs no branch and no test, and the free ones follow in the
 	 * distance order. Four cells at a time: each bucket's next place is loaded for all
 	 * four before any is stored, and a cell's place counts the cells before it in the
