@@ -247,7 +247,10 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
  * straight line (a move may have halted), are tried, and the best match becomes
  * Utak's believed position. After a push every position is tried with the held
  * object beside it (it moves with Utak, halted or not); it is put down beside the
- * position found, and its squares then seen as floor leave the held set. Then the
+ * position found, shifted by a square on either axis where the impression shows it
+ * lagged or led his square (he rides with his point, not his square: a push halted
+ * a fraction of a square on, or gone astray), and its squares then seen as floor
+ * leave the held set. Then the
  * evidence is recorded there and the tree derived again. The result is in
  * m->report. */
 void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impression *imp);
