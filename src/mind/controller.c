@@ -511,6 +511,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 {
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
+	/* Only the corner push judges the object by its held squares (push_seat_finish). */
+	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER;
 	worldmodel_accommodate(&c->model, cmd, imp);
 	if (round_recognise_home(c))
 		c->model.report.corrected = true; /* placed by the first impression: re-plan */

@@ -1042,7 +1042,8 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
 	if (held) {
-		wm_register_held(m, ux, uy, held, under, imp);
+		if (m->register_held)
+			wm_register_held(m, ux, uy, held, under, imp);
 		wm_place(m, ux, uy, held, NULL);
 	}
 	free(held);
