@@ -349,7 +349,7 @@ static void arrive(Controller *c)
 	default:
 		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER) {
 			c->phase = PHASE_SEAT;
-			c->seat_axis = c->seat_pushes = 0;
+			c->seat_axis = c->seat_pushes = c->seat_misses = 0;
 		} else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
 		else if (objects_touching_target(c) && objects_misread(c, objects_find_target(c)) && goals_more_to_see(c)) {
@@ -440,28 +440,11 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			cmd->kind = MOTOR_RELEASE;
 			c->phase = PHASE_DONE;
 			return true;
-		case PHASE_SEAT: {
-			/* An axis along which touch feels the verge or a wall against
-			 * Utak himself is pressed home already: he cannot go that way. */
-			int sx, sy, dx = 0, dy = 0;
-			task_corner_signs(c->task.corner, &sx, &sy);
-			while (c->seat_axis < 2) {
-				dx = c->seat_axis == 0 ? sx : 0;
-				dy = c->seat_axis == 1 ? sy : 0;
-				if (!push_touch_blocked(c, dx, dy))
-					break;
-				c->seat_axis++;
-				c->seat_pushes = 0;
-			}
-			if (c->seat_axis == 2) {
-				push_seat_finish(c);
-				continue;
-			}
-			*cmd = (MotorCommand){.kind = MOTOR_PUSH, .dx = dx, .dy = dy};
-			c->seat_from = c->model.utak;
-			c->seat_pushes++;
-			return true;
-		}
+		case PHASE_SEAT:
+			if (push_seat_command(c, cmd))
+				return true;
+			push_seat_finish(c);
+			continue;
 		case PHASE_TRAVEL:
 		case PHASE_PUSH:
 			break;
@@ -528,6 +511,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 {
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
+	/* Only the corner push judges the object by its held squares (push_seat_finish). */
+	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER;
 	worldmodel_accommodate(&c->model, cmd, imp);
 	if (round_recognise_home(c))
 		c->model.report.corrected = true; /* placed by the first impression: re-plan */
@@ -551,7 +536,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	    goals_distance(c->model.utak, c->last_position) < 0.5 * hypot(cmd->dx, cmd->dy))
 		push_bump(c, cmd);
 	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && goals_distance(c->model.utak, c->last_position) < 0.05) {
-		if (++c->stuck >= CONTROLLER_STUCK_CYCLES) {
+		/* Seating, pushes that make no headway are expected and bounded (push_seat). */
+		if (++c->stuck >= CONTROLLER_STUCK_CYCLES && c->phase != PHASE_SEAT) {
 			c->phase = PHASE_FAILED;
 			snprintf(c->why, sizeof c->why, "stuck at (%.1f, %.1f): every way on is blocked", c->model.utak.x,
 				 c->model.utak.y);

@@ -267,14 +267,49 @@ bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const 
 
 /* ---- seating ---------------------------------------------------------------------- */
 
+/* push_seat_command(c, cmd): the next seating push: one square along the axis being
+ * pressed (0 east-west, then 1 north-south) toward the corner. An axis along which
+ * touch feels the verge or a wall against Utak himself is pressed home already: he
+ * cannot go that way. */
+bool push_seat_command(Controller *c, MotorCommand *cmd)
+{
+	int sx, sy;
+	task_corner_signs(c->task.corner, &sx, &sy);
+	while (c->seat_axis < 2) {
+		int dx = c->seat_axis == 0 ? sx : 0, dy = c->seat_axis == 1 ? sy : 0;
+		if (!push_touch_blocked(c, dx, dy)) {
+			*cmd = (MotorCommand){.kind = MOTOR_PUSH, .dx = dx, .dy = dy};
+			c->seat_from = c->model.utak;
+			c->seat_pushes++;
+			return true;
+		}
+		c->seat_axis++;
+		c->seat_pushes = c->seat_misses = 0;
+	}
+	return false;
+}
+
 /* push_seat(c): after a push that seats the object: on along this axis, or, when it
  * made no headway (pressed against a wall) or enough pushes were made, the next
- * axis (controller_decide judges the corner after the last). */
+ * axis (push_seat_finish judges the corner after the last). Under noisy motion a
+ * push that made no headway is tried again, CONTROLLER_SEAT_RETRIES times: the
+ * object pressed against the wall of the axis before, the error of a push along
+ * that wall turns it into the wall about every other time, and it halts at once
+ * (paper 3.5: Utak knows his motion errs, by the disparity, not which way). */
 void push_seat(Controller *c)
 {
-	if (goals_distance(c->model.utak, c->seat_from) >= 0.5 && c->seat_pushes < CONTROLLER_SEAT_PUSHES)
-		return;
-	c->seat_pushes = 0;
+	bool headway = goals_distance(c->model.utak, c->seat_from) >= 0.5;
+	if (c->seat_pushes < CONTROLLER_SEAT_PUSHES) {
+		if (headway) {
+			c->seat_misses = 0;
+			return;
+		}
+		if (worldmodel_motion_error(&c->model) > 0 && c->seat_misses < CONTROLLER_SEAT_RETRIES) {
+			c->seat_misses++;
+			return;
+		}
+	}
+	c->seat_pushes = c->seat_misses = 0;
 	c->seat_axis++;
 }
 

@@ -647,6 +647,54 @@ static void wm_regrow_held(WorldModel *m, const bool *was_floor)
 	}
 }
 
+/* wm_register_held(m, x, y, held, under, imp): after a push, Utak found on square
+ * (x, y): the held set shifted by the square (-1, 0 or 1 on each axis) that makes
+ * the impression fit best, when that fits better than the set unshifted by
+ * WORLDMODEL_DISPARITY_MARGIN: the disparity of paper 3.5, here of the object's
+ * place beside Utak. WHY: the held offsets are from Utak's square, but the object
+ * rides with his point, which lies anywhere in that square: a push that halts a
+ * fraction of a square on (pressed against a wall) or goes astray (noisy motion)
+ * can carry his point over a square's edge while the object's squares stay, or the
+ * other way round. Unshifted, the set then takes in a row of the wall the object
+ * is pressed against (and the object reads a square nearer the corner than it is:
+ * a false success), or a row of floor beyond it that a coarse cell half on the
+ * object cannot clear (paper 3.4.2). The box the set may regrow in shifts with it.
+ * COMPLEXITY: 9 predictions of the impression, O(held squares + 160) each. */
+static void wm_register_held(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under,
+                             const Impression *imp)
+{
+	int32_t compared;
+	double best = wm_score_holding(m, x, y, held, under, imp, &compared);
+	int32_t bx = 0, by = 0;
+	for (int32_t sy = -1; sy <= 1; sy++)
+		for (int32_t sx = -1; sx <= 1; sx++) {
+			if (sx == 0 && sy == 0)
+				continue;
+			for (int32_t j = 0; j < m->held_count; j++) {
+				m->held_dx[j] += sx;
+				m->held_dy[j] += sy;
+			}
+			double v = wm_score_holding(m, x, y, held, under, imp, &compared);
+			for (int32_t j = 0; j < m->held_count; j++) {
+				m->held_dx[j] -= sx;
+				m->held_dy[j] -= sy;
+			}
+			if (compared >= WORLDMODEL_MIN_COMPARED && v + WORLDMODEL_DISPARITY_MARGIN < best) {
+				best = v;
+				bx = sx;
+				by = sy;
+			}
+		}
+	for (int32_t j = 0; j < m->held_count; j++) {
+		m->held_dx[j] += bx;
+		m->held_dy[j] += by;
+	}
+	m->held_x0 += bx;
+	m->held_x1 += bx;
+	m->held_y0 += by;
+	m->held_y1 += by;
+}
+
 /* wm_vacate(m, from, saved): the held object's squares, Utak on `from`, leave their
  * places (predicted floor); their evidence goes to saved. */
 static void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
@@ -993,8 +1041,11 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
-	if (held)
+	if (held) {
+		if (m->register_held)
+			wm_register_held(m, ux, uy, held, under, imp);
 		wm_place(m, ux, uy, held, NULL);
+	}
 	free(held);
 	free(under);
 	bool *was_floor = held ? wm_floor_round_held(m) : NULL;

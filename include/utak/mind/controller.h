@@ -75,6 +75,11 @@
  * axis, each until one makes no headway (the eye places walls seen from afar a
  * square or two off; the object pressed against them is where they really are). */
 #define CONTROLLER_SEAT_PUSHES 8
+/* ... and, once motion has shown itself noisy (worldmodel_motion_error > 0), this
+ * many more tries along an axis after a push that made no headway: pressed against
+ * one wall, a push along it halts at once whenever its error (paper 3.5) turns it
+ * into that wall, though the way along it is open. */
+#define CONTROLLER_SEAT_RETRIES 2
 
 /* Shapes read lately (objects.c), by object ident and a key of the squares read. */
 #define CONTROLLER_MEMOS 64
@@ -165,7 +170,7 @@ typedef struct Controller {
 	int pushed_count;
 	/* Seating: the axis being pressed along (0 east-west, 1 north-south), the
 	 * pushes made along it, and where the last one set off. */
-	int seat_axis, seat_pushes;
+	int seat_axis, seat_pushes, seat_misses;
 	Vec2 seat_from;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */

@@ -28,6 +28,9 @@ bool push_goal(const Controller *c, const Grid *g, const int32_t *dist, const Ro
  * it from, for the push the task asks. */
 bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const RoomMap *rm, int32_t start_room,
 		     Vec2 *goal);
+/* push_seat_command(c, cmd): the next push that seats the object in the corner, one
+ * axis at a time; false when every axis is pressed home. */
+bool push_seat_command(Controller *c, MotorCommand *cmd);
 /* push_seat(c): after a seating push: on along this axis or on to the next. */
 void push_seat(Controller *c);
 /* push_seat_finish(c): both axes pressed: judge the corner before letting go. */

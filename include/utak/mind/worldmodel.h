@@ -191,6 +191,11 @@ typedef struct WorldModel {
 	/* The box of the held offsets when the object was taken (or last turned): the
 	 * set may regrow within it, and one square beyond (wm_regrow_held). */
 	int32_t held_x0, held_y0, held_x1, held_y1;
+	/* Set by the controller: after a push, put the held squares down where the
+	 * impression shows the object lagged or led Utak's square (wm_register_held).
+	 * Off while a carry (tasks (vi)-(ix), carrytask.h) follows the object as its
+	 * own polygon, which the squares' shift would part from the model's squares. */
+	bool register_held;
 	/* Idents of object nodes touch has shown to be wall (colour B, paper 3.4.2: an
 	 * occupied set apart from the verge may be a free-standing stretch of wall):
 	 * the screen counts their squares as verge (screen.c), rooms with them. */
@@ -247,7 +252,12 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
  * straight line (a move may have halted), are tried, and the best match becomes
  * Utak's believed position. After a push every position is tried with the held
  * object beside it (it moves with Utak, halted or not); it is put down beside the
- * position found, and its squares then seen as floor leave the held set. Then the
+ * position found (with m->register_held, shifted by a square on either axis where
+ * the impression shows it lagged or led his square: it rides with his point, not
+ * his square, and a push halted a fraction of a square on, or gone astray, can
+ * carry his point over a square's edge while its squares stay), and its squares
+ * then seen as floor
+ * leave the held set. Then the
  * evidence is recorded there and the tree derived again. The result is in
  * m->report. */
 void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impression *imp);
