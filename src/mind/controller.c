@@ -416,6 +416,42 @@ static double confident_reach(const Controller *c, Vec2 d, double len)
 	return 0;
 }
 
+/* snap_on_route(c, to): the centre of a square near the point to, where a short leg
+ * of travel toward the next waypoint ends. The centre of to's own square, unless
+ * that is the square Utak set off from on his last move and the waypoint is not in
+ * a strictly free straight line from it; then the nearest of the other centres
+ * round to from which it is (and which Utak reaches in one straight line), if any.
+ * WHY: the centre of to's own square may lie off the leg, beside a corner the leg
+ * passes, and from there the rest of the route is not strictly free (route_viable):
+ * the plan made again from there goes back to where he came from, whose next short
+ * leg snaps to the same square again, and Utak walks to and fro for ever (a square
+ * in a pocket of the wall, looked at from below a pier's corner). Only then is the
+ * rule changed: everywhere else the legs stay as they were. */
+static Vec2 snap_on_route(const Controller *c, Vec2 to)
+{
+	Vec2 own = goals_centre((int32_t)floor(to.x), (int32_t)floor(to.y));
+	Vec2 next = screen_from_model(&c->screen, c->route.pts[c->next]);
+	const Path *t = &c->trail;
+	if (t->count < 2 || goals_distance(own, t->pts[t->count - 2]) > 0.5 ||
+	    planner_segment_strict(&c->space, screen_from_model(&c->screen, own), next))
+		return own;
+	Vec2 here = screen_from_model(&c->screen, c->model.utak);
+	Vec2 best = own;
+	double best_d = INFINITY;
+	for (int k = 0; k < 4; k++) {
+		Vec2 q = goals_centre((int32_t)floor(to.x + (k & 1 ? 0.5 : -0.5)),
+				      (int32_t)floor(to.y + (k & 2 ? 0.5 : -0.5)));
+		Vec2 s = screen_from_model(&c->screen, q);
+		double dq = goals_distance(q, to);
+		if (goals_distance(q, own) > 0.5 && dq < best_d && goals_distance(q, c->model.utak) > CONTROLLER_ARRIVED &&
+		    planner_segment_strict(&c->space, here, s) && planner_segment_strict(&c->space, s, next)) {
+			best_d = dq;
+			best = q;
+		}
+	}
+	return best;
+}
+
 bool controller_decide(Controller *c, MotorCommand *cmd)
 {
 	*cmd = (MotorCommand){0};
@@ -477,7 +513,8 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			 * that moves are whole squares: shapes then keep their digital form
 			 * as they move, and the eye's next impression is predictable. */
 			Vec2 to = vec2_add(c->model.utak, vec2_scale(d, CONTROLLER_MAX_LEG / len));
-			Vec2 snapped = goals_centre((int32_t)floor(to.x), (int32_t)floor(to.y));
+			Vec2 snapped = c->phase == PHASE_TRAVEL ? snap_on_route(c, to)
+							      : goals_centre((int32_t)floor(to.x), (int32_t)floor(to.y));
 			if (goals_distance(snapped, c->model.utak) > CONTROLLER_ARRIVED)
 				d = vec2_sub(snapped, c->model.utak);
 			else

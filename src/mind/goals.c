@@ -24,6 +24,7 @@
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
+#include "utak/mind/tug.h"
 
 /* goals_reach(g, si, sj, dist): breadth-first steps over g's free cells, 4-connected
  * (the free space's topology, skeleton.h), from (si, sj); -1 where unreached. */
@@ -435,26 +436,13 @@ static bool goals_probe_joined(const Controller *c, const int32_t *dist, Vec2 *g
 			}
 			if (!joined || !corner)
 				continue;
-			int32_t px = x, py = y, at = j * s->w + i;
-			/* Beside a corner, in the open along the face, there is room to
-			 * stand and to draw an object back: that cell, where there is one. */
-			for (int t = 0; t < TOUCH_CELLS; t += 2) {
-				int32_t gx = x + goals_touch_offset[t][0], gy = y + goals_touch_offset[t][1];
-				int32_t gi = gx - s->x0, gj = gy - s->y0, walls = 0;
-				if (gi < 0 || gj < 0 || gi >= s->w || gj >= s->h || dist[gj * s->w + gi] < 0 ||
-				    worldmodel_belief(m, gx, gy) != BELIEF_FLOOR)
-					continue;
-				for (int u = 0; u < TOUCH_CELLS; u += 2)
-					walls += worldmodel_belief(m, gx + goals_touch_offset[u][0],
-								   gy + goals_touch_offset[u][1]) == BELIEF_OCCUPIED;
-				if (walls == 1) {
-					px = gx;
-					py = gy;
-					at = gj * s->w + gi;
-					break;
-				}
-			}
-			Vec2 here = goals_centre(px, py);
+			/* Utak stands on the corner itself: touch feels all eight squares
+			 * round him, both faces and the square between them, so what it
+			 * shows does not depend on which way he faces or came; where it
+			 * shows an object, goals_felt_tug then chooses where to draw it
+			 * back from. */
+			int32_t at = j * s->w + i;
+			Vec2 here = goals_centre(x, y);
 			bool visited = false;
 			for (int v = 0; v < c->visited_count && !visited; v++)
 				visited = goals_distance(here, c->visited[v]) < 0.5;
@@ -464,6 +452,45 @@ static bool goals_probe_joined(const Controller *c, const int32_t *dist, Vec2 *g
 				*goal = here;
 			}
 		}
+	return best_d < INFINITY;
+}
+
+/* goals_felt_tug(c, dist, goal): the nearest reachable floor cell, not yet reached,
+ * beside a square touch felt an object's colour on where the model holds no object
+ * (objects_feel), from which Utak can draw that object straight back TUG_STEP
+ * squares over floor, and not yet tugged at (tug.h): touch has shown an object
+ * against a wall there, and drawing it out is the way to see it. */
+static bool goals_felt_tug(const Controller *c, const int32_t *dist, Vec2 *goal)
+{
+	const WorldModel *m = &c->model;
+	const Screen *s = &c->screen;
+	static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+	double best_d = INFINITY;
+	if (c->task.kind == TASK_GO_ROUND || c->tug_tries >= TUG_TRIES)
+		return false; /* no tug is made (tug.h) */
+	for (int f = 0; f < c->felt_squares; f++) {
+		int32_t fx = c->felt_x[f], fy = c->felt_y[f], k = worldmodel_node_at(m, fx, fy);
+		if (worldmodel_belief(m, fx, fy) != BELIEF_OCCUPIED || (k >= 0 && m->node[k].kind == NODE_OBJECT) ||
+		    objects_square_listed(c->tugged_x, c->tugged_y, c->tugged_squares, fx, fy))
+			continue;
+		for (int d = 0; d < 4; d++) {
+			int32_t x = fx + step[d][0], y = fy + step[d][1], i = x - s->x0, j = y - s->y0;
+			if (i < 0 || j < 0 || i >= s->w || j >= s->h || dist[j * s->w + i] < 0)
+				continue;
+			bool way = true; /* the cell and TUG_STEP more straight back: floor */
+			for (int t = 0; t <= TUG_STEP && way; t++)
+				way = worldmodel_belief(m, x + t * step[d][0], y + t * step[d][1]) == BELIEF_FLOOR;
+			Vec2 here = goals_centre(x, y);
+			bool visited = false;
+			for (int v = 0; v < c->visited_count && !visited; v++)
+				visited = goals_distance(here, c->visited[v]) < 0.5;
+			double dd = goals_distance(here, m->utak) + 1e-3 * dist[j * s->w + i];
+			if (way && !visited && dd < best_d) {
+				best_d = dd;
+				*goal = here;
+			}
+		}
+	}
 	return best_d < INFINITY;
 }
 
@@ -766,14 +793,21 @@ void goals_choose(Controller *c, GoalResult *out)
 			bool have_unseen = goals_frontier(c, dist, &unseen);
 			bool have_coarse = k < 0 && goals_inspect(c, dist, &coarse);
 			if (!have_unseen && !have_coarse && k < 0)
-				have_coarse = goals_inspect_joined(c, dist, &coarse) ||
+				have_coarse = goals_inspect_joined(c, dist, &coarse) || goals_felt_tug(c, dist, &coarse) ||
 					      goals_probe_joined(c, dist, &coarse);
 			out->exploring = out->found = have_unseen || have_coarse;
 			if (have_unseen && have_coarse)
 				out->goal = GOALS_COARSE_FIRST * goals_distance(unseen, c->model.utak) <= goals_distance(coarse, c->model.utak) ? unseen : coarse;
 			else
 				out->goal = have_unseen ? unseen : coarse;
-			if (!out->found)
+			if (!out->found && k < 0 && c->tug_wedged > 0)
+				/* Touch showed an object against a wall, and it would not come
+				 * away: the eye cannot tell its squares from the wall's. */
+				snprintf(out->why, sizeof out->why,
+					 "no %s seen; touch felt an object against the wall at (%.1f, %.1f) that would not "
+					 "come away when drawn back: it may be the %s",
+					 shape, c->tug_wedged_at.x, c->tug_wedged_at.y, shape);
+			else if (!out->found)
 				snprintf(out->why, sizeof out->why,
 					 k >= 0 ? "cannot reach the %s: no free square beside it can be reached"
 						: "no %s seen, and nothing left unseen or seen only coarsely",

@@ -166,13 +166,32 @@ static bool listed(const int32_t *list, int n, int32_t ident)
 	return false;
 }
 
+bool objects_square_listed(const int32_t *xs, const int32_t *ys, int n, int32_t x, int32_t y)
+{
+	for (int i = 0; i < n; i++)
+		if (xs[i] == x && ys[i] == y)
+			return true;
+	return false;
+}
+
+void objects_note_square(int32_t *xs, int32_t *ys, int *n, int32_t x, int32_t y)
+{
+	if (*n < CONTROLLER_FELT_SQUARES && !objects_square_listed(xs, ys, *n, x, y)) {
+		xs[*n] = x;
+		ys[(*n)++] = y;
+	}
+}
+
 void objects_feel(Controller *c)
 {
 	int32_t ux, uy;
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	for (int i = 0; i < TOUCH_CELLS; i++) {
 		char colour = c->impression.touch[i];
-		int32_t k = worldmodel_node_at(&c->model, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]);
+		int32_t x = ux + goals_touch_offset[i][0], y = uy + goals_touch_offset[i][1];
+		int32_t k = worldmodel_node_at(&c->model, x, y);
+		if (colour >= 'A' && colour <= 'Z' && colour != 'B' && (k < 0 || c->model.node[k].kind != NODE_OBJECT))
+			objects_note_square(c->felt_x, c->felt_y, &c->felt_squares, x, y);
 		if (k < 0 || c->model.node[k].kind != NODE_OBJECT || colour < 'A' || colour > 'Z')
 			continue;
 		int32_t ident = (int32_t)c->model.node[k].ident;

@@ -46,8 +46,10 @@ static bool tug_begin(Controller *c, MotorCommand *cmd)
 		int32_t k = worldmodel_node_at(m, ux + dx, uy + dy);
 		if (worldmodel_belief(m, ux + dx, uy + dy) != BELIEF_OCCUPIED ||
 		    (k >= 0 && m->node[k].kind == NODE_OBJECT) || !tug_way_free(c, -dx, -dy, TUG_STEP) ||
+		    objects_square_listed(c->tugged_x, c->tugged_y, c->tugged_squares, ux + dx, uy + dy) ||
 		    !tug_applies(c))
 			continue;
+		objects_note_square(c->tugged_x, c->tugged_y, &c->tugged_squares, ux + dx, uy + dy);
 		c->tug_dx = -dx;
 		c->tug_dy = -dy;
 		c->tug_pulled = 0;
@@ -70,10 +72,18 @@ bool tug_decide(Controller *c, MotorCommand *cmd)
 	worldmodel_utak_square(m, &ux, &uy);
 	int32_t k = worldmodel_node_at(m, ux - c->tug_dx, uy - c->tug_dy);
 	bool freed = k >= 0 && m->node[k].kind == NODE_OBJECT;
-	if (!freed && c->tug_pulled + TUG_STEP <= TUG_MOST && tug_way_free(c, c->tug_dx, c->tug_dy, TUG_STEP)) {
+	/* A pull that left Utak where he was: the object does not come (it is
+	 * wedged, or the way is blocked), and pulling again would not move it. */
+	bool stuck = c->tug_stage == 2 && goals_distance(m->utak, c->tug_from) < TUG_STEP / 2.0;
+	if (stuck && !freed) {
+		c->tug_wedged++;
+		c->tug_wedged_at = goals_centre(ux - c->tug_dx, uy - c->tug_dy);
+	}
+	if (!freed && !stuck && c->tug_pulled + TUG_STEP <= TUG_MOST && tug_way_free(c, c->tug_dx, c->tug_dy, TUG_STEP)) {
 		*cmd = (MotorCommand){.kind = MOTOR_PUSH, .dx = TUG_STEP * c->tug_dx, .dy = TUG_STEP * c->tug_dy};
 		c->tug_pulled += TUG_STEP;
 		c->tug_stage = 2;
+		c->tug_from = m->utak;
 		return true;
 	}
 	*cmd = (MotorCommand){.kind = MOTOR_RELEASE};

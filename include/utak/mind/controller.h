@@ -102,6 +102,10 @@ typedef enum ControllerPhase {
 
 /* Objects remembered as once seen whole in the fovea (objects.h), at most. */
 #define CONTROLLER_EXAMINED 256
+/* Squares of occupied sets joined to the verge that touch has felt an object's
+ * colour on (objects_feel), and squares a tug has been tried at (tug.h), at most:
+ * a few per object against a wall. */
+#define CONTROLLER_FELT_SQUARES 64
 
 typedef struct Controller {
 	Task task;
@@ -178,6 +182,16 @@ typedef struct Controller {
 	 * pulled (a unit step, model frame), squares pulled, and tugs tried. */
 	int tug_stage;
 	int tug_dx, tug_dy, tug_pulled, tug_tries;
+	Vec2 tug_from;		/* where the last pull set off (believed, model frame) */
+	int tug_wedged;		/* tugs whose pull did not move Utak: the object stuck */
+	Vec2 tug_wedged_at;	/* ... the centre of the square grasped at the last */
+	/* Squares (model frame) of occupied sets the model does not hold to be
+	 * objects, where touch felt an object's colour (objects_feel), and those a
+	 * tug has been tried at, each at most once (tug.h). */
+	int32_t felt_x[CONTROLLER_FELT_SQUARES], felt_y[CONTROLLER_FELT_SQUARES];
+	int felt_squares;
+	int32_t tugged_x[CONTROLLER_FELT_SQUARES], tugged_y[CONTROLLER_FELT_SQUARES];
+	int tugged_squares;
 	ShapeMemo memo[CONTROLLER_MEMOS];
 	int memo_next;		/* the entry to write next (the oldest) */
 	char note[2048];	/* what this cycle's perception and planning did (and the plan) */

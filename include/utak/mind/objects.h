@@ -74,6 +74,14 @@ int32_t objects_find_target(Controller *c);
  * (wall_ident: the screen counts it as verge). */
 void objects_feel(Controller *c);
 bool objects_felt(const Controller *c, int32_t k);
+/* ... and the squares touch felt an object's colour on where the model holds no
+ * object (an occupied set joined to the verge: paper 3.4.2's ambiguity, which
+ * touch resolves there): c->felt_x, felt_y, kept for the whole task, so that
+ * what touch showed in passing is not lost (goals_felt_tug goes back to draw the
+ * object out, tug.h). objects_note_square adds a square to such a list once (a
+ * full list stays as it is); objects_square_listed says whether it is there. */
+void objects_note_square(int32_t *xs, int32_t *ys, int *n, int32_t x, int32_t y);
+bool objects_square_listed(const int32_t *xs, const int32_t *ys, int n, int32_t x, int32_t y);
 
 /* objects_wall(c, k): touch has felt node k as wall (B) and never as an object's
  * colour: a stretch of wall standing free, which the eye (gray levels only) takes

@@ -10,12 +10,22 @@
  * not having found it, touches an object's colour on a square the model holds to
  * be part of such a set, he grasps it and pulls it straight back, TUG_STEP squares
  * at a time, until the model sees the squares beside him as an object of their
- * own (or TUG_MOST squares, or the way back is not floor), and lets go. Then the
- * object is named like any other (objects.h), and the task goes on.
+ * own (or TUG_MOST squares, or the way back is not floor), and lets go. A pull
+ * that leaves Utak where he was ends the tug at once: the object is wedged (a
+ * square that fills its pocket exactly cannot come out when the pull goes the
+ * least astray, paper 3.5's noisy motion), and pulling again would not move it;
+ * the square grasped is not tugged at again, and the search's failure says where
+ * the object stuck (c->tug_wedged). Then the object is named like any other
+ * (objects.h), and the task goes on.
  *
  * Where to touch: goals.c sends Utak, as a last resort of the search, to the
- * corners of such sets (goals_inspect_joined): an object against a wall makes
- * corners in it. */
+ * corners of such sets (goals_probe_joined), standing on the corner itself: an
+ * object against a wall makes corners in it, and there touch feels both faces and
+ * the square between them. Every square of such a set touch has felt an object's
+ * colour on, then or in passing, is remembered (objects_feel, c->felt_x), and
+ * before any more corners are probed Utak goes to the nearest floor square beside
+ * one from which he can draw it straight back (goals_felt_tug): what touch showed
+ * does not depend on the way he faced or came. */
 #ifndef UTAK_TUG_H
 #define UTAK_TUG_H
 
