@@ -516,18 +516,6 @@ bool goals_more_to_see(Controller *c)
 	return more;
 }
 
-/* THE NEXT ROOM, as the judge counts rooms (judge.h, judgerooms.h): a door is a
- * narrowing between two spaces that each widen well beyond it. rooms.c cuts the
- * space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; its rooms
- * are merged by the verdict's rule restated on the model (carryroom.h, the same
- * code the carrying tasks use), so a bay or a wall stub is no next room. "In the
- * next room" means in another merged room (carryroom_merge: a side seen in part,
- * still narrow, counts as the same room) and past the door line: farther from each
- * such door's cell than half its width and GOALS_DOORWAY squares (the judge counts
- * the doorway, the passage between the faces of the narrowing, in no room). The
- * goal is the centre of the room beyond a door; a door kept only because a side of
- * it is seen in part (carryroom_merge_seen, undecided) is a place to look from,
- * once, not to claim. */
 /* run_distance(d, i, j): the distance from cell (i, j) to the run across door d.
  * The judge's doorway is the free space within a door square's clearance and a
  * square of it (judgerooms.h), and its door squares lie all along the narrowing,
@@ -550,6 +538,21 @@ static bool in_doorway(const RoomMap *rm, int32_t i, int32_t j)
 	return false;
 }
 
+/* THE NEXT ROOM, as the judge counts rooms (judge.h, judgerooms.h): a door is a
+ * narrowing between two spaces that each widen well beyond it. rooms.c cuts the
+ * space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; its rooms
+ * are merged by the verdict's rule restated on the model (carryroom.h, the same
+ * code the carrying tasks use), so a bay or a wall stub is no next room. "In the
+ * next room" means in another merged room (carryroom_merge: a side seen in part,
+ * still narrow, counts as the same room; so does a door whose width the eye has not
+ * settled, roomdoubt_next) and past the door line: farther from the run across each
+ * such door than half its width and GOALS_DOORWAY squares (the judge counts the
+ * doorway, the passage between the faces of the narrowing, in no room). The goal
+ * is the centre of the room beyond a door; an unsettled door's sides are looked at
+ * first (kept until reached), and with nothing left to look at it is gone through,
+ * exploring, once; a door kept only because a side of it is seen in part
+ * (carryroom_merge_seen, undecided) is a place to look from, once, not to claim.
+ * Returns whether out's goal is such a look at an unsettled door's side. */
 static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
 		      int32_t sj, int32_t ui, int32_t uj, GoalResult *out)
 {
