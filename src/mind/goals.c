@@ -543,49 +543,85 @@ bool goals_more_to_see(Controller *c)
 	return more;
 }
 
+/* run_distance(d, i, j): the distance from cell (i, j) to the run across door d.
+ * The judge's doorway is the free space within a door square's clearance and a
+ * square of it (judgerooms.h), and its door squares lie all along the narrowing,
+ * from face to face: near either end as near the middle. */
+static double run_distance(const RoomsDoor *d, int32_t i, int32_t j)
+{
+	double dx = d->bx - d->ax, dy = d->by - d->ay, l2 = dx * dx + dy * dy;
+	double t = l2 > 0 ? ((i - d->ax) * dx + (j - d->ay) * dy) / l2 : 0;
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	return hypot(i - (d->ax + t * dx), j - (d->ay + t * dy));
+}
+
+/* in_doorway(rm, i, j): cell (i, j) within a door's half width and GOALS_DOORWAY of
+ * the run across it, for any door of rm. */
+static bool in_doorway(const RoomMap *rm, int32_t i, int32_t j)
+{
+	for (int32_t d = 0; d < rm->rooms.door_count; d++)
+		if (run_distance(&rm->rooms.doors[d], i, j) <= rm->rooms.doors[d].width / 2.0 + GOALS_DOORWAY)
+			return true;
+	return false;
+}
+
 /* THE NEXT ROOM, as the judge counts rooms (judge.h, judgerooms.h): a door is a
  * narrowing between two spaces that each widen well beyond it. rooms.c cuts the
  * space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; its rooms
  * are merged by the verdict's rule restated on the model (carryroom.h, the same
  * code the carrying tasks use), so a bay or a wall stub is no next room. "In the
  * next room" means in another merged room (carryroom_merge: a side seen in part,
- * still narrow, counts as the same room) and past the door line: farther from each
- * such door's cell than half its width and GOALS_DOORWAY squares (the judge counts
- * the doorway, the passage between the faces of the narrowing, in no room). The
- * goal is the centre of the room beyond a door; a door kept only because a side of
- * it is seen in part (carryroom_merge_seen, undecided) is a place to look from,
- * once, not to claim. */
-static void next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
+ * still narrow, counts as the same room; so does a door whose width the eye has not
+ * settled, roomdoubt_next) and past the door line: farther from the run across each
+ * such door than half its width and GOALS_DOORWAY squares (the judge counts the
+ * doorway, the passage between the faces of the narrowing, in no room). The goal
+ * is the centre of the room beyond a door; an unsettled door's sides are looked at
+ * first (kept until reached), and with nothing left to look at it is gone through,
+ * exploring, once; a door kept only because a side of it is seen in part
+ * (carryroom_merge_seen, undecided) is a place to look from, once, not to claim.
+ * Returns whether out's goal is such a look at an unsettled door's side. */
+static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
 		      int32_t sj, int32_t ui, int32_t uj, GoalResult *out)
 {
 	const Screen *s = &c->screen;
 	int32_t start_room = rooms_at(&rm->rooms, si, sj), here_room = rooms_at(&rm->rooms, ui, uj);
 	if (start_room < 0)
-		return;
-	CarryRooms sure, seen;
+		return false;
+	CarryRooms sure, seen, plain;
 	carryroom_merge(rm, &sure);
+	carryroom_merge(rm, &plain);
 	carryroom_merge_seen(rm, s, &seen);
-	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room];
+	/* A door whose width the eye has not settled is none to claim by: its sides
+	 * are one room to `sure` (roomdoubt_next), and Utak looks at them first.
+	 * When nothing is left to look at, he still heads through it as through a
+	 * door (`plain`), exploring, once. */
+	Vec2 look;
+	bool jamb = roomdoubt_next(c, rm, &sure, start_room, dist, &look) == ROOMDOUBT_LOOK;
+	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room], pp = plain.merged[start_room];
 	bool past = here_room >= 0 && sure.merged[here_room] != sp;
 
-	double best_d[2] = {INFINITY, INFINITY};
-	int32_t best[2] = {-1, -1};
+	double best_d[3] = {INFINITY, INFINITY, INFINITY};
+	int32_t best[3] = {-1, -1, -1};
 	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
 		const RoomsDoor *door = &rm->rooms.doors[d];
 		int32_t pa = sure.merged[door->room_a], pb = sure.merged[door->room_b];
+		int32_t qa = plain.merged[door->room_a], qb = plain.merged[door->room_b];
 		int32_t ga = seen.merged[door->room_a], gb = seen.merged[door->room_b];
 		bool is_sure = pa != pb && (pa == sp || pb == sp), is_seen = ga != gb && (ga == ss || gb == ss);
-		if (!is_sure && !is_seen)
+		bool is_plain = qa != qb && (qa == pp || qb == pp);
+		if (!is_sure && !is_seen && !is_plain)
 			continue; /* inside a room, or not a door of the starting room */
-		if (hypot(ui - door->x, uj - door->y) <= door->width / 2.0 + GOALS_DOORWAY)
+		if (run_distance(door, ui, uj) <= door->width / 2.0 + GOALS_DOORWAY)
 			past = false;
 		if (!is_seen)
 			continue;
 		const RoomsRoom *room = &rm->rooms.rooms[ga == ss ? door->room_b : door->room_a];
-		int32_t other = ga == ss ? gb : ga, kind = is_sure ? 0 : 1;
-		if (kind == 1) { /* a look beyond an undecided door: once */
-			bool looked = false;
+		int32_t other = ga == ss ? gb : ga, kind = is_sure ? 0 : is_plain ? 2 : 1;
+		if (kind >= 1) { /* a look beyond an undecided or unsettled door: once */
+			/* Beyond an unsettled door, standing near its room's centre counts
+			 * too: the centre moves with the map as he comes near. */
 			Vec2 centre = goals_centre(s->x0 + room->x, s->y0 + room->y);
+			bool looked = kind == 2 && goals_distance(centre, c->model.utak) <= GOALS_LOOK + 1;
 			for (int v = 0; v < c->visited_count && !looked; v++)
 				looked = goals_distance(centre, c->visited[v]) <= GOALS_LOOK + 1;
 			if (looked)
@@ -595,6 +631,10 @@ static void next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 			int32_t i = k % g->w, j = k / g->w, r = rooms_at(&rm->rooms, i, j);
 			if (dist[k] < 0 || r < 0 || seen.merged[r] != other)
 				continue;
+			/* A goal he would claim on reaching: a cell of another room than
+			 * the start's by `sure`, and not in a doorway (as for `past`). */
+			if (kind == 0 && (sure.merged[r] == sp || in_doorway(rm, i, j)))
+				continue;
 			double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
 			if (dd < best_d[kind]) {
 				best_d[kind] = dd;
@@ -603,16 +643,22 @@ static void next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 		}
 	}
 	carryroom_free(&sure);
+	carryroom_free(&plain);
 	carryroom_free(&seen);
-	int32_t pick = best[0] >= 0 ? best[0] : best[1];
+	int32_t pick = best[0] >= 0 ? best[0] : best[2] >= 0 ? best[2] : best[1];
 	if (past) { /* already through a door and past its doorway: here will do */
 		out->found = true;
 		out->goal = goals_centre(s->x0 + ui, s->y0 + uj);
+	} else if (best[0] < 0 && jamb) {
+		out->found = out->exploring = true;
+		out->goal = look;
+		return true;
 	} else if (pick >= 0) {
 		out->found = true;
 		out->exploring = best[0] < 0;
 		out->goal = goals_centre(s->x0 + pick % g->w, s->y0 + pick / g->w);
 	}
+	return false;
 }
 
 /* unexamined(c, k, nearer, dist, goal): the reachable cell nearest a square not yet
@@ -667,6 +713,7 @@ void goals_choose(Controller *c, GoalResult *out)
 	int32_t start_room = rooms_at(&rm.rooms, si, sj), here_room = rooms_at(&rm.rooms, ui, uj);
 	const char *shape = task_shape_name(c->task.shape);
 	bool pushing = c->phase == PHASE_PUSH;
+	int32_t ri, rj;
 	switch (c->surveying ? TASK_GO_CORNER : c->task.kind) {
 	case TASK_GO_CORNER:
 		out->found = goals_corner(c, g, dist, &rm, start_room, &out->goal);
@@ -706,7 +753,17 @@ void goals_choose(Controller *c, GoalResult *out)
 				 task_corner_name(c->task.corner));
 		break;
 	case TASK_GO_NEXT_ROOM:
-		next_room(c, g, dist, &rm, si, sj, ui, uj, out);
+		/* A look at a door's unsettled side is kept until reached: the door
+		 * reads settled or not as the eye sees its sides from nearer or
+		 * farther, and he would go to and fro (roomdoubt_next). */
+		if (c->room_look && goals_cell_of(s, c->room_look_at, &ri, &rj) && dist[rj * g->w + ri] >= 0) {
+			out->goal = c->room_look_at;
+			out->exploring = out->found = true;
+			break;
+		}
+		c->room_look = next_room(c, g, dist, &rm, si, sj, ui, uj, out);
+		if (c->room_look)
+			c->room_look_at = out->goal;
 		if (!out->found) {
 			out->exploring = out->found = goals_frontier(c, dist, &out->goal);
 		}

@@ -12,7 +12,10 @@
  * run. roomdoubt_frontier: the unseen squares beside the start's room, each marking
  * the cells within view of it, then the nearest such cell of the room by steps.
  * roomdoubt_felt: for each object node not yet felt, a room map with it taken for
- * wall.
+ * wall. roomdoubt_next: for each door of the merged map, the squares within its
+ * clearance of its cell or beside its run's ends that face floor, unseen or seen
+ * only coarsely (the coarse ones weighed as in roomdoubt_jambs); the sides of
+ * each such door joined in the merged map.
  * MEMORY: a grid and a room map of the screen, freed before returning.
  * COMPLEXITY: O(w h) for the map, O(w h) for the candidates, O(w h) for each
  * goals_near over at most the candidates kept (the nearest first). */
@@ -530,4 +533,128 @@ RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal)
 		verdict = ROOMDOUBT_LOOK;
 	}
 	return verdict;
+}
+
+/* unsettled(c, rm, cr, q, dist, best, goal, look): whether door q of rm, a door of
+ * cr, may owe its narrowness to squares the eye has not settled (roomdoubt_next);
+ * each such square, when dist is given, a candidate for look_at (*look set when one
+ * is taken). */
+static bool unsettled(const Controller *c, const RoomMap *rm, const CarryRooms *cr, int32_t q, const int32_t *dist,
+		      double *best, Vec2 *goal, bool *look)
+{
+	const Screen *s = &c->screen;
+	const RoomsDoor *d = &rm->rooms.doors[q];
+	double reach = d->width / 2.0 + ROOMDOUBT_COARSE_CELL;
+	int32_t r = (int32_t)ceil(reach), coarsest[2] = {WORLDMODEL_RES_FOVEA, WORLDMODEL_RES_FOVEA};
+	int32_t i0 = (d->ax < d->bx ? d->ax : d->bx) - r, i1 = (d->ax > d->bx ? d->ax : d->bx) + r;
+	int32_t j0 = (d->ay < d->by ? d->ay : d->by) - r, j1 = (d->ay > d->by ? d->ay : d->by) + r;
+	i0 = i0 < 0 ? 0 : i0, j0 = j0 < 0 ? 0 : j0;
+	i1 = i1 >= s->w ? s->w - 1 : i1, j1 = j1 >= s->h ? s->h - 1 : j1;
+	bool unseen = false, coarse = false;
+	double c0 = sqrt((double)rm->skeleton.dist2[d->y * s->w + d->x]), near2 = (c0 + 1.5) * (c0 + 1.5);
+	for (int pass = 0; pass < 2; pass++) {
+		if (pass == 1) {
+			/* The unseen may be floor as far as it goes: the door's width is
+			 * not known. Squares seen coarsely may lie a cell less a square
+			 * back, the clearance half of that more on each side: if both
+			 * sides would still widen well beyond it, they cannot matter. */
+			if (!unseen && !coarse)
+				return false;
+			if (!unseen) {
+				double c1 = c0;
+				for (int end = 0; end < 2; end++)
+					c1 += coarsest[end] == WORLDMODEL_RES_PERIPHERAL     ? (ROOMDOUBT_COARSE_CELL - 1) / 2.0
+					      : coarsest[end] == WORLDMODEL_RES_INTERMEDIATE ? 0.5
+											     : 0;
+				if (jamb_wide(cr->peak[cr->merged[d->room_a]], c1) && jamb_wide(cr->peak[cr->merged[d->room_b]], c1))
+					return false;
+			}
+			if (!dist)
+				return true;
+		}
+		for (int32_t j = j0; j <= j1; j++)
+			for (int32_t i = i0; i <= i1; i++) {
+				int32_t x = s->x0 + i, y = s->y0 + j;
+				if (seg_dist2(i, j, d->ax, d->ay, d->bx, d->by) > reach * reach)
+					continue;
+				/* Only squares that set the door's clearance matter: within it
+				 * (and the diagonal's half square) of the door's cell, or beside
+				 * an end of the run across it. A face farther along the wall
+				 * leaves the width as it is. */
+				bool hidden = s->label[j * s->w + i] == SCREEN_UNKNOWN;
+				if ((i - d->x) * (i - d->x) + (j - d->y) * (j - d->y) > near2 &&
+				    (i - d->ax) * (i - d->ax) + (j - d->ay) * (j - d->ay) > 2 &&
+				    (i - d->bx) * (i - d->bx) + (j - d->by) * (j - d->by) > 2)
+					continue;
+				Evidence e = worldmodel_evidence(&c->model, x, y);
+				if (!hidden && (e.res >= WORLDMODEL_RES_FOVEA || worldmodel_belief(&c->model, x, y) != BELIEF_OCCUPIED))
+					continue;
+				bool faces = false;
+				for (int dd = 1; dd < 5 && !faces; dd++) {
+					int32_t u = i + (dd == 1) - (dd == 2), v = j + (dd == 3) - (dd == 4);
+					faces = u >= 0 && v >= 0 && u < s->w && v < s->h && s->label[v * s->w + u] == SCREEN_SPACE;
+				}
+				if (!faces)
+					continue;
+				/* A square Utak has stood near has been seen in the fovea (or
+				 * cannot be seen from there); a coarse one reads coarse again
+				 * only as the model forgets it, seen from afar (worldmodel.h,
+				 * WORLDMODEL_CONF_FORGET). Neither is looked at again. */
+				bool looked = false;
+				for (int v = 0; v < c->trail.count && !looked; v++)
+					looked = goals_distance(goals_centre(x, y), c->trail.pts[v]) <= GOALS_LOOK + 1;
+				if (pass == 1) {
+					if (!looked && look_at(c, dist, goals_centre(x, y), best, goal))
+						*look = true;
+					continue;
+				}
+				if (hidden) {
+					unseen = true;
+					continue;
+				}
+				if (looked)
+					continue;
+				coarse = true;
+				int end = (i - d->ax) * (i - d->ax) + (j - d->ay) * (j - d->ay) >
+					  (i - d->bx) * (i - d->bx) + (j - d->by) * (j - d->by);
+				coarsest[end] = e.res < coarsest[end] ? e.res : coarsest[end];
+			}
+	}
+	return true;
+}
+
+RoomDoubt roomdoubt_next(const Controller *c, const RoomMap *rm, CarryRooms *cr, int32_t room, const int32_t *dist,
+			 Vec2 *goal)
+{
+	const Rooms *r = &rm->rooms;
+	int32_t nd = r->door_count;
+	bool *join = util_alloc((size_t)(nd > 0 ? nd : 1), sizeof *join), look = false;
+	RoomDoubt verdict = ROOMDOUBT_NONE;
+	double best = INFINITY;
+	for (int32_t q = 0; q < nd; q++) {
+		int32_t a = cr->merged[r->doors[q].room_a], b = cr->merged[r->doors[q].room_b];
+		bool mine = room >= 0 && (a == cr->merged[room] || b == cr->merged[room]);
+		join[q] = a != b && unsettled(c, rm, cr, q, mine ? dist : NULL, &best, goal, &look);
+		if (join[q] && mine && verdict == ROOMDOUBT_NONE)
+			verdict = ROOMDOUBT_STUCK;
+	}
+	/* Join the two sides of each: the least name stands for both. */
+	for (int32_t q = 0; q < nd; q++) {
+		if (!join[q])
+			continue;
+		int32_t a = cr->merged[r->doors[q].room_a], b = cr->merged[r->doors[q].room_b];
+		int32_t lo = a < b ? a : b, hi = a < b ? b : a;
+		if (lo == hi)
+			continue;
+		for (int32_t k = 0; k < cr->count; k++)
+			if (cr->merged[k] == hi)
+				cr->merged[k] = lo;
+		cr->peak[lo] = fmax(cr->peak[lo], cr->peak[hi]);
+	}
+	for (int32_t q = 0; q < nd; q++) {
+		cr->door[q] = cr->door[q] && cr->merged[r->doors[q].room_a] != cr->merged[r->doors[q].room_b];
+		cr->undecided[q] = cr->undecided[q] && cr->door[q];
+	}
+	free(join);
+	return look ? ROOMDOUBT_LOOK : verdict;
 }

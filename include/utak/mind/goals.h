@@ -111,7 +111,7 @@ bool goals_more_to_see(Controller *c);
 
 /* "go next-room" (goals.c): a door as the judge counts one (carryroom.h's
  * restatement of its rule); "in the next room" is GOALS_DOORWAY squares beyond a
- * door's half width. */
+ * door's half width from the run across it (face to face). */
 #define GOALS_DOORWAY 2.0
 
 #endif

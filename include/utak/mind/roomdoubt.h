@@ -137,4 +137,27 @@ RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 towa
  * of the screen for each object node. */
 RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
 
+/* roomdoubt_next(c, rm, cr, room, dist, goal): for "go next-room", the doors of cr
+ * (rm's rooms merged by the verdict's rule) that may owe their narrowness to
+ * squares the eye has not settled are no doors to claim by: their two sides are
+ * joined in cr (merged, peak, door). A door is UNSETTLED when a square facing floor
+ * that may set its clearance (within that clearance and 1.5 of the door's cell, or
+ * beside an end of the run across it) is unseen (the space may go on there: the
+ * door's width is not known), or occupied and seen only coarsely, Utak never
+ * within GOALS_LOOK + 1 of it, and with those coarse faces set back as for
+ * roomdoubt_jambs a side would no longer widen well beyond it by the verdict's
+ * rule. A coarse cell across an object near a wall, or a small object merged with
+ * the unseen behind it, reads as a wall (paper 3.4.2); the judge counts objects
+ * as space, and where the eye has not looked it knows nothing: a claim through
+ * such a door is a false success. A square Utak has stood near has been seen in
+ * the fovea: read coarse again, it is only forgotten (worldmodel.h). For the
+ * doors of `room` (its merged room, before the joins), *goal is where to look
+ * from at the nearest such square not yet looked at (ROOMDOUBT_LOOK);
+ * ROOMDOUBT_STUCK when such doors are left with nothing to look at;
+ * ROOMDOUBT_NONE when there are none. COMPLEXITY: O(d (w + R)^2) for d doors of
+ * run length w and reach R, O(T) a square for a trail of T points, O(w h) for
+ * each look. */
+RoomDoubt roomdoubt_next(const Controller *c, const RoomMap *rm, CarryRooms *cr, int32_t room, const int32_t *dist,
+			 Vec2 *goal);
+
 #endif
