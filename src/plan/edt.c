@@ -1,6 +1,6 @@
 /* edt.c - the exact distance transform of a grid (paper 4.2: the clearance the
  * skeleton is the ridge of), squared Euclidean, in integers: skeleton_edt, and
- * skeleton_edt_count, which also gathers the histogram skeleton.c's counting sort needs.
+ * skeleton_edt_scratch, the same with the caller's scratch (skeleton.c's).
  *
  * ALGORITHM
  *    Meijster, Roerdink and Hesselink, "A general algorithm for
@@ -547,11 +547,11 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 	return largest;
 }
 
-/* skeleton_edt_count(g, dist2, count, up): skeleton_edt, also counting the free cells
- * of each dist2 value d in count[d + 1] when count is not NULL (the counting sort's
- * histogram, gathered while the values are made rather than in a pass of its own).
- * up is scratch of 2 w h bytes, or NULL to use dist2's own memory (see below). */
-int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint16_t *up)
+/* skeleton_edt_scratch(g, dist2, up): skeleton_edt with up as scratch of 2 w h bytes,
+ * or NULL to use dist2's own memory (see below). It once also counted each dist2
+ * value for the thinning's sort; counting here stalled on its own stores (skeleton.c,
+ * the histogram), so skeleton.c counts on rows read again. */
+int32_t skeleton_edt_scratch(const Grid *gr, int32_t *dist2, uint16_t *up)
 {
 	const int32_t w = gr->w, h = gr->h;
 	assert(w >= 0 && h >= 0 && w <= SKELETON_MAX_SIDE && h <= SKELETON_MAX_SIDE);
@@ -610,12 +610,7 @@ int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint1
 		int32_t *out = dist2 + (size_t)y * w;
 		const int32_t most = edt_row(&r, above + 2 * (size_t)y * w, out);
 		largest = most > largest ? most : largest;
-		if (count)
-			for (int32_t x = 0; x < w; x++)
-				count[out[x] + 1]++;
 	}
-	if (count)
-		count[1] = 0; /* the blocked cells, counted at 0 */
 	free(r.v.u);
 	free(r.v.G);
 	free(r.v.L);
@@ -632,5 +627,5 @@ int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint1
 
 int32_t skeleton_edt(const Grid *g, int32_t *dist2)
 {
-	return skeleton_edt_count(g, dist2, NULL, NULL);
+	return skeleton_edt_scratch(g, dist2, NULL);
 }

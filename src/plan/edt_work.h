@@ -9,10 +9,8 @@
 
 #include "utak/plan/grid.h"
 
-/* skeleton_edt_count(g, dist2, count, up): skeleton_edt (skeleton.h), also counting
- * the free cells of each dist2 value d in count[d + 1] when count is not NULL. up is
- * scratch of 2 w h bytes, or NULL to use dist2's own memory. Returns the largest
- * dist2. */
-int32_t skeleton_edt_count(const Grid *gr, int32_t *dist2, int32_t *count, uint16_t *up);
+/* skeleton_edt_scratch(g, dist2, up): skeleton_edt (skeleton.h) with up as scratch of
+ * 2 w h bytes, or NULL to use dist2's own memory. Returns the largest dist2. */
+int32_t skeleton_edt_scratch(const Grid *gr, int32_t *dist2, uint16_t *up);
 
 #endif

@@ -780,7 +780,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	int32_t *start = wk->start, *order = wk->order;
 	/* the stack is scratch until the thinning: the transform's column distances
 	 * (2 bytes a cell of its 4; malloc'd memory takes the type it is written as) */
-	const int32_t maxd = skeleton_edt_count(g, s->dist2, NULL, (uint16_t *)(void *)wk->stack);
+	const int32_t maxd = skeleton_edt_scratch(g, s->dist2, (uint16_t *)(void *)wk->stack);
 	assert((size_t)maxd + 2 <= wk->start_cap);
 
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
@@ -796,7 +796,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	 * the counting sort's histogram of dist2, start[d + 1] the free cells of value d.
 	 * Values below THIN_SMALL are counted in THIN_SPLIT tables by column, summed after
 	 * (each table padded so that no two share their low 12 address bits: 4K aliasing).
-	 * Counted in one table as the transform made each row (skeleton_edt_count's count),
+	 * Counted in one table as the transform made each row (the transform's former count),
 	 * each increment of a value waited for the last one's store: on a grid of few
 	 * values (the maze: six) the transform took 2.3-2.4 ms with its count at 1024 and
 	 * 1.0 without, and 37 and 18 ms at 4096; here, on rows read again, the state and
