@@ -295,6 +295,20 @@ static double seg_dist2(double px, double py, double ax, double ay, double bx, d
 	return ex * ex + ey * ey;
 }
 
+/* door_box(s, d, ...): the screen's squares within reach of door d's run across it,
+ * reach being half its width and a coarse cell (the squares that may set its width:
+ * roomdoubt_jambs and roomdoubt_next), as the box [i0, i1] x [j0, j1] clipped to the
+ * screen; returns reach. */
+static double door_box(const Screen *s, const RoomsDoor *d, int32_t *i0, int32_t *i1, int32_t *j0, int32_t *j1)
+{
+	double reach = d->width / 2.0 + ROOMDOUBT_COARSE_CELL;
+	int32_t r = (int32_t)ceil(reach);
+	*i0 = (d->ax < d->bx ? d->ax : d->bx) - r, *i1 = (d->ax > d->bx ? d->ax : d->bx) + r;
+	*j0 = (d->ay < d->by ? d->ay : d->by) - r, *j1 = (d->ay > d->by ? d->ay : d->by) + r;
+	*i0 = *i0 < 0 ? 0 : *i0, *j0 = *j0 < 0 ? 0 : *j0;
+	*i1 = *i1 >= s->w ? s->w - 1 : *i1, *j1 = *j1 >= s->h ? s->h - 1 : *j1;
+	return reach;
+}
 /* jamb_wide(peak, c): the verdict's door rule (carryroom.h) for one side. */
 static bool jamb_wide(double peak, double c)
 {
@@ -333,12 +347,8 @@ RoomDoubt roomdoubt_jambs(const Controller *c, const int32_t *dist, Vec2 *goal)
 		 * square back (roomdoubt.h), and the door's clearance grow by half of
 		 * each: if the start's room would still widen well beyond it by the
 		 * verdict's rule, they cannot matter. */
-		double reach = d->width / 2.0 + ROOMDOUBT_COARSE_CELL;
-		int32_t r = (int32_t)ceil(reach), coarsest[2] = {WORLDMODEL_RES_FOVEA, WORLDMODEL_RES_FOVEA};
-		int32_t i0 = (d->ax < d->bx ? d->ax : d->bx) - r, i1 = (d->ax > d->bx ? d->ax : d->bx) + r;
-		int32_t j0 = (d->ay < d->by ? d->ay : d->by) - r, j1 = (d->ay > d->by ? d->ay : d->by) + r;
-		i0 = i0 < 0 ? 0 : i0, j0 = j0 < 0 ? 0 : j0;
-		i1 = i1 >= s->w ? s->w - 1 : i1, j1 = j1 >= s->h ? s->h - 1 : j1;
+		int32_t i0, i1, j0, j1, coarsest[2] = {WORLDMODEL_RES_FOVEA, WORLDMODEL_RES_FOVEA};
+		double reach = door_box(s, d, &i0, &i1, &j0, &j1);
 		for (int pass = 0; pass < 2; pass++) {
 			if (pass == 1) {
 				if (coarsest[0] == WORLDMODEL_RES_FOVEA && coarsest[1] == WORLDMODEL_RES_FOVEA)
@@ -544,12 +554,8 @@ static bool unsettled(const Controller *c, const RoomMap *rm, const CarryRooms *
 {
 	const Screen *s = &c->screen;
 	const RoomsDoor *d = &rm->rooms.doors[q];
-	double reach = d->width / 2.0 + ROOMDOUBT_COARSE_CELL;
-	int32_t r = (int32_t)ceil(reach), coarsest[2] = {WORLDMODEL_RES_FOVEA, WORLDMODEL_RES_FOVEA};
-	int32_t i0 = (d->ax < d->bx ? d->ax : d->bx) - r, i1 = (d->ax > d->bx ? d->ax : d->bx) + r;
-	int32_t j0 = (d->ay < d->by ? d->ay : d->by) - r, j1 = (d->ay > d->by ? d->ay : d->by) + r;
-	i0 = i0 < 0 ? 0 : i0, j0 = j0 < 0 ? 0 : j0;
-	i1 = i1 >= s->w ? s->w - 1 : i1, j1 = j1 >= s->h ? s->h - 1 : j1;
+	int32_t i0, i1, j0, j1, coarsest[2] = {WORLDMODEL_RES_FOVEA, WORLDMODEL_RES_FOVEA};
+	double reach = door_box(s, d, &i0, &i1, &j0, &j1);
 	bool unseen = false, coarse = false;
 	double c0 = sqrt((double)rm->skeleton.dist2[d->y * s->w + d->x]), near2 = (c0 + 1.5) * (c0 + 1.5);
 	for (int pass = 0; pass < 2; pass++) {
