@@ -322,11 +322,32 @@ static bool other_frame(const Controller *c, int32_t k, double *aspect)
 	return other;
 }
 
+/* another_of_shape(c, k, &at): another object of the model than node k (not
+ * felt to be wall), as far from the start or farther, is read the task's shape
+ * (confirmed, a hypothesis or a guess, as objects_find_target counts them); at is
+ * its centroid (objects.h, ANOTHER OF THE SHAPE). Nearer ones are the loop above
+ * objects_doubt's. */
+static bool another_of_shape(Controller *c, int32_t k, Vec2 *at)
+{
+	double d = goals_distance(objects_read(c, k).centroid, c->start);
+	for (int32_t j = 0; j < c->model.node_count; j++) {
+		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j))
+			continue;
+		ObjectReading q = objects_read(c, j);
+		if (q.shape == c->task.shape && goals_distance(q.centroid, c->start) >= d) {
+			*at = q.centroid;
+			return true;
+		}
+	}
+	return false;
+}
+
 bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 {
 	ObjectReading o = objects_read(c, k);
 	const char *shape = task_shape_name(c->task.shape);
 	double aspect = 0;
+	Vec2 other;
 	/* Another of the shape nearer the start, not sure or not yet seen whole,
 	 * may be the one the task means. */
 	double d = goals_distance(o.centroid, c->start);
@@ -362,6 +383,9 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 	else if (o.confirmed && o.shape == c->task.shape && other_frame(c, k, &aspect))
 		snprintf(why, size, "a rectangle %.2f times as long as wide covers the %s's %d squares exactly too", aspect,
 			 shape, (int)o.squares);
+	else if (another_of_shape(c, k, &other))
+		snprintf(why, size, "another object, at (%.1f, %.1f), reads a %s too: this one may be a polygon of more corners over the same squares, and that one the %s",
+			 other.x, other.y, shape, shape);
 	else
 		return false;
 	return true;
