@@ -555,12 +555,33 @@ static double run_distance(const RoomsDoor *d, int32_t i, int32_t j)
 	return hypot(i - (d->ax + t * dx), j - (d->ay + t * dy));
 }
 
-/* in_doorway(rm, i, j): cell (i, j) within a door's half width and GOALS_DOORWAY of
- * the run across it, for any door of rm. */
+/* doorway_reach(rm, d, i, j): how far from the run across door d of rm cell (i, j)
+ * may still be in its doorway: half its width and GOALS_DOORWAY; and where the
+ * cell's clearance is no more than the door's (its chamfer's 8% and a square of the
+ * eye's slack over), GOALS_DOORWAY_LOW more. The judge's doorway is the low
+ * ground within a door square's clearance and a square of it, round EVERY door
+ * square (judgerooms.h): its door squares run along the line where the two floods
+ * meet, which need not be the straight run the model draws, and along a wall's or
+ * the verge's face every square is low, so the doorway runs on along the face
+ * (an open hall's edge: 13 squares and more). The judge's doorway holds no square
+ * higher than its door square's clearance and 0.2 (JUDGE_DOORWAY_SLACK), so the
+ * longer reach is only for cells no higher than that (with a square of slack),
+ * and no door square is higher than the door's saddle. */
+static double doorway_reach(const RoomMap *rm, const RoomsDoor *d, int32_t i, int32_t j)
+{
+	int32_t w = rm->rooms.w;
+	double c = sqrt((double)rm->skeleton.dist2[d->y * w + d->x]);
+	double here = sqrt((double)rm->skeleton.dist2[j * w + i]);
+	double reach = d->width / 2.0 + GOALS_DOORWAY;
+	return here <= 1.08 * c + 1.2 ? reach + GOALS_DOORWAY_LOW : reach;
+}
+
+/* in_doorway(rm, i, j): cell (i, j) within doorway_reach of the run across a door,
+ * for any door of rm. */
 static bool in_doorway(const RoomMap *rm, int32_t i, int32_t j)
 {
 	for (int32_t d = 0; d < rm->rooms.door_count; d++)
-		if (run_distance(&rm->rooms.doors[d], i, j) <= rm->rooms.doors[d].width / 2.0 + GOALS_DOORWAY)
+		if (run_distance(&rm->rooms.doors[d], i, j) <= doorway_reach(rm, &rm->rooms.doors[d], i, j))
 			return true;
 	return false;
 }
@@ -611,7 +632,7 @@ static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 		bool is_plain = qa != qb && (qa == pp || qb == pp);
 		if (!is_sure && !is_seen && !is_plain)
 			continue; /* inside a room, or not a door of the starting room */
-		if (run_distance(door, ui, uj) <= door->width / 2.0 + GOALS_DOORWAY)
+		if (run_distance(door, ui, uj) <= doorway_reach(rm, door, ui, uj))
 			past = false;
 		if (!is_seen)
 			continue;
