@@ -238,9 +238,12 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 	if (!start_rooms_build(c, &sr))
 		return ROOMDOUBT_NONE;
 	int32_t si = sr.si, sj = sr.sj;
-	int32_t a = rooms_at(&sr.rm.rooms, si, sj);
+	/* a0 the start's room of rooms.c, a its merged room: the doors' sides are
+	 * compared merged, as carryroom_merge_seen names them (the least index of a
+	 * merged set, which a0 need not be) */
+	int32_t a0 = rooms_at(&sr.rm.rooms, si, sj), a = a0 >= 0 ? sr.cr.merged[a0] : -1;
 	RoomDoubt verdict = ROOMDOUBT_NONE;
-	int64_t here = a >= 0 ? goals_room_corner_best(c, &sr.rm, a) : INT64_MAX;
+	int64_t here = a0 >= 0 ? goals_room_corner_best(c, &sr.rm, a0) : INT64_MAX;
 	double best = INFINITY;
 	for (int32_t q = 0; a >= 0 && q < sr.rm.rooms.door_count; q++) {
 		const RoomsDoor *d = &sr.rm.rooms.doors[q];
@@ -252,7 +255,7 @@ RoomDoubt roomdoubt_beyond(const Controller *c, const int32_t *dist, Vec2 *goal)
 		 * never seen beside it, scores above the best of the start's room. */
 		bool better = false;
 		for (int32_t k = 0; k < s->w * s->h && !better; k++) {
-			if (rooms_at(&sr.rm.rooms, k % s->w, k / s->w) != other)
+			if (carryroom_at(&sr.cr, &sr.rm, k % s->w, k / s->w) != other)
 				continue;
 			for (int dd = 0; dd < 5 && !better; dd++) {
 				int32_t x = k % s->w + (dd == 1) - (dd == 2), y = k / s->w + (dd == 3) - (dd == 4);
