@@ -373,9 +373,15 @@ bool push_touch_blocked(const Controller *c, int dx, int dy)
 
 /* push_in_circles(c): after a push, true when Utak has now stood on his square
  * CONTROLLER_CIRCLES times since he grasped: a plan that keeps failing the same way
- * (a wall the eye places a square off) goes round and round. It ends the push with
- * an honest failure: the world model that led him round cannot be trusted to say the
- * object is where it should be. */
+ * (a wall the eye places a square off) goes round and round. Into a corner, the push
+ * ends where it is with seating (PHASE_SEAT), as at the goal: the walls, not the
+ * model that led him round, place the object, and push_seat_finish judges the
+ * corner as ever. WHY: the plan that circles is often one at a gap the object
+ * crosses only pressed flush against its wall (w squares wide, off the grid it
+ * covers w + 1; the walls' seating puts it on the grid), or one that flips
+ * between a wall seen a square off from near and in place from far. Any other
+ * push ends with an honest failure: the world model that led him round cannot be
+ * trusted to say the object is where it should be. */
 bool push_in_circles(Controller *c)
 {
 	int32_t ux, uy, visits = 1;
@@ -389,6 +395,14 @@ bool push_in_circles(Controller *c)
 	if (visits < CONTROLLER_CIRCLES)
 		return false;
 	int64_t short_by = c->task.kind == TASK_PUSH_CORNER ? goals_corner_shortfall(c) : INT64_MAX;
+	if (c->task.kind == TASK_PUSH_CORNER) {
+		/* Into a corner: let the walls place the object, as at the goal
+		 * (PHASE_SEAT, which ends the push), from here; push_seat_finish
+		 * judges the corner after. */
+		c->phase = PHASE_SEAT;
+		c->seat_axis = c->seat_pushes = c->seat_misses = 0;
+		return true;
+	}
 	c->phase = PHASE_FAILED;
 	if (short_by == INT64_MAX || short_by <= 0)
 		snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)",

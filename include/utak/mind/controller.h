@@ -68,7 +68,8 @@
 /* Cycles without progress (the believed position unchanged) before giving up. */
 #define CONTROLLER_STUCK_CYCLES 4
 /* Pushes remembered, and how often a push may come back to the same square before
- * the controller calls it going round in circles. */
+ * the controller calls it going round in circles (push_in_circles: into a corner,
+ * the object is then seated from there; otherwise the task fails). */
 #define CONTROLLER_MAX_PUSHES 512
 #define CONTROLLER_CIRCLES 6
 /* Seating an object in a corner: at most this many one-square pushes along each

@@ -38,7 +38,8 @@ void push_seat_finish(Controller *c);
 /* push_touch_blocked(c, dx, dy): touch feels the verge or a wall one step (dx, dy) away. */
 bool push_touch_blocked(const Controller *c, int dx, int dy);
 /* push_in_circles(c): after a push: Utak has stood on this square too often since
- * he grasped; fails the task when so. */
+ * he grasped; true when so: into a corner he then seats the object from where he
+ * is (PHASE_SEAT), else the task fails. */
 bool push_in_circles(Controller *c);
 
 #endif
