@@ -394,7 +394,6 @@ bool push_in_circles(Controller *c)
 	}
 	if (visits < CONTROLLER_CIRCLES)
 		return false;
-	int64_t short_by = c->task.kind == TASK_PUSH_CORNER ? goals_corner_shortfall(c) : INT64_MAX;
 	if (c->task.kind == TASK_PUSH_CORNER) {
 		/* Into a corner: let the walls place the object, as at the goal
 		 * (PHASE_SEAT, which ends the push), from here; push_seat_finish
@@ -404,11 +403,7 @@ bool push_in_circles(Controller *c)
 		return true;
 	}
 	c->phase = PHASE_FAILED;
-	if (short_by == INT64_MAX || short_by <= 0)
-		snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)",
-			 task_shape_name(c->task.shape), c->model.utak.x, c->model.utak.y);
-	else
-		snprintf(c->why, sizeof c->why, "pushing the %s round in circles, %lld short of the %s",
-			 task_shape_name(c->task.shape), (long long)short_by, task_corner_name(c->task.corner));
+	snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)", task_shape_name(c->task.shape),
+		 c->model.utak.x, c->model.utak.y);
 	return true;
 }
