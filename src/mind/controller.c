@@ -551,6 +551,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	/* Only the corner push judges the object by its held squares (push_seat_finish). */
 	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER;
 	worldmodel_accommodate(&c->model, cmd, imp);
+	if (cmd->kind == MOTOR_GRASP)
+		c->grasp_shape = shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count);
 	if (round_recognise_home(c))
 		c->model.report.corrected = true; /* placed by the first impression: re-plan */
 	path_push(&c->trail, c->model.utak);

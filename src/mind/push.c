@@ -334,13 +334,42 @@ static bool held_room_doubt(Controller *c)
 	return d != ROOMDOUBT_NONE;
 }
 
+/* push_held_is_task_shape(c): what Utak holds is the task's shape: his held squares
+ * read as it, or they read as it when he grasped and now lie within the box they
+ * had then (shifted with them: wm_register_held) and one square beyond, its sides
+ * at most one square longer or shorter. WHY: a push only moves the object, rigid,
+ * with him; off the grid by a fraction (noisy motion, a push halted against a
+ * wall) an object w squares wide covers w or w + 1 columns, and the held set,
+ * registered on what the eye sees, can gain or lose a row at a wall it is pressed
+ * against, which a square's proportions (at most 1.2) do not survive at 4 or 5
+ * squares a side. Another object grasped with it shows at the grasp already; one
+ * taken in later lies beyond the box. */
+static bool push_held_is_task_shape(const Controller *c)
+{
+	const WorldModel *m = &c->model;
+	if (shape_of_squares(m->held_dx, m->held_dy, m->held_count) == c->task.shape)
+		return true;
+	if (c->grasp_shape != c->task.shape || m->held_count == 0 || m->held_x0 > m->held_x1)
+		return false;
+	int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+	for (int32_t j = 0; j < m->held_count; j++) {
+		x0 = m->held_dx[j] < x0 ? m->held_dx[j] : x0;
+		y0 = m->held_dy[j] < y0 ? m->held_dy[j] : y0;
+		x1 = m->held_dx[j] > x1 ? m->held_dx[j] : x1;
+		y1 = m->held_dy[j] > y1 ? m->held_dy[j] : y1;
+	}
+	int32_t w = x1 - x0, h = y1 - y0, bw = m->held_x1 - m->held_x0, bh = m->held_y1 - m->held_y0;
+	return x0 >= m->held_x0 - 1 && x1 <= m->held_x1 + 1 && y0 >= m->held_y0 - 1 && y1 <= m->held_y1 + 1 &&
+	       abs(w - bw) <= 1 && abs(h - bh) <= 1;
+}
+
 /* push_seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
  * holds, judged before he lets go; the corner claimed only when the model can tell it
  * is of the start's room, as for task (i). */
 void push_seat_finish(Controller *c)
 {
 	int64_t short_by = goals_corner_shortfall(c);
-	if (shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count) != c->task.shape) {
+	if (!push_held_is_task_shape(c)) {
 		/* What came along is not what the task named: another object touching
 		 * it was grasped, or the model lost part of it. */
 		c->phase = PHASE_FAILED;

@@ -5,7 +5,10 @@
 # plan on his squares can never take it through and goes round in circles; seating
 # from there (push.c, push_in_circles) presses it flush and slides it up along the
 # wall into the corner (the judge: 1 short, achieved). His held set keeps a row of
-# the wall after the last push, which halts part way: he doubts the shape.
+# the wall after the last push, which halts part way, and no longer reads as a
+# square; it read as one when grasped and has stayed within a square of that set's
+# box, which is what a rigid push allows (push.c, push_held_is_task_shape): he
+# claims it, rightly.
 table 44 34
 object square A 6.473 20.686 10.693 22.226 9.153 26.446 4.933 24.906
 object brick C 29.191 23.179 36.571 28.339 34.851 30.799 27.471 25.639

@@ -129,6 +129,7 @@ typedef struct Controller {
 	int32_t target;		/* the task's object: its model ident, 0 none */
 	Vec2 target_at;		/* ... and its centroid when last seen, model frame */
 	char doubt[160];	/* why the object grasped may not be the task's (objects_doubt), or empty */
+	Shape grasp_shape;	/* what the held squares read as when grasped (push_seat_finish) */
 	int32_t examined[CONTROLLER_EXAMINED]; /* idents of objects once seen whole in the fovea */
 	int examined_count;
 	int32_t felt[CONTROLLER_EXAMINED];  /* idents touch has shown to be objects (a letter not B) */
