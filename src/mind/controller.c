@@ -577,6 +577,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && goals_distance(c->model.utak, c->last_position) < 0.05) {
 		/* Seating, pushes that make no headway are expected and bounded (push_seat). */
 		if (++c->stuck >= CONTROLLER_STUCK_CYCLES && c->phase != PHASE_SEAT) {
+			if (push_seat_here(c))
+				return; /* into a corner: the walls place it (push.c) */
 			c->phase = PHASE_FAILED;
 			snprintf(c->why, sizeof c->why, "stuck at (%.1f, %.1f): every way on is blocked", c->model.utak.x,
 				 c->model.utak.y);

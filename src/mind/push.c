@@ -7,7 +7,9 @@
  * the screen eroded by the held squares), release. Into a corner, Utak first goes
  * to look at the corner (surveying, controller.c), and at the end seats the object
  * (PHASE_SEAT): one-square pushes along each axis until one makes no headway, so
- * that the walls, not the eye's estimate of them, place it. Squares a move or push
+ * that the walls, not the eye's estimate of them, place it; so too wherever the
+ * push's plan stops working, going round in circles or making no headway
+ * (push_seat_here). Squares a move or push
  * bumped into are remembered as blocked (a touch of a kind), but not the squares
  * of a pushed object's edge the eye has seen exactly floor: under noisy motion
  * (paper 3.5) the object drifts a fraction of a square off the grid and its corner
@@ -400,6 +402,16 @@ bool push_touch_blocked(const Controller *c, int dx, int dy)
 	return false;
 }
 
+/* push_seat_here(c): see push.h. */
+bool push_seat_here(Controller *c)
+{
+	if (c->task.kind != TASK_PUSH_CORNER || c->phase != PHASE_PUSH || c->carry || !c->model.holding)
+		return false;
+	c->phase = PHASE_SEAT;
+	c->seat_axis = c->seat_pushes = c->seat_misses = 0;
+	return true;
+}
+
 /* push_in_circles(c): after a push, true when Utak has now stood on his square
  * CONTROLLER_CIRCLES times since he grasped: a plan that keeps failing the same way
  * (a wall the eye places a square off) goes round and round. Into a corner, the push
@@ -423,14 +435,8 @@ bool push_in_circles(Controller *c)
 	}
 	if (visits < CONTROLLER_CIRCLES)
 		return false;
-	if (c->task.kind == TASK_PUSH_CORNER) {
-		/* Into a corner: let the walls place the object, as at the goal
-		 * (PHASE_SEAT, which ends the push), from here; push_seat_finish
-		 * judges the corner after. */
-		c->phase = PHASE_SEAT;
-		c->seat_axis = c->seat_pushes = c->seat_misses = 0;
+	if (push_seat_here(c))
 		return true;
-	}
 	c->phase = PHASE_FAILED;
 	snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)", task_shape_name(c->task.shape),
 		 c->model.utak.x, c->model.utak.y);

@@ -65,7 +65,8 @@
 #define CONTROLLER_MAX_VISITED 256
 /* Squares remembered as bumped into (later ones are dropped). */
 #define CONTROLLER_MAX_BUMPED 1024
-/* Cycles without progress (the believed position unchanged) before giving up. */
+/* Cycles without progress (the believed position unchanged) before giving up (a
+ * push into a corner is seated from there instead: push_seat_here). */
 #define CONTROLLER_STUCK_CYCLES 4
 /* Pushes remembered, and how often a push may come back to the same square before
  * the controller calls it going round in circles (push_in_circles: into a corner,
