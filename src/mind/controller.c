@@ -551,6 +551,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	/* Only the corner push judges the object by its held squares (push_seat_finish). */
 	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER;
 	worldmodel_accommodate(&c->model, cmd, imp);
+	if (cmd->kind == MOTOR_GRASP)
+		c->grasp_shape = shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count);
 	if (round_recognise_home(c))
 		c->model.report.corrected = true; /* placed by the first impression: re-plan */
 	path_push(&c->trail, c->model.utak);
@@ -575,6 +577,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if ((cmd->kind == MOTOR_MOVE || cmd->kind == MOTOR_PUSH) && goals_distance(c->model.utak, c->last_position) < 0.05) {
 		/* Seating, pushes that make no headway are expected and bounded (push_seat). */
 		if (++c->stuck >= CONTROLLER_STUCK_CYCLES && c->phase != PHASE_SEAT) {
+			if (push_seat_here(c))
+				return; /* into a corner: the walls place it (push.c) */
 			c->phase = PHASE_FAILED;
 			snprintf(c->why, sizeof c->why, "stuck at (%.1f, %.1f): every way on is blocked", c->model.utak.x,
 				 c->model.utak.y);

@@ -7,7 +7,9 @@
  * the screen eroded by the held squares), release. Into a corner, Utak first goes
  * to look at the corner (surveying, controller.c), and at the end seats the object
  * (PHASE_SEAT): one-square pushes along each axis until one makes no headway, so
- * that the walls, not the eye's estimate of them, place it. Squares a move or push
+ * that the walls, not the eye's estimate of them, place it; so too wherever the
+ * push's plan stops working, going round in circles or making no headway
+ * (push_seat_here). Squares a move or push
  * bumped into are remembered as blocked (a touch of a kind), but not the squares
  * of a pushed object's edge the eye has seen exactly floor: under noisy motion
  * (paper 3.5) the object drifts a fraction of a square off the grid and its corner
@@ -334,13 +336,42 @@ static bool held_room_doubt(Controller *c)
 	return d != ROOMDOUBT_NONE;
 }
 
+/* push_held_is_task_shape(c): what Utak holds is the task's shape: his held squares
+ * read as it, or they read as it when he grasped and now lie within the box they
+ * had then (shifted with them: wm_register_held) and one square beyond, its sides
+ * at most one square longer or shorter. WHY: a push only moves the object, rigid,
+ * with him; off the grid by a fraction (noisy motion, a push halted against a
+ * wall) an object w squares wide covers w or w + 1 columns, and the held set,
+ * registered on what the eye sees, can gain or lose a row at a wall it is pressed
+ * against, which a square's proportions (at most 1.2) do not survive at 4 or 5
+ * squares a side. Another object grasped with it shows at the grasp already; one
+ * taken in later lies beyond the box. */
+static bool push_held_is_task_shape(const Controller *c)
+{
+	const WorldModel *m = &c->model;
+	if (shape_of_squares(m->held_dx, m->held_dy, m->held_count) == c->task.shape)
+		return true;
+	if (c->grasp_shape != c->task.shape || m->held_count == 0 || m->held_x0 > m->held_x1)
+		return false;
+	int32_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+	for (int32_t j = 0; j < m->held_count; j++) {
+		x0 = m->held_dx[j] < x0 ? m->held_dx[j] : x0;
+		y0 = m->held_dy[j] < y0 ? m->held_dy[j] : y0;
+		x1 = m->held_dx[j] > x1 ? m->held_dx[j] : x1;
+		y1 = m->held_dy[j] > y1 ? m->held_dy[j] : y1;
+	}
+	int32_t w = x1 - x0, h = y1 - y0, bw = m->held_x1 - m->held_x0, bh = m->held_y1 - m->held_y0;
+	return x0 >= m->held_x0 - 1 && x1 <= m->held_x1 + 1 && y0 >= m->held_y0 - 1 && y1 <= m->held_y1 + 1 &&
+	       abs(w - bw) <= 1 && abs(h - bh) <= 1;
+}
+
 /* push_seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
  * holds, judged before he lets go; the corner claimed only when the model can tell it
  * is of the start's room, as for task (i). */
 void push_seat_finish(Controller *c)
 {
 	int64_t short_by = goals_corner_shortfall(c);
-	if (shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count) != c->task.shape) {
+	if (!push_held_is_task_shape(c)) {
 		/* What came along is not what the task named: another object touching
 		 * it was grasped, or the model lost part of it. */
 		c->phase = PHASE_FAILED;
@@ -371,11 +402,27 @@ bool push_touch_blocked(const Controller *c, int dx, int dy)
 	return false;
 }
 
+/* push_seat_here(c): see push.h. */
+bool push_seat_here(Controller *c)
+{
+	if (c->task.kind != TASK_PUSH_CORNER || c->phase != PHASE_PUSH || c->carry || !c->model.holding)
+		return false;
+	c->phase = PHASE_SEAT;
+	c->seat_axis = c->seat_pushes = c->seat_misses = 0;
+	return true;
+}
+
 /* push_in_circles(c): after a push, true when Utak has now stood on his square
  * CONTROLLER_CIRCLES times since he grasped: a plan that keeps failing the same way
- * (a wall the eye places a square off) goes round and round. It ends the push with
- * an honest failure: the world model that led him round cannot be trusted to say the
- * object is where it should be. */
+ * (a wall the eye places a square off) goes round and round. Into a corner, the push
+ * ends where it is with seating (PHASE_SEAT), as at the goal: the walls, not the
+ * model that led him round, place the object, and push_seat_finish judges the
+ * corner as ever. WHY: the plan that circles is often one at a gap the object
+ * crosses only pressed flush against its wall (w squares wide, off the grid it
+ * covers w + 1; the walls' seating puts it on the grid), or one that flips
+ * between a wall seen a square off from near and in place from far. Any other
+ * push ends with an honest failure: the world model that led him round cannot be
+ * trusted to say the object is where it should be. */
 bool push_in_circles(Controller *c)
 {
 	int32_t ux, uy, visits = 1;
@@ -388,13 +435,10 @@ bool push_in_circles(Controller *c)
 	}
 	if (visits < CONTROLLER_CIRCLES)
 		return false;
-	int64_t short_by = c->task.kind == TASK_PUSH_CORNER ? goals_corner_shortfall(c) : INT64_MAX;
+	if (push_seat_here(c))
+		return true;
 	c->phase = PHASE_FAILED;
-	if (short_by == INT64_MAX || short_by <= 0)
-		snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)",
-			 task_shape_name(c->task.shape), c->model.utak.x, c->model.utak.y);
-	else
-		snprintf(c->why, sizeof c->why, "pushing the %s round in circles, %lld short of the %s",
-			 task_shape_name(c->task.shape), (long long)short_by, task_corner_name(c->task.corner));
+	snprintf(c->why, sizeof c->why, "pushing the %s round in circles at (%.1f, %.1f)", task_shape_name(c->task.shape),
+		 c->model.utak.x, c->model.utak.y);
 	return true;
 }

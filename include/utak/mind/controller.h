@@ -65,10 +65,12 @@
 #define CONTROLLER_MAX_VISITED 256
 /* Squares remembered as bumped into (later ones are dropped). */
 #define CONTROLLER_MAX_BUMPED 1024
-/* Cycles without progress (the believed position unchanged) before giving up. */
+/* Cycles without progress (the believed position unchanged) before giving up (a
+ * push into a corner is seated from there instead: push_seat_here). */
 #define CONTROLLER_STUCK_CYCLES 4
 /* Pushes remembered, and how often a push may come back to the same square before
- * the controller calls it going round in circles. */
+ * the controller calls it going round in circles (push_in_circles: into a corner,
+ * the object is then seated from there; otherwise the task fails). */
 #define CONTROLLER_MAX_PUSHES 512
 #define CONTROLLER_CIRCLES 6
 /* Seating an object in a corner: at most this many one-square pushes along each
@@ -128,6 +130,7 @@ typedef struct Controller {
 	int32_t target;		/* the task's object: its model ident, 0 none */
 	Vec2 target_at;		/* ... and its centroid when last seen, model frame */
 	char doubt[160];	/* why the object grasped may not be the task's (objects_doubt), or empty */
+	Shape grasp_shape;	/* what the held squares read as when grasped (push_seat_finish) */
 	int32_t examined[CONTROLLER_EXAMINED]; /* idents of objects once seen whole in the fovea */
 	int examined_count;
 	int32_t felt[CONTROLLER_EXAMINED];  /* idents touch has shown to be objects (a letter not B) */

@@ -37,8 +37,16 @@ void push_seat(Controller *c);
 void push_seat_finish(Controller *c);
 /* push_touch_blocked(c, dx, dy): touch feels the verge or a wall one step (dx, dy) away. */
 bool push_touch_blocked(const Controller *c, int dx, int dy);
+/* push_seat_here(c): a push into a corner whose plan has stopped working (it goes
+ * round in circles, or its pushes make no headway: a wall the eye places a square
+ * off, or a gap the object crosses only flush against its wall) ends where it is
+ * with seating (PHASE_SEAT, as at the goal): the walls, not the model, place the
+ * object, and push_seat_finish judges the corner as ever. False, changing nothing,
+ * for any other task or phase. */
+bool push_seat_here(Controller *c);
 /* push_in_circles(c): after a push: Utak has stood on this square too often since
- * he grasped; fails the task when so. */
+ * he grasped; true when so: into a corner he then seats the object from where he
+ * is (PHASE_SEAT), else the task fails. */
 bool push_in_circles(Controller *c);
 
 #endif
