@@ -194,7 +194,30 @@ void wm_regrow_held(WorldModel *m, const bool *was_floor)
  * is pressed against (and the object reads a square nearer the corner than it is:
  * a false success), or a row of floor beyond it that a coarse cell half on the
  * object cannot clear (paper 3.4.2). The box the set may regrow in shifts with it.
+ * A shift that would put a held square on a square the model, the object lifted,
+ * surely believes occupied (the verge, a wall, another object) is not tried: two
+ * things do not share a square. WHY: an object pushed a fraction of a square off
+ * the grid covers a row more than it does pressed flush against a wall; after the
+ * push that presses it home (halted at once), its trailing row is floor and the
+ * set's extra row fits the impression as well inside the wall, occupied either
+ * way; shifted into the wall, the set read a square nearer the corner than the
+ * object is (on a corner cut off diagonally, where the wall does not stop the
+ * claim, a false success). Left in place, its trailing row, seen floor, is pruned
+ * (wm_prune_held).
  * COMPLEXITY: 9 predictions of the impression, O(held squares + 160) each. */
+/* held_on_solid(m, x, y): a held square, Utak on square (x, y), lies on a square the
+ * model surely believes occupied (seen, p >= 0.5, conf >= WM_BLOCKED_CONF): the
+ * object lifted (wm_vacate), something else. */
+static bool held_on_solid(const WorldModel *m, int32_t x, int32_t y)
+{
+	for (int32_t j = 0; j < m->held_count; j++) {
+		Evidence e = worldmodel_evidence(m, x + m->held_dx[j], y + m->held_dy[j]);
+		if (e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF)
+			return true;
+	}
+	return false;
+}
+
 void wm_register_held(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under,
                       const Impression *imp)
 {
@@ -203,7 +226,7 @@ void wm_register_held(WorldModel *m, int32_t x, int32_t y, const Evidence *held,
 	int32_t bx = 0, by = 0;
 	for (int32_t sy = -1; sy <= 1; sy++)
 		for (int32_t sx = -1; sx <= 1; sx++) {
-			if (sx == 0 && sy == 0)
+			if ((sx == 0 && sy == 0) || held_on_solid(m, x + sx, y + sy))
 				continue;
 			for (int32_t j = 0; j < m->held_count; j++) {
 				m->held_dx[j] += sx;

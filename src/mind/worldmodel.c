@@ -50,8 +50,6 @@
 #include "utak/mind/modeltree.h"
 #include "worldmodel_work.h"
 
-/* A candidate position on a square believed occupied this surely is not tried. */
-#define WM_BLOCKED_CONF 0.5
 /* ... and then to the candidate nearest the prediction: each square of distance
  * costs this much. */
 #define WM_DISTANCE_COST 1e-4

@@ -13,6 +13,11 @@
 /* A square's p is definite, and can be predicted, within this of 0 or 1. */
 #define WM_DEFINITE 0.1
 
+/* A candidate position on a square believed occupied this surely is not tried
+ * (worldmodel.c's disparity search), nor is a held set put down on one
+ * (wm_register_held). */
+#define WM_BLOCKED_CONF 0.5
+
 /* Own-frame offsets of the touch squares, in Impression.touch order. */
 extern const int8_t wm_touch_offset[TOUCH_CELLS][2];
 
