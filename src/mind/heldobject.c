@@ -182,6 +182,19 @@ void wm_regrow_held(WorldModel *m, const bool *was_floor)
 	}
 }
 
+/* held_on_solid(m, x, y): how many held squares, Utak on square (x, y), lie on
+ * squares the model surely believes occupied (seen, p >= 0.5, conf >= WM_BLOCKED_CONF):
+ * the object lifted (wm_vacate), by something else. */
+static int32_t held_on_solid(const WorldModel *m, int32_t x, int32_t y)
+{
+	int32_t n = 0;
+	for (int32_t j = 0; j < m->held_count; j++) {
+		Evidence e = worldmodel_evidence(m, x + m->held_dx[j], y + m->held_dy[j]);
+		n += e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF;
+	}
+	return n;
+}
+
 /* wm_register_held(m, x, y, held, under, imp): after a push, Utak found on square
  * (x, y): the held set shifted by the square (-1, 0 or 1 on each axis) that makes
  * the impression fit best, when that fits better than the set unshifted by
@@ -194,39 +207,29 @@ void wm_regrow_held(WorldModel *m, const bool *was_floor)
  * is pressed against (and the object reads a square nearer the corner than it is:
  * a false success), or a row of floor beyond it that a coarse cell half on the
  * object cannot clear (paper 3.4.2). The box the set may regrow in shifts with it.
- * A shift that would put a held square on a square the model, the object lifted,
- * surely believes occupied (the verge, a wall, another object) is not tried: two
- * things do not share a square. WHY: an object pushed a fraction of a square off
+ * A shift that would put more held squares than the unshifted set does on squares
+ * the model, the object lifted, surely believes occupied (the verge, a wall,
+ * another object) is not tried: two things do not share a square. (Not "any":
+ * under noisy motion the set may hold a column of the wall already, or miss one
+ * of the object's squares, which the model then still has occupied, and a shift
+ * along that wall must stay open.) WHY: an object pushed a fraction of a square off
  * the grid covers a row more than it does pressed flush against a wall; after the
  * push that presses it home (halted at once), its trailing row is floor and the
  * set's extra row fits the impression as well inside the wall, occupied either
  * way; shifted into the wall, the set read a square nearer the corner than the
- * object is (on a corner cut off diagonally, where the wall does not stop the
- * claim, a false success). Left in place, its trailing row, seen floor, is pruned
+ * object is (in a corner it cannot fill, a bay too small for it or one cut off
+ * diagonally, a false success). Left in place, its trailing row, seen floor, is pruned
  * (wm_prune_held).
  * COMPLEXITY: 9 predictions of the impression, O(held squares + 160) each. */
-/* held_on_solid(m, x, y): a held square, Utak on square (x, y), lies on a square the
- * model surely believes occupied (seen, p >= 0.5, conf >= WM_BLOCKED_CONF): the
- * object lifted (wm_vacate), something else. */
-static bool held_on_solid(const WorldModel *m, int32_t x, int32_t y)
-{
-	for (int32_t j = 0; j < m->held_count; j++) {
-		Evidence e = worldmodel_evidence(m, x + m->held_dx[j], y + m->held_dy[j]);
-		if (e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF)
-			return true;
-	}
-	return false;
-}
-
 void wm_register_held(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under,
                       const Impression *imp)
 {
 	int32_t compared;
 	double best = wm_score_holding(m, x, y, held, under, imp, &compared);
-	int32_t bx = 0, by = 0;
+	int32_t bx = 0, by = 0, solid = held_on_solid(m, x, y);
 	for (int32_t sy = -1; sy <= 1; sy++)
 		for (int32_t sx = -1; sx <= 1; sx++) {
-			if ((sx == 0 && sy == 0) || held_on_solid(m, x + sx, y + sy))
+			if ((sx == 0 && sy == 0) || held_on_solid(m, x + sx, y + sy) > solid)
 				continue;
 			for (int32_t j = 0; j < m->held_count; j++) {
 				m->held_dx[j] += sx;
