@@ -347,10 +347,9 @@ static void arrive(Controller *c)
 		}
 		return;
 	default:
-		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER) {
-			c->phase = PHASE_SEAT;
-			c->seat_axis = c->seat_pushes = c->seat_misses = 0;
-		} else if (c->phase == PHASE_PUSH)
+		if (c->phase == PHASE_PUSH && c->task.kind == TASK_PUSH_CORNER)
+			push_seat_begin(c);
+		else if (c->phase == PHASE_PUSH)
 			c->phase = PHASE_RELEASE;
 		else if (objects_touching_target(c) && objects_misread(c, objects_find_target(c)) && goals_more_to_see(c)) {
 			/* Beside one he would doubt: a look further first (goals.c). */

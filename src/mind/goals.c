@@ -573,7 +573,7 @@ static double doorway_reach(const RoomMap *rm, const RoomsDoor *d, int32_t i, in
 	double c = sqrt((double)rm->skeleton.dist2[d->y * w + d->x]);
 	double here = sqrt((double)rm->skeleton.dist2[j * w + i]);
 	double reach = d->width / 2.0 + GOALS_DOORWAY;
-	return here <= 1.08 * c + 1.2 ? reach + GOALS_DOORWAY_LOW : reach;
+	return here <= GOALS_DOORWAY_CHAMFER * c + GOALS_DOORWAY_SLACK ? reach + GOALS_DOORWAY_LOW : reach;
 }
 
 /* in_doorway(rm, i, j): cell (i, j) within doorway_reach of the run across a door,

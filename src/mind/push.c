@@ -402,13 +402,19 @@ bool push_touch_blocked(const Controller *c, int dx, int dy)
 	return false;
 }
 
+/* push_seat_begin(c): see push.h. */
+void push_seat_begin(Controller *c)
+{
+	c->phase = PHASE_SEAT;
+	c->seat_axis = c->seat_pushes = c->seat_misses = 0;
+}
+
 /* push_seat_here(c): see push.h. */
 bool push_seat_here(Controller *c)
 {
 	if (c->task.kind != TASK_PUSH_CORNER || c->phase != PHASE_PUSH || c->carry || !c->model.holding)
 		return false;
-	c->phase = PHASE_SEAT;
-	c->seat_axis = c->seat_pushes = c->seat_misses = 0;
+	push_seat_begin(c);
 	return true;
 }
 

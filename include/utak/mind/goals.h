@@ -117,5 +117,11 @@ bool goals_more_to_see(Controller *c);
  * (goals.c, doorway_reach): the judge's doorway runs along a face from every door
  * square, not only from the middle of the run. */
 #define GOALS_DOORWAY_LOW 2.0
+/* "No higher than the door's": a clearance at most this times the door's and
+ * GOALS_DOORWAY_SLACK over: the judge's chamfer distance reads up to 8% over the
+ * Euclidean one, and its doorway admits 0.2 over (JUDGE_DOORWAY_SLACK) plus a
+ * square the eye may misplace. */
+#define GOALS_DOORWAY_CHAMFER 1.08
+#define GOALS_DOORWAY_SLACK 1.2
 
 #endif

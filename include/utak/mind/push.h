@@ -37,6 +37,9 @@ void push_seat(Controller *c);
 void push_seat_finish(Controller *c);
 /* push_touch_blocked(c, dx, dy): touch feels the verge or a wall one step (dx, dy) away. */
 bool push_touch_blocked(const Controller *c, int dx, int dy);
+/* push_seat_begin(c): the push into a corner ends; seating begins (PHASE_SEAT,
+ * the first axis, no pushes yet). */
+void push_seat_begin(Controller *c);
 /* push_seat_here(c): a push into a corner whose plan has stopped working (it goes
  * round in circles, or its pushes make no headway: a wall the eye places a square
  * off, or a gap the object crosses only flush against its wall) ends where it is
