@@ -33,6 +33,7 @@
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
+#include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
@@ -254,6 +255,8 @@ static void arrive(Controller *c)
 	}
 	if (c->carry && carrytask_arrive(c))
 		return; /* the door or the corner seen from close by: now the object */
+	if (pushclear_arrive(c))
+		return; /* an object in the way of the corner: grasp it, or let it go */
 	switch (c->task.kind) {
 	case TASK_GO_NEXT_ROOM:
 		c->phase = PHASE_DONE;
@@ -355,7 +358,11 @@ static void arrive(Controller *c)
 			/* Beside one he would doubt: a look further first (goals.c). */
 		} else if (objects_touching_target(c)) {
 			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
-			if (!objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt))
+			/* Fetched again after clearing the way (pushclear.h), the doubt is
+			 * the one judged at the first grasp, with the object where it began:
+			 * the task means the one nearest the start then, and he has moved it
+			 * and the other since. */
+			if (c->clear_tries == 0 && !objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt))
 				c->doubt[0] = '\0';
 		}
 		else
@@ -472,8 +479,12 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			c->have_plan = false;
 			return true;
 		case PHASE_RELEASE:
+			if (pushclear_back_off(c, cmd))
+				return true; /* first drawn off what it is pressed against */
 			cmd->kind = MOTOR_RELEASE;
-			c->phase = PHASE_DONE;
+			/* Letting go to move an object out of the way, or having moved it,
+			 * the task goes on (pushclear.h). */
+			c->phase = pushclear_released(c) ? PHASE_TRAVEL : PHASE_DONE;
 			return true;
 		case PHASE_SEAT:
 			if (push_seat_command(c, cmd))

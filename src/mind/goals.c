@@ -20,6 +20,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
+#include "utak/mind/pushclear.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
@@ -816,6 +817,8 @@ void goals_choose(Controller *c, GoalResult *out)
 					 shape);
 			break;
 		}
+		if (pushclear_goal(c, dist, &rm, start_room, out))
+			break; /* an object in the way of the corner: move it (pushclear.h) */
 		if (!pushing && c->carry && carrytask_goal(c, dist, out))
 			break; /* tasks (vi)-(ix): look, survey, grasp for the whole carry */
 		if (!pushing) {

@@ -15,7 +15,8 @@
  * (paper 3.5) the object drifts a fraction of a square off the grid and its corner
  * catches on a neighbour the model already has. The corner is claimed
  * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
- * (push_seat_finish); the survey does not yet make (i)'s looks. */
+ * (push_seat_finish); the survey does not yet make (i)'s looks. Seated short, with
+ * another object in the way, Utak moves it out of the way first (pushclear.h). */
 #include "utak/mind/push.h"
 
 #include <math.h>
@@ -24,6 +25,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
 #include "utak/plan/cspace.h"
@@ -77,16 +79,27 @@ void push_cspace_of(const Controller *c, int32_t rx, int32_t ry, const int32_t *
 	Grid base;
 	grid_init(&base, s->w, s->h, GRID_BLOCKED);
 	memcpy(base.cells, s->free.cells, (size_t)s->w * (size_t)s->h);
-	int32_t *dx = util_alloc((size_t)n + 1, sizeof *dx), *dy = util_alloc((size_t)n + 1, sizeof *dy);
-	dx[0] = dy[0] = 0;
 	for (int32_t j = 0; j < n; j++) {
-		dx[j + 1] = ox[j];
-		dy[j + 1] = oy[j];
 		int32_t i2 = rx + ox[j] - s->x0, j2 = ry + oy[j] - s->y0;
 		if (i2 >= 0 && j2 >= 0 && i2 < s->w && j2 < s->h)
 			base.cells[j2 * s->w + i2] = GRID_FREE;
 	}
 	push_mark_bumped(c, &base);
+	push_cspace_on(&base, ox, oy, n, out);
+	grid_free(&base);
+}
+
+/* push_cspace_on(base, ox, oy, n, out): base (the squares Utak and what he holds may
+ * cover, screen cells) eroded by the footprint of his square and the n squares at
+ * offsets (ox, oy) from his (cspace.c). */
+void push_cspace_on(const Grid *base, const int32_t *ox, const int32_t *oy, int32_t n, Grid *out)
+{
+	int32_t *dx = util_alloc((size_t)n + 1, sizeof *dx), *dy = util_alloc((size_t)n + 1, sizeof *dy);
+	dx[0] = dy[0] = 0;
+	for (int32_t j = 0; j < n; j++) {
+		dx[j + 1] = ox[j];
+		dy[j + 1] = oy[j];
+	}
 	/* The footprint as row runs: sort by (dy, dx) (insertion sort: n is a few
 	 * dozen), then join neighbours in a row. */
 	for (int32_t a = 1; a <= n; a++)
@@ -110,12 +123,11 @@ void push_cspace_of(const Controller *c, int32_t rx, int32_t ry, const int32_t *
 		fp.run[fp.count++] = (CSpaceRun){dy[a], dx[a], dx[a]};
 	}
 	grid_free(out);
-	grid_init(out, s->w, s->h, GRID_BLOCKED);
-	cspace_erode_footprint(&base, &fp, out);
+	grid_init(out, base->w, base->h, GRID_BLOCKED);
+	cspace_erode_footprint(base, &fp, out);
 	cspace_footprint_free(&fp);
 	free(dx);
 	free(dy);
-	grid_free(&base);
 }
 
 /* push_space(c, out): the configuration space of Utak and what he holds. */
@@ -135,6 +147,8 @@ bool push_goal(const Controller *c, const Grid *g, const int32_t *dist, const Ro
 		      int32_t here_room, int32_t ui, int32_t uj, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
+	if (c->clear_stage == PUSHCLEAR_MOVE) /* an object out of the way of the corner (pushclear.h) */
+		return pushclear_place(c, g, dist, c->model.held_dx, c->model.held_dy, c->model.held_count, goal);
 	if (c->task.kind == TASK_PUSH_CORNER)
 		return goals_corner(c, g, dist, rm, start_room, goal);
 	if (c->task.kind == TASK_PUSH_NEXT_ROOM || c->task.kind == TASK_PUSH_THROUGH_DOOR)
@@ -171,9 +185,12 @@ bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const 
 		return false;
 	int32_t *sx = util_alloc((size_t)cap, sizeof *sx), *sy = util_alloc((size_t)cap, sizeof *sy);
 	int32_t *ox = util_alloc((size_t)cap, sizeof *ox), *oy = util_alloc((size_t)cap, sizeof *oy);
+	/* An object in the way of a corner (pushclear.h) lies beside the one pushed
+	 * there: only its own squares count, not the other's within its box. */
+	bool clearing = c->clear_stage == PUSHCLEAR_FETCH;
 	for (int32_t y = y0; y < y1; y++)
 		for (int32_t x = x0; x < x1; x++)
-			if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED) {
+			if (worldmodel_belief(m, x, y) == BELIEF_OCCUPIED && (!clearing || worldmodel_node_at(m, x, y) == k)) {
 				sx[count] = x;
 				sy[count++] = y;
 			}
@@ -182,7 +199,7 @@ bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const 
 	Grid cs = {0};
 	/* Candidates in order of steps from Utak: repeatedly the nearest untried. The
 	 * first that works will do, except for a corner, where all are weighed. */
-	bool corner = c->task.kind == TASK_PUSH_CORNER;
+	bool corner = c->task.kind == TASK_PUSH_CORNER && !clearing;
 	int64_t best_score = INT64_MIN, room_best = corner ? goals_room_corner_best(c, rm, start_room) : INT64_MIN;
 	for (int32_t d = 0, tried = 0; (!found || corner) && tried < 64;) {
 		int32_t best = -1;
@@ -230,8 +247,9 @@ bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const 
 				continue;
 			goals_reach(&cs, i, j, cdist);
 			Vec2 to;
-			if (!push_goal(c, &cs, cdist, rm, start_room, rooms_at(&rm->rooms, i, j), i, j, &to) ||
-			    goals_distance(to, goals_centre(rx, ry)) <= CONTROLLER_ARRIVED)
+			bool placed = clearing ? pushclear_place(c, &cs, cdist, ox, oy, count, &to)
+					       : push_goal(c, &cs, cdist, rm, start_room, rooms_at(&rm->rooms, i, j), i, j, &to);
+			if (!placed || goals_distance(to, goals_centre(rx, ry)) <= CONTROLLER_ARRIVED)
 				continue;
 			if (!corner) {
 				*goal = goals_centre(rx, ry);
@@ -377,8 +395,11 @@ void push_seat_finish(Controller *c)
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why, "what Utak pushed into the %s is not the %s",
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
-	} else if (short_by > CONTROLLER_CORNER_SLACK)
-		goals_corner_failed(c, short_by);
+	} else if (short_by > CONTROLLER_CORNER_SLACK) {
+		/* Another object in the way: moved out of it first (pushclear.h). */
+		if (!pushclear_begin(c, short_by))
+			goals_corner_failed(c, short_by);
+	}
 	else if (held_room_doubt(c)) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why,
@@ -412,6 +433,8 @@ void push_seat_begin(Controller *c)
 /* push_seat_here(c): see push.h. */
 bool push_seat_here(Controller *c)
 {
+	if (pushclear_stop(c))
+		return true; /* an object pushed out of the way: let go where it got to */
 	if (c->task.kind != TASK_PUSH_CORNER || c->phase != PHASE_PUSH || c->carry || !c->model.holding)
 		return false;
 	push_seat_begin(c);

@@ -83,6 +83,12 @@
  * into that wall, though the way along it is open. */
 #define CONTROLLER_SEAT_RETRIES 2
 
+/* Clearing the way into a corner (pushclear.h): another movable object that keeps
+ * the one pushed from the corner is moved out of the way at most this many times a
+ * task; the squares the pushed object would sweep into the corner, kept free of it,
+ * are at most this many. */
+#define CONTROLLER_CLEAR_TRIES 2
+#define CONTROLLER_CLEAR_KEEP 4096
 /* Shapes read lately (objects.c), by object ident and a key of the squares read. */
 #define CONTROLLER_MEMOS 64
 typedef struct ShapeMemo {
@@ -199,6 +205,16 @@ typedef struct Controller {
 	int memo_next;		/* the entry to write next (the oldest) */
 	char note[2048];	/* what this cycle's perception and planning did (and the plan) */
 	char why[300];		/* PHASE_FAILED: why */
+	/* Clearing the way into a corner (pushclear.h): the stage (PushClearStage),
+	 * clearings begun, the object moved out of the way (its model ident, and the
+	 * centre of its rectangle when last found), and the squares (model frame)
+	 * the task's object would sweep into the corner, where it must not be left. */
+	int clear_stage, clear_tries;
+	int32_t clear_ident;
+	Vec2 clear_at;
+	int32_t clear_keep_x[CONTROLLER_CLEAR_KEEP], clear_keep_y[CONTROLLER_CLEAR_KEEP];
+	int clear_keep_count;
+	int clear_back_x, clear_back_y; /* the push that draws the held object off first */
 	/* Tasks (vi)-(ix): carrying the object in (x, y, theta) (carrytask.h); NULL
 	 * for the others. */
 	struct CarryTask *carry;

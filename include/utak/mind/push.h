@@ -18,6 +18,9 @@ void push_bump(Controller *c, const MotorCommand *cmd);
  * square (rx, ry) holding the n squares at offsets (ox, oy) from his. */
 void push_cspace_of(const Controller *c, int32_t rx, int32_t ry, const int32_t *ox, const int32_t *oy, int32_t n,
 		    Grid *out);
+/* push_cspace_on(base, ox, oy, n, out): base (free where Utak and what he holds may
+ * be) eroded by the footprint of his square and the n squares at (ox, oy). */
+void push_cspace_on(const Grid *base, const int32_t *ox, const int32_t *oy, int32_t n, Grid *out);
 /* push_space(c, out): the configuration space of Utak and what he holds. */
 void push_space(Controller *c, Grid *out);
 /* push_goal(c, g, dist, rm, start_room, here_room, ui, uj, goal): where the held
