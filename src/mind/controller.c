@@ -575,6 +575,7 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 			      c->model.utak.x, c->model.utak.y);
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
+	n += pushclear_note(c, c->note + n, sizeof c->note - (size_t)n); /* a clearing begun: why */
 	if (c->tug_stage) {
 		snprintf(c->note + n, sizeof c->note - (size_t)n, "; tugging what touch shows is an object");
 		c->have_plan = false;

@@ -12,6 +12,7 @@
  * way meets first. */
 #include "utak/mind/pushclear.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -286,6 +287,7 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 		c->clear_at = vec2(s->x0 + (x0 + x1 + 1) / 2.0, s->y0 + (y0 + y1 + 1) / 2.0);
 		c->clear_back_x = bx;
 		c->clear_back_y = by;
+		c->clear_noted = false;
 		c->clear_keep_count = 0;
 		for (size_t at = 0; at < cells && c->clear_keep_count < CONTROLLER_CLEAR_KEEP; at++)
 			if (keep[at]) {
@@ -321,6 +323,17 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 	grid_free(&cs);
 	grid_free(&base);
 	return begun;
+}
+
+int pushclear_note(Controller *c, char *buf, size_t size)
+{
+	if (c->clear_noted || (c->clear_stage != PUSHCLEAR_RELEASE && c->clear_stage != PUSHCLEAR_FETCH) || size == 0)
+		return 0;
+	c->clear_noted = true;
+	int n = snprintf(buf, size, "; an object in the way of the %s, about (%.1f, %.1f): moving it out of the way (%d of %d)",
+			 task_corner_name(c->task.corner), c->clear_at.x, c->clear_at.y, c->clear_tries,
+			 CONTROLLER_CLEAR_TRIES);
+	return n < 0 ? 0 : n >= (int)size ? (int)size - 1 : n;
 }
 
 bool pushclear_released(Controller *c)

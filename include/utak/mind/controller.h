@@ -215,6 +215,7 @@ typedef struct Controller {
 	int32_t clear_keep_x[CONTROLLER_CLEAR_KEEP], clear_keep_y[CONTROLLER_CLEAR_KEEP];
 	int clear_keep_count;
 	int clear_back_x, clear_back_y; /* the push that draws the held object off first */
+	bool clear_noted;	/* the trace has said why this clearing began */
 	/* Tasks (vi)-(ix): carrying the object in (x, y, theta) (carrytask.h); NULL
 	 * for the others. */
 	struct CarryTask *carry;

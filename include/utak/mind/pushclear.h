@@ -55,6 +55,10 @@ bool pushclear_begin(Controller *c, int64_t short_by);
 /* pushclear_back_off(c, cmd): before letting go to clear the way, the push (once)
  * that draws the held object off what it is pressed against: true with it in cmd. */
 bool pushclear_back_off(Controller *c, MotorCommand *cmd);
+/* pushclear_note(c, buf, size): once a clearing, after its first command, a note
+ * for the trace saying why (buf gets "; ..." and the length is returned; 0 and
+ * nothing otherwise). */
+int pushclear_note(Controller *c, char *buf, size_t size);
 /* pushclear_released(c): Utak lets go (PHASE_RELEASE's command): true when the task
  * goes on (the next stage of a clearing), false when the release ends it. */
 bool pushclear_released(Controller *c);
