@@ -13,7 +13,10 @@
  * of B that the grown one does not meet, or a square of B's ring that the shrunk
  * one meets, or a cell seen after the push whose count lies outside what the two
  * allow (moved by d, and grown and shrunk by the slack too), drops the box. The
- * search is depth first, splitting the parameter that contributes most to R. */
+ * search is depth first, splitting the parameter that contributes most to R.
+ * When Utak's point is not known in his square, each place of the eye's grid is a
+ * bit of a box's mask, cleared where the box's cells contradict that place; the
+ * squares before the push, the same for every place, are weighed once a box. */
 #include "utak/mind/probe.h"
 
 #include <math.h>
