@@ -1,14 +1,17 @@
 /* test_probe.c - shape by motion (probe.h, paper 3.3; issue 13 items 1, 2 and 6),
  * against exact rasterisation: a polygon is projected onto squares by the TABLE's
- * own rule (geom_project, what the eye sees), pushed by a fraction of a square
- * (plus an error within the slack, as noisy motion would), and projected again;
- * probe_square_consistent is handed the squares before and the counts after, in
- * cells of 1 square (the fovea) or 2 x 2 (the intermediate zone).
+ * own rule (geom_project, what the eye sees), pushed to a quarter square's corners
+ * in turn (each push going astray as noisy motion would, motion.h), and projected
+ * again after each, on the eye's grid, which moves with Utak's point (somewhere in
+ * his square, not told to the test); probe_square_consistent is handed the squares
+ * before and the counts each look shows, in cells of 1 square (the fovea) or 2 x 2
+ * (the intermediate zone), placed as if the grid had not moved.
  *   A true square (a rectangle of aspect up to 1.2, the verdicts' square) at every
- *   angle in steps of 5 degrees and at sub-square offsets is never rejected.
- *   Worldgen's irregular pieces that Utak took for the square in four random
- *   worlds (their polygons copied here), each of which covers a square's squares
- *   standing still, are rejected by pushes of a quarter square diagonally. */
+ *   angle in steps of 5 degrees, at sub-square offsets, Utak's point anywhere in
+ *   his square, is never rejected, exact or noisy.
+ *   Worldgen's irregular pieces that Utak took for the square in random worlds
+ *   (their polygons copied here), each of which covers a square's squares
+ *   standing still, are rejected by two diagonal quarter-square pushes. */
 #include <math.h>
 #include <string.h>
 
