@@ -32,6 +32,7 @@
 #include "utak/mind/carrytask.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
+#include "utak/mind/probe.h"
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
@@ -284,8 +285,9 @@ static void arrive(Controller *c)
 				c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
 				snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
 					 task_shape_name(c->task.shape), doubt);
-			} else
-				c->phase = PHASE_DONE;
+			} else if (!probe_begin(c, objects_find_target(c))) {
+				c->phase = PHASE_DONE; /* else claimed, or dropped, by motion first */
+			}
 		} else
 			remember(c, c->goal); /* touch says the object is not here after all */
 		return;
@@ -464,11 +466,16 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	if (!c->has_task)
 		return false;
 	c->cycle++;
+	/* A square about to be claimed, confirmed by motion first (probe.h). */
+	if (probe_decide(c, cmd))
+		return true;
 	/* An object not yet told from the wall it leans on: touch and motion. */
 	if (tug_decide(c, cmd))
 		return true;
 	/* Step 8 and 9, a few times over if arriving changes the phase. */
 	for (int round = 0; round < 4; round++) {
+		if (probe_decide(c, cmd)) /* begun on arriving (arrive) */
+			return true;
 		switch (c->phase) {
 		case PHASE_DONE:
 		case PHASE_FAILED:
@@ -576,6 +583,11 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
 	n += pushclear_note(c, c->note + n, sizeof c->note - (size_t)n); /* a clearing begun: why */
+	if (probe_perceive(c, cmd, c->note + n, sizeof c->note - (size_t)n)) {
+		c->last_position = c->model.utak; /* its pushes are short by design */
+		c->stuck = 0;
+		return;
+	}
 	if (c->tug_stage) {
 		snprintf(c->note + n, sizeof c->note - (size_t)n, "; tugging what touch shows is an object");
 		c->have_plan = false;

@@ -9,6 +9,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/probe.h"
 #include "utak/mind/shapefit.h"
 
 static const char *doubt_own(const ObjectReading *o);
@@ -25,7 +26,7 @@ ObjectReading objects_read(Controller *c, int32_t k)
 {
 	const WorldModel *m = &c->model;
 	const ModelNode *n = &m->node[k];
-	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false};
+	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false, false};
 	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
 	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
 	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
@@ -96,6 +97,10 @@ ObjectReading objects_read(Controller *c, int32_t k)
 	if (!known && o.squares > 0 && o.foveal == o.squares && c->examined_count < CONTROLLER_EXAMINED)
 		c->examined[c->examined_count++] = (int32_t)n->ident, known = true;
 	o.examined = known;
+	if (o.shape == SHAPE_SQUARE && probe_disproved(c, (int32_t)n->ident, o.centroid)) {
+		o.shape = SHAPE_NONE;
+		o.disproved = true;
+	}
 	return o;
 }
 
@@ -358,7 +363,7 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 		if (goals_distance(q.centroid, c->start) >= d)
 			continue;
 		const Box *r = &c->model.node[j].rect;
-		bool unnamed_crumb = q.shape == SHAPE_NONE && q.squares >= OBJECTS_CRUMB_LEAST && q.squares <= OBJECTS_CRUMB &&
+		bool unnamed_crumb = q.shape == SHAPE_NONE && !q.disproved && q.squares >= OBJECTS_CRUMB_LEAST && q.squares <= OBJECTS_CRUMB &&
 				     r->hi.x - r->lo.x >= 3 && r->hi.y - r->lo.y >= 3;
 		if (!q.examined || unnamed_crumb || (q.shape == c->task.shape && doubt_own(&q))) {
 			snprintf(why, size, "what may be another %s lies nearer the start, at (%.1f, %.1f)", shape,

@@ -19,6 +19,7 @@
 #include "utak/impression.h"
 #include "utak/plan/path.h"
 #include "utak/mind/planner.h"
+#include "utak/mind/probe.h"
 #include "utak/mind/regions.h"
 #include "utak/mind/screen.h"
 #include "utak/mind/shape.h"
@@ -201,6 +202,8 @@ typedef struct Controller {
 	int felt_squares;
 	int32_t tugged_x[CONTROLLER_FELT_SQUARES], tugged_y[CONTROLLER_FELT_SQUARES];
 	int tugged_squares;
+	/* Shape by motion: the probe of the object about to be claimed (probe.h). */
+	ProbeRun probe;
 	ShapeMemo memo[CONTROLLER_MEMOS];
 	int memo_next;		/* the entry to write next (the oldest) */
 	char note[2048];	/* what this cycle's perception and planning did (and the plan) */

@@ -57,6 +57,8 @@ typedef struct ObjectReading {
 	double confidence; /* 1 confirmed; below, the share seen in the fovea, halved for a guess */
 	ShapeReading reading;
 	bool examined;     /* every square once seen in the fovea (now or before) */
+	bool disproved;    /* read the square, but a probe showed it is none (probe.h):
+			      its shape is then SHAPE_NONE */
 } ObjectReading;
 
 /* objects_read(c, k): what object node k is, by shape (cached). */

@@ -1,0 +1,598 @@
+/* probe.c - shape by motion: the test of whether what the eye saw before and after a
+ * push of a fraction of a square is what a square would show (paper 3.3; issue 13
+ * items 1, 2 and 6; the meaning and the method in probe.h). CONTROLLER SIDE.
+ *
+ * ALGORITHM. A rectangle Q is (angle a in [0, 90) degrees, sides w and h, centre c).
+ * It owns square (x, y) when it meets the square's open interior; for two convex
+ * sets that is: no separating axis among their edge normals, here the grid's x
+ * and y and Q's own u = (cos a, sin a) and v = (-sin a, cos a) (rect_meets). A box
+ * of parameters is a product of intervals; every rectangle in it lies within
+ * R = |dc| + dw/2 + dh/2 + da x (half the largest diagonal) of the box's middle
+ * rectangle Q0 (dc, dw, dh, da: the box's half-widths), so it contains Q0 shrunk
+ * by R on every side and lies within Q0 grown by R (both rectangles). A square
+ * of B that the grown one does not meet, or a square of B's ring that the shrunk
+ * one meets, or a cell seen after the push whose count lies outside what the two
+ * allow (moved by d, and grown and shrunk by the slack too), drops the box. The
+ * search is depth first, splitting the parameter that contributes most to R.
+ * When Utak's point is not known in his square, each place of the eye's grid is a
+ * bit of a box's mask, cleared where the box's cells contradict that place; the
+ * squares before the push, the same for every place, are weighed once a box. */
+#include "utak/mind/probe.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/eye.h"
+#include "utak/base/util.h"
+#include "utak/mind/controller.h"
+#include "utak/mind/goals.h"
+#include "utak/mind/objects.h"
+
+/* A rectangle to test squares against: centre, axis, half sides. */
+typedef struct ProbeRect {
+	double cx, cy, c, s, hw, hh;
+} ProbeRect;
+
+/* rect_meets(q, x, y): closed rectangle q meets the open square (x, x+1) x (y, y+1). */
+static bool rect_meets(const ProbeRect *q, int32_t x, int32_t y)
+{
+	if (q->hw <= 0 || q->hh <= 0)
+		return false;
+	double ex = q->hw * q->c + q->hh * q->s, ey = q->hw * q->s + q->hh * q->c;
+	if (q->cx + ex <= x || q->cx - ex >= x + 1 || q->cy + ey <= y || q->cy - ey >= y + 1)
+		return false;
+	/* Q's own axes; c, s >= 0 for a in [0, 90]. */
+	double uq = q->c * q->cx + q->s * q->cy, ucell = q->c * x + q->s * y;
+	if (uq + q->hw <= ucell || uq - q->hw >= ucell + q->c + q->s)
+		return false;
+	double vq = -q->s * q->cx + q->c * q->cy, vcell = -q->s * x + q->c * y;
+	if (vq + q->hh <= vcell - q->s || vq - q->hh >= vcell + q->c)
+		return false;
+	return true;
+}
+
+enum { P_A, P_W, P_H, P_X, P_Y, P_COUNT };
+
+/* A quarter turn, radians: a rectangle turned by it is one with its sides swapped. */
+#define PROBE_QUARTER 1.57079632679489661923
+
+/* The most places of the eye's grid tried: (PROBE_LOOKS + 1) pieces an axis. */
+#define PROBE_SHIFTS ((PROBE_LOOKS + 1) * (PROBE_LOOKS + 1))
+
+typedef struct ProbeBox {
+	double lo[P_COUNT], hi[P_COUNT];
+	uint32_t alive; /* the places of the eye's grid not yet ruled out in it (bits) */
+} ProbeBox;
+
+/* A square of the look before the push: owned (1) or not (0). */
+typedef struct ProbeSquare {
+	int32_t x, y, owned;
+} ProbeSquare;
+
+typedef struct ProbeSearch {
+	ProbeSquare *before; /* reordered as the search goes: the last to drop a box first */
+	int32_t nbefore;
+	const ProbeCell *cells;
+	int32_t ncells;
+	const ProbeLook *looks;
+	int32_t nlooks;
+	/* Place k of the eye's grid: look l's cells are squares (x, y) + shift[k][l]. */
+	int32_t shift[PROBE_SHIFTS][PROBE_LOOKS][2];
+	int nshifts;
+} ProbeSearch;
+
+/* box_radius(b, contrib): R for box b (above), and each parameter's share of it. */
+static double box_radius(const ProbeBox *b, double contrib[P_COUNT])
+{
+	double half_diag = 0.5 * hypot(b->hi[P_W], b->hi[P_H]);
+	contrib[P_A] = 0.5 * (b->hi[P_A] - b->lo[P_A]) * half_diag;
+	contrib[P_W] = 0.25 * (b->hi[P_W] - b->lo[P_W]);
+	contrib[P_H] = 0.25 * (b->hi[P_H] - b->lo[P_H]);
+	contrib[P_X] = 0.5 * (b->hi[P_X] - b->lo[P_X]);
+	contrib[P_Y] = 0.5 * (b->hi[P_Y] - b->lo[P_Y]);
+	return contrib[P_A] + contrib[P_W] + contrib[P_H] + hypot(contrib[P_X], contrib[P_Y]);
+}
+
+/* box_alive(s, b, r): the places of the eye's grid (among b->alive) for which some
+ * rectangle of the hypothesis in box b (radius r) may agree with all that was
+ * seen; 0 when every one contradicts it. */
+static uint32_t box_alive(ProbeSearch *s, const ProbeBox *b, double r)
+{
+	/* No rectangle in the box is square enough. */
+	if (b->lo[P_W] > PROBE_ASPECT * b->hi[P_H] || b->lo[P_H] > PROBE_ASPECT * b->hi[P_W])
+		return 0;
+	double a = 0.5 * (b->lo[P_A] + b->hi[P_A]);
+	double w = 0.5 * (b->lo[P_W] + b->hi[P_W]), h = 0.5 * (b->lo[P_H] + b->hi[P_H]);
+	double cx = 0.5 * (b->lo[P_X] + b->hi[P_X]), cy = 0.5 * (b->lo[P_Y] + b->hi[P_Y]);
+	double c = cos(a), sn = sin(a);
+	ProbeRect in = {cx, cy, c, sn, 0.5 * w - r, 0.5 * h - r};
+	ProbeRect out = {cx, cy, c, sn, 0.5 * w + r, 0.5 * h + r};
+	for (int32_t i = 0; i < s->nbefore; i++) {
+		ProbeSquare *q = &s->before[i];
+		if (q->owned ? !rect_meets(&out, q->x, q->y) : rect_meets(&in, q->x, q->y)) {
+			if (i > 0) { /* one step nearer the front: what drops boxes is tried early */
+				ProbeSquare t = s->before[i - 1];
+				s->before[i - 1] = *q;
+				*q = t;
+			}
+			return 0;
+		}
+	}
+	/* After each push: moved by its d, and by up to its slack more on each axis. */
+	ProbeRect in2[PROBE_LOOKS], out2[PROBE_LOOKS];
+	for (int32_t l = 0; l < s->nlooks; l++) {
+		double ra = r + s->looks[l].slack * sqrt(2.0);
+		Vec2 d = s->looks[l].d;
+		in2[l] = (ProbeRect){cx + d.x, cy + d.y, c, sn, 0.5 * w - ra, 0.5 * h - ra};
+		out2[l] = (ProbeRect){cx + d.x, cy + d.y, c, sn, 0.5 * w + ra, 0.5 * h + ra};
+	}
+	uint32_t alive = b->alive;
+	for (int g = 0; g < s->nshifts; g++) {
+		if (!(alive >> g & 1))
+			continue;
+		for (int32_t i = 0; i < s->ncells; i++) {
+			const ProbeCell *k = &s->cells[i];
+			int32_t least = 0, most = 0;
+			int32_t kx = k->x + s->shift[g][k->look][0], ky = k->y + s->shift[g][k->look][1];
+			for (int32_t y = ky; y < ky + k->size; y++)
+				for (int32_t x = kx; x < kx + k->size; x++) {
+					least += rect_meets(&in2[k->look], x, y);
+					most += rect_meets(&out2[k->look], x, y);
+				}
+			if (k->count < least || k->count > most) {
+				alive &= ~(1u << g);
+				break;
+			}
+		}
+	}
+	return alive;
+}
+
+static ProbeVerdict search(ProbeSearch *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1, int64_t budget);
+
+ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks,
+				     int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
+				     int64_t budget)
+{
+	if (nb <= 0 || nb > PROBE_MAX_SQUARES || nlooks < 0 || nlooks > PROBE_LOOKS)
+		return PROBE_UNDECIDED;
+	for (int32_t i = 0; i < ncells; i++)
+		if (cells[i].look < 0 || cells[i].look >= nlooks)
+			return PROBE_UNDECIDED;
+	int32_t x0 = bx[0], x1 = bx[0], y0 = by[0], y1 = by[0];
+	for (int32_t i = 1; i < nb; i++) {
+		x0 = bx[i] < x0 ? bx[i] : x0;
+		x1 = bx[i] > x1 ? bx[i] : x1;
+		y0 = by[i] < y0 ? by[i] : y0;
+		y1 = by[i] > y1 ? by[i] : y1;
+	}
+	/* B and its ring, in a window one square wider each way; the ring first: the
+	 * squares a rectangle must not reach drop most boxes. */
+	int32_t ww = x1 - x0 + 3, wh = y1 - y0 + 3;
+	uint8_t *mark = util_alloc((size_t)ww * (size_t)wh, 1);
+	memset(mark, 0, (size_t)ww * (size_t)wh);
+	for (int32_t i = 0; i < nb; i++)
+		mark[(by[i] - y0 + 1) * ww + (bx[i] - x0 + 1)] = 1;
+	ProbeSquare *before = util_alloc((size_t)ww * (size_t)wh, sizeof *before);
+	int32_t n = 0;
+	for (int pass = 0; pass < 2; pass++)
+		for (int32_t j = 0; j < wh; j++)
+			for (int32_t i = 0; i < ww; i++) {
+				bool owned = mark[j * ww + i];
+				bool ring = false;
+				for (int32_t dj = -1; dj <= 1 && !owned && !ring; dj++)
+					for (int32_t di = -1; di <= 1 && !ring; di++) {
+						int32_t ii = i + di, jj = j + dj;
+						ring = ii >= 0 && jj >= 0 && ii < ww && jj < wh && mark[jj * ww + ii];
+					}
+				if ((pass == 0 && ring) || (pass == 1 && owned))
+					before[n++] = (ProbeSquare){x0 - 1 + i, y0 - 1 + j, owned};
+			}
+	ProbeSearch *s = util_alloc(1, sizeof *s);
+	*s = (ProbeSearch){before, n, cells, ncells, looks, nlooks, {{{0}}}, 1};
+	if (unplaced) {
+		/* Utak's point is somewhere in his square, (f, g) from its lower-left
+		 * corner; after look l's push it is in the square floor(f + d.x),
+		 * floor(g + d.y) from his first, and the eye's grid with it. Each axis
+		 * is cut where one of those changes; a place of the grid for each piece
+		 * of the one axis with each of the other. */
+		double cut[2][PROBE_LOOKS + 2];
+		int ncut[2];
+		for (int a = 0; a < 2; a++) {
+			ncut[a] = 0;
+			cut[a][ncut[a]++] = 0;
+			for (int32_t l = 0; l < nlooks; l++) {
+				double d = a == 0 ? looks[l].d.x : looks[l].d.y;
+				double t = -d - floor(-d); /* floor(f + d) changes at f = t */
+				if (t > 0)
+					cut[a][ncut[a]++] = t;
+			}
+			cut[a][ncut[a]++] = 1;
+			for (int i = 1; i < ncut[a]; i++) /* insertion sort: a few cuts */
+				for (int j = i; j > 0 && cut[a][j - 1] > cut[a][j]; j--) {
+					double t = cut[a][j];
+					cut[a][j] = cut[a][j - 1];
+					cut[a][j - 1] = t;
+				}
+		}
+		s->nshifts = 0;
+		for (int i = 0; i + 1 < ncut[0]; i++)
+			for (int j = 0; j + 1 < ncut[1]; j++) {
+				if (cut[0][i + 1] - cut[0][i] <= 0 || cut[1][j + 1] - cut[1][j] <= 0)
+					continue; /* two cuts at one place */
+				double f = 0.5 * (cut[0][i] + cut[0][i + 1]), g = 0.5 * (cut[1][j] + cut[1][j + 1]);
+				bool allowed = true;
+				for (int32_t l = 0; l < nlooks; l++) {
+					int32_t sx = (int32_t)floor(f + looks[l].d.x), sy = (int32_t)floor(g + looks[l].d.y);
+					s->shift[s->nshifts][l][0] = sx;
+					s->shift[s->nshifts][l][1] = sy;
+					allowed &= abs(sx) <= 1 && abs(sy) <= 1 && (looks[l].shifts >> ((sy + 1) * 3 + sx + 1) & 1);
+				}
+				s->nshifts += allowed;
+			}
+	}
+	ProbeVerdict verdict = search(s, x0, y0, x1, y1, budget);
+	free(s);
+	free(before);
+	free(mark);
+	return verdict;
+}
+
+/* search(s, x0, y0, x1, y1, budget): branch and bound (above) for B in the box
+ * x0..x1, y0..y1 (squares), every place of the eye's grid at once (a box carries
+ * those not yet ruled out in it), at most `budget` boxes. */
+static ProbeVerdict search(ProbeSearch *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1, int64_t budget)
+{
+	/* The rectangle lies within B's squares: its centre in their box, its sides
+	 * no longer than the box's diagonal. */
+	double most_side = hypot(x1 - x0 + 1, y1 - y0 + 1);
+	enum { STACK = 1024 };
+	ProbeBox *stack = util_alloc(STACK, sizeof *stack);
+	int top = 0;
+	ProbeVerdict verdict = PROBE_INCONSISTENT;
+	if (most_side >= PROBE_MIN_SIDE) {
+		stack[top++] = (ProbeBox){{0, PROBE_MIN_SIDE, PROBE_MIN_SIDE, x0, y0},
+					  {PROBE_QUARTER, most_side, most_side, x1 + 1, y1 + 1},
+					  (uint32_t)((1ull << s->nshifts) - 1)};
+	}
+	int64_t visited = 0;
+	while (top > 0) {
+		if (++visited > budget) {
+			verdict = PROBE_UNDECIDED;
+			break;
+		}
+		ProbeBox b = stack[--top];
+		double contrib[P_COUNT];
+		double r = box_radius(&b, contrib);
+		b.alive = box_alive(s, &b, r);
+		if (!b.alive)
+			continue;
+		if (r < PROBE_EPS) {
+			verdict = PROBE_CONSISTENT;
+			break;
+		}
+		int split = 0;
+		for (int k = 1; k < P_COUNT; k++)
+			if (contrib[k] > contrib[split])
+				split = k;
+		if (top + 2 > STACK) { /* cannot happen: depth is bounded by log2(range / EPS) */
+			verdict = PROBE_UNDECIDED;
+			break;
+		}
+		double mid = 0.5 * (b.lo[split] + b.hi[split]);
+		ProbeBox lo = b, hi = b;
+		lo.hi[split] = mid;
+		hi.lo[split] = mid;
+		stack[top++] = hi;
+		stack[top++] = lo;
+	}
+	free(stack);
+	return verdict;
+}
+
+/* ---- the probe in the action cycle (probe.h) --------------------------------------- */
+
+/* window_floor(p, x, y): square (x, y) was floor before the probe (inside the window). */
+static bool window_floor(const ProbeRun *p, int32_t x, int32_t y)
+{
+	int32_t i = x - p->wx, j = y - p->wy;
+	return i >= 0 && j >= 0 && i < PROBE_WINDOW && j < PROBE_WINDOW && p->floor_before[j * PROBE_WINDOW + i];
+}
+
+/* owned_before(p, x, y): square (x, y) is one of the object's before the probe. */
+static bool owned_before(const ProbeRun *p, int32_t x, int32_t y)
+{
+	for (int32_t i = 0; i < p->nb; i++)
+		if (p->bx[i] == x && p->by[i] == y)
+			return true;
+	return false;
+}
+
+/* free_for_probe(c, x, y): square (x, y) is believed floor, seen in the fovea (a
+ * cell of one square: what it says of the square is exact); or it is Utak's own (a
+ * held object may come onto it, paper 2.2). Squares bumped into (c->bumped_x) are
+ * not refused: they are the floor squares beside what halted a move, and the
+ * fovea has said what they are. */
+static bool free_for_probe(const Controller *c, int32_t x, int32_t y)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	if (x == ux && y == uy)
+		return true;
+	return worldmodel_belief(&c->model, x, y) == BELIEF_FLOOR &&
+	       worldmodel_evidence(&c->model, x, y).res == WORLDMODEL_RES_FOVEA;
+}
+
+/* room_toward(c, p, sx, sy): every square the object may move onto, pushed less than
+ * a square toward (sx, sy) on each axis, is free (free_for_probe). */
+static bool room_toward(const Controller *c, const ProbeRun *p, int sx, int sy)
+{
+	static const int8_t part[3][2] = {{1, 0}, {0, 1}, {1, 1}};
+	for (int32_t i = 0; i < p->nb; i++)
+		for (int k = 0; k < 3; k++) {
+			int32_t x = p->bx[i] + part[k][0] * sx, y = p->by[i] + part[k][1] * sy;
+			if (!owned_before(p, x, y) && !free_for_probe(c, x, y))
+				return false;
+		}
+	return true;
+}
+
+bool probe_begin(Controller *c, int32_t k)
+{
+	ProbeRun *p = &c->probe;
+	const WorldModel *m = &c->model;
+	if (c->task.kind != TASK_GO_SHAPE || c->task.shape != SHAPE_SQUARE || p->runs >= PROBE_RUNS || k < 0 ||
+	    m->node[k].kind != NODE_OBJECT)
+		return false;
+	ObjectReading o = objects_read(c, k);
+	if (!o.confirmed || o.squares > PROBE_MAX_SQUARES)
+		return false;
+	/* Its squares, and the window round them (3 squares of margin). */
+	const Box *r = &m->node[k].rect;
+	int32_t x0 = (int32_t)floor(r->lo.x), y0 = (int32_t)floor(r->lo.y);
+	int32_t x1 = (int32_t)ceil(r->hi.x), y1 = (int32_t)ceil(r->hi.y);
+	if (x1 - x0 + 6 > PROBE_WINDOW || y1 - y0 + 6 > PROBE_WINDOW)
+		return false;
+	p->nb = 0;
+	for (int32_t y = y0; y < y1; y++)
+		for (int32_t x = x0; x < x1; x++)
+			if (worldmodel_node_at(m, x, y) == k && p->nb < PROBE_MAX_SQUARES) {
+				p->bx[p->nb] = x;
+				p->by[p->nb++] = y;
+			}
+	if (p->nb != o.squares)
+		return false;
+	/* Its ring is floor (or Utak's square): else it may own squares it seems not to. */
+	for (int32_t i = 0; i < p->nb; i++)
+		for (int32_t dy = -1; dy <= 1; dy++)
+			for (int32_t dx = -1; dx <= 1; dx++) {
+				int32_t x = p->bx[i] + dx, y = p->by[i] + dy;
+				if (!owned_before(p, x, y) && !free_for_probe(c, x, y))
+					return false;
+			}
+	/* The grasp takes the first object colour touch shows: it must be this one's. */
+	int32_t ux, uy;
+	worldmodel_utak_square(m, &ux, &uy);
+	bool touched = false;
+	for (int i = 0; i < TOUCH_CELLS; i++) {
+		char colour = c->impression.touch[i];
+		if (colour < 'A' || colour > 'Z' || colour == 'B')
+			continue;
+		if (worldmodel_node_at(m, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]) != k)
+			return false;
+		touched = true;
+	}
+	if (!touched)
+		return false;
+	static const int8_t way[4][2] = {{1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
+	p->corners = 0;
+	for (int w = 0; w < 4 && p->corners < PROBE_TAKES; w++)
+		if (room_toward(c, p, way[w][0], way[w][1]))
+			p->corner[p->corners++] = vec2(PROBE_STEP * way[w][0], PROBE_STEP * way[w][1]);
+	if (p->corners == 0)
+		return false;
+	p->wx = x0 - 3;
+	p->wy = y0 - 3;
+	for (int32_t j = 0; j < PROBE_WINDOW; j++)
+		for (int32_t i = 0; i < PROBE_WINDOW; i++) {
+			int32_t x = p->wx + i, y = p->wy + j;
+			p->floor_before[j * PROBE_WINDOW + i] =
+			    (x != ux || y != uy) && worldmodel_belief(m, x, y) == BELIEF_FLOOR;
+		}
+	p->ident = m->node[k].ident;
+	p->at = o.centroid;
+	p->look = 0;
+	p->ncells = 0;
+	p->changed = false;
+	p->ux = ux;
+	p->uy = uy;
+	p->verdict = PROBE_UNDECIDED;
+	p->runs++;
+	p->stage = PROBE_GRASP;
+	return true;
+}
+
+/* judge(c, p): the looks judged together (probe.h, HOW and THEN). */
+static void judge(Controller *c, ProbeRun *p)
+{
+	p->verdict = PROBE_UNDECIDED;
+	int looks = p->look;
+	if (!p->changed || looks <= 0)
+		return; /* no look to judge, or none that showed anything either way */
+	double err = worldmodel_motion_error(&c->model);
+	double rate = err > 0 ? fmax(PROBE_SLACK_RATE, 4 * err) : PROBE_SLACK_RATE;
+	double pushed_sq = 0;
+	Vec2 from = vec2(0, 0);
+	for (int l = 0; l < looks; l++) {
+		pushed_sq += vec2_dot(vec2_sub(p->corner[l], from), vec2_sub(p->corner[l], from));
+		from = p->corner[l];
+		p->looks[l] = (ProbeLook){p->corner[l], rate * sqrt(pushed_sq), p->shifts[l]};
+	}
+	p->verdict = probe_square_consistent(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true, PROBE_BUDGET);
+}
+
+bool probe_decide(Controller *c, MotorCommand *cmd)
+{
+	ProbeRun *p = &c->probe;
+	Vec2 at = p->look > 0 ? p->corner[p->look - 1] : vec2(0, 0); /* where it is now, believed */
+	switch (p->stage) {
+	case PROBE_IDLE:
+		return false;
+	case PROBE_GRASP:
+		*cmd = (MotorCommand){.kind = MOTOR_GRASP};
+		p->stage = PROBE_PUSH;
+		return true;
+	case PROBE_PUSH:
+		if (p->look < p->corners) {
+			Vec2 d = vec2_sub(p->corner[p->look], at);
+			*cmd = (MotorCommand){.kind = MOTOR_PUSH, .dx = d.x, .dy = d.y};
+			return true;
+		}
+		*cmd = (MotorCommand){.kind = MOTOR_PUSH, .dx = -at.x, .dy = -at.y}; /* every corner looked from */
+		p->stage = PROBE_RELEASE;
+		return true;
+	case PROBE_RELEASE:
+		*cmd = (MotorCommand){.kind = MOTOR_RELEASE};
+		p->stage = PROBE_FINISH;
+		return true;
+	case PROBE_FINISH:
+		break;
+	}
+	p->stage = PROBE_IDLE; /* judged on the release's impression (probe_perceive) */
+	if (p->verdict == PROBE_INCONSISTENT) {
+		if (p->disproved_count < PROBE_DISPROVED) {
+			p->disproved_ident[p->disproved_count] = p->ident;
+			p->disproved_at[p->disproved_count++] = p->at;
+		}
+		c->target = 0; /* not the square: the task goes on without it */
+		c->have_plan = false;
+	} else {
+		c->phase = PHASE_DONE;
+	}
+	return false;
+}
+
+/* count_of(level, total): how many of a cell's `total` squares are occupied, from
+ * its gray level (exact for cells of 1 and 4 squares, eye.h); -1 when no count gives
+ * that level. */
+static int32_t count_of(int level, int32_t total)
+{
+	for (int32_t n = 0; n <= total; n++)
+		if (eye_level(n, total) == level)
+			return n;
+	return -1;
+}
+
+/* grid_shifts(c, p, bx0, by0, bx1, by1): the places of the eye's grid (ProbeLook
+ * shifts) that the rest of this look allows: a place is ruled out when a cell of
+ * the fovea away from the object (two squares or more beyond its box bx0..bx1,
+ * by0..by1), all of whose squares the model holds from the fovea (floor, or
+ * occupied by what does not move), shows other than the model predicts with the
+ * grid there (Utak's own square, which the eye sees occupied, included). Where
+ * every place is ruled out (the model was wrong somewhere), none is. */
+static uint16_t grid_shifts(const Controller *c, const ProbeRun *p, int32_t bx0, int32_t by0, int32_t bx1, int32_t by1)
+{
+	const WorldModel *m = &c->model;
+	uint16_t shifts = 0;
+	for (int32_t sy = -1; sy <= 1; sy++)
+		for (int32_t sx = -1; sx <= 1; sx++) {
+			bool fits = true;
+			for (int32_t i = 0; i < RETINA_FOVEA && fits; i++) {
+				EyeCell e = eye_cell(i);
+				int32_t x = p->ux + sx + e.ox, y = p->uy + sy + e.oy;
+				if (x >= bx0 - 2 && x <= bx1 + 2 && y >= by0 - 2 && y <= by1 + 2)
+					continue; /* the object may be there */
+				bool utak = x == p->ux + sx && y == p->uy + sy;
+				if (!utak && worldmodel_evidence(m, x, y).res != WORLDMODEL_RES_FOVEA)
+					continue;
+				bool occupied = utak || worldmodel_belief(m, x, y) == BELIEF_OCCUPIED;
+				fits = (c->impression.level[i] != 0) == occupied;
+			}
+			if (fits)
+				shifts |= (uint16_t)(1u << ((sy + 1) * 3 + sx + 1));
+		}
+	return shifts ? shifts : PROBE_ANY_SHIFT;
+}
+
+/* keep_look(c, p): the cells of the look after the push to corner p->look that
+ * the object may reach and that hold only its squares and floor, wherever in his
+ * square Utak's point was (probe_square_consistent, unplaced): the cell's squares
+ * and every square next to them were the object's or floor before the probe, and
+ * none is Utak's square or next to it (the eye sees his own square occupied). The
+ * cells are placed from the square Utak stood on before the probe, whatever the
+ * model believes since (its disparity search sees the object's squares change
+ * beside him, which its whole squares cannot predict). */
+static void keep_look(Controller *c, ProbeRun *p)
+{
+	int32_t bx0 = p->bx[0], by0 = p->by[0], bx1 = p->bx[0], by1 = p->by[0];
+	for (int32_t i = 1; i < p->nb; i++) {
+		bx0 = p->bx[i] < bx0 ? p->bx[i] : bx0;
+		by0 = p->by[i] < by0 ? p->by[i] : by0;
+		bx1 = p->bx[i] > bx1 ? p->bx[i] : bx1;
+		by1 = p->by[i] > by1 ? p->by[i] : by1;
+	}
+	for (int32_t i = 0; i < PROBE_LOOK_CELLS; i++) {
+		EyeCell e = eye_cell(i);
+		int32_t x = p->ux + e.ox, y = p->uy + e.oy;
+		if (x + e.size <= bx0 - 2 || x > bx1 + 2 || y + e.size <= by0 - 2 || y > by1 + 2)
+			continue;
+		bool usable = true;
+		for (int32_t j = -1; j <= e.size && usable; j++)
+			for (int32_t k = -1; k <= e.size && usable; k++) {
+				int32_t sx = x + k, sy = y + j;
+				usable = (abs(sx - p->ux) > 1 || abs(sy - p->uy) > 1) &&
+					 (owned_before(p, sx, sy) || window_floor(p, sx, sy));
+			}
+		int32_t before = 0;
+		for (int32_t j = 0; j < e.size; j++)
+			for (int32_t k = 0; k < e.size; k++)
+				before += owned_before(p, x + k, y + j);
+		int32_t count = count_of(c->impression.level[i], e.size * e.size);
+		if (!usable || count < 0)
+			continue;
+		p->changed |= count != before;
+		p->cells[p->ncells++] = (ProbeCell){x, y, e.size, count, p->look};
+	}
+	p->shifts[p->look] = grid_shifts(c, p, bx0, by0, bx1, by1);
+	p->look++;
+}
+
+bool probe_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t size)
+{
+	ProbeRun *p = &c->probe;
+	if (p->stage == PROBE_IDLE)
+		return false;
+	switch (cmd->kind) {
+	case MOTOR_GRASP:
+		snprintf(note, size, "; probe: grasped the square, to push it %d way%s by a quarter square and back (probe.h)",
+			 p->corners, p->corners > 1 ? "s" : "");
+		break;
+	case MOTOR_PUSH:
+		if (p->stage == PROBE_PUSH) {
+			int32_t before = p->ncells;
+			keep_look(c, p);
+			snprintf(note, size, "; probe: looked at it (%d cells)", (int)(p->ncells - before));
+		} else {
+			snprintf(note, size, "; probe: pushed back");
+		}
+		break;
+	default:
+		judge(c, p);
+		static const char *const said[3] = {"fit a square: the claim stands", "fit no square: it is not the square",
+						    "do not decide: the claim stands"};
+		snprintf(note, size, "; probe: released; its squares %s", said[p->verdict]);
+		break;
+	}
+	c->have_plan = false;
+	return true;
+}
+bool probe_disproved(const Controller *c, int32_t ident, Vec2 at)
+{
+	const ProbeRun *p = &c->probe;
+	for (int i = 0; i < p->disproved_count; i++)
+		if (p->disproved_ident[i] == ident || goals_distance(p->disproved_at[i], at) < OBJECTS_SAME)
+			return true;
+	return false;
+}
