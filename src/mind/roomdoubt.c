@@ -2,7 +2,10 @@
  * look when it cannot (paper 3.3, 3.4.2; the rule is in roomdoubt.h).
  * CONTROLLER SIDE: the world model's evidence and the screen.
  *
- * ALGORITHM. The screen's fixed space less the doubtful squares makes a room map
+ * ALGORITHM. The doubtful squares: each square's evidence, then every square of an
+ * object not felt whose doubtful square lies a coarse cell or less from the verge
+ * along one of the 8 directions over doubtful squares. The screen's fixed space
+ * less the doubtful squares makes a room map
  * (goals_roommap_build's steps on that grid), merged by the verdict's door rule
  * where both sides are seen whole (carryroom_merge_seen); the start's and p's merged rooms are compared; if they differ,
  * every doubtful square with a free 8-neighbour in each of the two rooms is a
@@ -51,21 +54,57 @@ static bool doubtful(const WorldModel *m, int32_t x, int32_t y)
 	return false;
 }
 
-/* pessimistic(c, si, sj, pi, pj, rm): the room map of the screen's fixed space less
- * the doubtful squares (but for cells (si, sj) and (pi, pj)); returns the doubtful
+/* pessimistic(c, si, sj, pi, pj, objects, rm): the room map of the screen's fixed
+ * space less the doubtful squares (but for cells (si, sj) and (pi, pj)), with
+ * `objects` the objects doubtful whole too (roomdoubt.h); returns the doubtful
  * squares (caller frees both). */
-static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi, int32_t pj, RoomMap *rm)
+static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi, int32_t pj, bool objects, RoomMap *rm)
 {
 	const Screen *s = &c->screen;
 	grid_init(&rm->known, s->w, s->h, GRID_BLOCKED);
 	int64_t n = (int64_t)s->w * s->h;
 	bool *doubt = util_alloc((size_t)n, sizeof *doubt);
+	const WorldModel *m = &c->model;
 	for (int64_t k = 0; k < n; k++) {
 		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
-		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(&c->model, s->x0 + i, s->y0 + j);
+		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(m, s->x0 + i, s->y0 + j);
+	}
+	/* With `objects`: an object not felt, seen coarsely where it comes within a
+	 * coarse cell of the verge (its doubtful square and the verge at most
+	 * ROOMDOUBT_COARSE_CELL apart along a row, a column or a diagonal, every
+	 * square between doubtful), may be a wall's end that a cell straddling the
+	 * gap misread as floor (paper 3.4.2: an occupied set the eye has not seen
+	 * meet the verge may be the verge): its squares seen in the fovea are
+	 * doubtful too. */
+	bool *part = util_alloc((size_t)(m->node_count > 0 ? m->node_count : 1), sizeof *part);
+	for (int32_t k = 0; k < m->node_count; k++)
+		part[k] = false;
+	for (int64_t k = 0; objects && k < n; k++) {
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w), l = s->label[k];
+		if (!doubt[k] || l < 0 || l >= m->node_count || part[l] || m->node[l].kind != NODE_OBJECT ||
+		    m->node[l].held || objects_felt(c, l))
+			continue;
+		for (int dd = 0; dd < 9 && !part[l]; dd++) {
+			int32_t dx = dd % 3 - 1, dy = dd / 3 - 1;
+			for (int32_t t = 1; t <= ROOMDOUBT_COARSE_CELL && (dx || dy); t++) {
+				int32_t x = i + t * dx, y = j + t * dy, at = screen_label(s, x, y);
+				if (at == SCREEN_VERGE) {
+					part[l] = true;
+					break;
+				}
+				if (at == l || !doubt[(int64_t)y * s->w + x])
+					break;
+			}
+		}
+	}
+	for (int64_t k = 0; k < n; k++) {
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w), l = s->label[k];
+		if (l >= 0 && l < m->node_count && part[l] && (i != si || j != sj) && (i != pi || j != pj))
+			doubt[k] = true;
 		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE && !doubt[k])
 			rm->known.cells[k] = GRID_FREE;
 	}
+	free(part);
 	goals_roommap_find(rm);
 	return doubt;
 }
@@ -99,7 +138,7 @@ RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2
 	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, p, &pi, &pj))
 		return ROOMDOUBT_NONE;
 	RoomMap rm;
-	bool *doubt = pessimistic(c, si, sj, pi, pj, &rm);
+	bool *doubt = pessimistic(c, si, sj, pi, pj, true, &rm);
 	int64_t n = (int64_t)s->w * s->h;
 	CarryRooms cr;
 	carryroom_merge_seen(&rm, s, &cr);
@@ -138,7 +177,7 @@ RoomDoubt roomdoubt_door(const Controller *c, const int32_t *dist, Vec2 *goal)
 	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, c->model.utak, &ui, &uj))
 		return ROOMDOUBT_NONE;
 	RoomMap rm;
-	bool *doubt = pessimistic(c, si, sj, ui, uj, &rm);
+	bool *doubt = pessimistic(c, si, sj, ui, uj, false, &rm);
 	int64_t n = (int64_t)s->w * s->h;
 	int32_t a = rooms_at(&rm.rooms, si, sj), nr = rm.rooms.room_count;
 	/* The rooms a narrowing joins to the start's on this map (rooms.h's gentler

@@ -12,7 +12,13 @@
  *
  * THE RULE. The DOUBTFUL squares are those seen only coarsely (never in the fovea)
  * that are either occupied, object or not, or floor beside (8-neighbour) an
- * occupied square: what a coarse cell across a wall's face would misplace. The
+ * occupied square: what a coarse cell across a wall's face would misplace. An
+ * object not felt (objects_felt) with a doubtful square that comes within a coarse
+ * cell of the verge (ROOMDOUBT_COARSE_CELL, along a row, a column or a diagonal
+ * of doubtful squares) is doubtful whole, its squares seen in the fovea too: a
+ * stub of wall one square thick, seen from afar, reads as an object parted from
+ * the wall by a cell's misread floor, and objects are space to rooms (for
+ * roomdoubt_check, not roomdoubt_door). The
  * PESSIMISTIC room map takes every doubtful square for wall, and merges rooms by the
  * verdict's door rule (carryroom.h). When the start and a point p are in the same
  * room there, they are in one room whatever the doubtful squares turn out to be
