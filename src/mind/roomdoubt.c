@@ -2,7 +2,10 @@
  * look when it cannot (paper 3.3, 3.4.2; the rule is in roomdoubt.h).
  * CONTROLLER SIDE: the world model's evidence and the screen.
  *
- * ALGORITHM. The screen's fixed space less the doubtful squares makes a room map
+ * ALGORITHM. The doubtful squares: each square's evidence, then every square of an
+ * object not felt whose doubtful square lies a coarse cell or less from the verge
+ * along one of the 8 directions over doubtful squares. The screen's fixed space
+ * less the doubtful squares makes a room map
  * (goals_roommap_build's steps on that grid), merged by the verdict's door rule
  * where both sides are seen whole (carryroom_merge_seen); the start's and p's merged rooms are compared; if they differ,
  * every doubtful square with a free 8-neighbour in each of the two rooms is a
@@ -51,21 +54,57 @@ static bool doubtful(const WorldModel *m, int32_t x, int32_t y)
 	return false;
 }
 
-/* pessimistic(c, si, sj, pi, pj, rm): the room map of the screen's fixed space less
- * the doubtful squares (but for cells (si, sj) and (pi, pj)); returns the doubtful
+/* pessimistic(c, si, sj, pi, pj, objects, rm): the room map of the screen's fixed
+ * space less the doubtful squares (but for cells (si, sj) and (pi, pj)), with
+ * `objects` the objects doubtful whole too (roomdoubt.h); returns the doubtful
  * squares (caller frees both). */
-static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi, int32_t pj, RoomMap *rm)
+static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi, int32_t pj, bool objects, RoomMap *rm)
 {
 	const Screen *s = &c->screen;
 	grid_init(&rm->known, s->w, s->h, GRID_BLOCKED);
 	int64_t n = (int64_t)s->w * s->h;
 	bool *doubt = util_alloc((size_t)n, sizeof *doubt);
+	const WorldModel *m = &c->model;
 	for (int64_t k = 0; k < n; k++) {
 		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w);
-		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(&c->model, s->x0 + i, s->y0 + j);
+		doubt[k] = (i != si || j != sj) && (i != pi || j != pj) && doubtful(m, s->x0 + i, s->y0 + j);
+	}
+	/* With `objects`: an object not felt, seen coarsely where it comes within a
+	 * coarse cell of the verge (its doubtful square and the verge at most
+	 * ROOMDOUBT_COARSE_CELL apart along a row, a column or a diagonal, every
+	 * square between doubtful), may be a wall's end that a cell straddling the
+	 * gap misread as floor (paper 3.4.2: an occupied set the eye has not seen
+	 * meet the verge may be the verge): its squares seen in the fovea are
+	 * doubtful too. */
+	bool *part = util_alloc((size_t)(m->node_count > 0 ? m->node_count : 1), sizeof *part);
+	for (int32_t k = 0; k < m->node_count; k++)
+		part[k] = false;
+	for (int64_t k = 0; objects && k < n; k++) {
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w), l = s->label[k];
+		if (!doubt[k] || l < 0 || l >= m->node_count || part[l] || m->node[l].kind != NODE_OBJECT ||
+		    m->node[l].held || objects_felt(c, l))
+			continue;
+		for (int dd = 0; dd < 9 && !part[l]; dd++) {
+			int32_t dx = dd % 3 - 1, dy = dd / 3 - 1;
+			for (int32_t t = 1; t <= ROOMDOUBT_COARSE_CELL && (dx || dy); t++) {
+				int32_t x = i + t * dx, y = j + t * dy, at = screen_label(s, x, y);
+				if (at == SCREEN_VERGE) {
+					part[l] = true;
+					break;
+				}
+				if (at == l || !doubt[(int64_t)y * s->w + x])
+					break;
+			}
+		}
+	}
+	for (int64_t k = 0; k < n; k++) {
+		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w), l = s->label[k];
+		if (l >= 0 && l < m->node_count && part[l] && (i != si || j != sj) && (i != pi || j != pj))
+			doubt[k] = true;
 		if (s->label[k] != SCREEN_UNKNOWN && s->fixed.cells[k] == GRID_FREE && !doubt[k])
 			rm->known.cells[k] = GRID_FREE;
 	}
+	free(part);
 	goals_roommap_find(rm);
 	return doubt;
 }
@@ -99,7 +138,7 @@ RoomDoubt roomdoubt_check(const Controller *c, const int32_t *dist, Vec2 p, Vec2
 	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, p, &pi, &pj))
 		return ROOMDOUBT_NONE;
 	RoomMap rm;
-	bool *doubt = pessimistic(c, si, sj, pi, pj, &rm);
+	bool *doubt = pessimistic(c, si, sj, pi, pj, true, &rm);
 	int64_t n = (int64_t)s->w * s->h;
 	CarryRooms cr;
 	carryroom_merge_seen(&rm, s, &cr);
@@ -138,7 +177,7 @@ RoomDoubt roomdoubt_door(const Controller *c, const int32_t *dist, Vec2 *goal)
 	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, c->model.utak, &ui, &uj))
 		return ROOMDOUBT_NONE;
 	RoomMap rm;
-	bool *doubt = pessimistic(c, si, sj, ui, uj, &rm);
+	bool *doubt = pessimistic(c, si, sj, ui, uj, false, &rm);
 	int64_t n = (int64_t)s->w * s->h;
 	int32_t a = rooms_at(&rm.rooms, si, sj), nr = rm.rooms.room_count;
 	/* The rooms a narrowing joins to the start's on this map (rooms.h's gentler
@@ -548,6 +587,101 @@ RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal)
 	return verdict;
 }
 
+/* jamb_loose(c, d, c0, peak_a, peak_b, dist, best, goal, look): whether a jamb of
+ * door d (the verge cell beyond an end of its run across; c0 its clearance,
+ * peak_a and peak_b its sides' peaks) may be an object (roomdoubt.h): a blob of
+ * wall seen in the fovea that the model joins to the rest of the wall only
+ * through squares seen coarsely, near it (within ROOMDOUBT_VIEW of the jamb cell,
+ * where it does not reach farther), without which (the run going on through it)
+ * a side would no longer widen well beyond the door, and touch has not shown its
+ * colour; or touch felt an object's colour on it. Not yet touched (no point of Utak's trail beside
+ * it), the run's end beside it is, when dist is given, the candidate goal (*look
+ * set when taken): there touch shows B or a letter. */
+static bool jamb_loose(const Controller *c, const RoomsDoor *d, double c0, double peak_a, double peak_b,
+		       const int32_t *dist, double *best, Vec2 *goal, bool *look)
+{
+	const Screen *s = &c->screen;
+	int32_t ux = (d->bx > d->ax) - (d->bx < d->ax), uy = (d->by > d->ay) - (d->by < d->ay);
+	if (!ux && !uy)
+		return false;
+	int64_t n = (int64_t)s->w * s->h;
+	const int32_t r = ROOMDOUBT_VIEW;
+	bool loose = false;
+	int8_t *mark = util_alloc((size_t)n, sizeof *mark); /* 1 blob, 2 joint */
+	int32_t *queue = util_alloc((size_t)n, sizeof *queue);
+	for (int end = 0; end < 2; end++) {
+		int32_t ei = end ? d->bx : d->ax, ej = end ? d->by : d->ay;
+		int32_t ji = end ? d->bx + ux : d->ax - ux, jj = end ? d->by + uy : d->ay - uy;
+		if (screen_label(s, ji, jj) != SCREEN_VERGE ||
+		    worldmodel_evidence(&c->model, s->x0 + ji, s->y0 + jj).res < WORLDMODEL_RES_FOVEA)
+			continue;
+		Vec2 jc = goals_centre(s->x0 + ji, s->y0 + jj);
+		bool touched = false;
+		for (int v = 0; v < c->trail.count && !touched; v++)
+			touched = goals_distance(jc, c->trail.pts[v]) <= 1.5;
+		if (touched) {
+			/* Touch has shown it: an object's colour, or B. */
+			if (objects_square_listed(c->felt_x, c->felt_y, c->felt_squares, s->x0 + ji, s->y0 + jj))
+				loose = true;
+			continue;
+		}
+		for (int64_t k = 0; k < n; k++)
+			mark[k] = 0;
+		int64_t head = 0, tail = 0;
+		bool reaches = false, joint = false;
+		mark[(int64_t)jj * s->w + ji] = 1;
+		queue[tail++] = jj * s->w + ji;
+		while (head < tail && !reaches) {
+			int32_t k = queue[head++], i = k % s->w, j = k / s->w;
+			for (int dd = 0; dd < 9 && !reaches; dd++) {
+				int32_t x = i + dd % 3 - 1, y = j + dd / 3 - 1;
+				if (x < 0 || y < 0 || x >= s->w || y >= s->h) {
+					reaches = true; /* the wall runs off the screen */
+					break;
+				}
+				int32_t at = y * s->w + x;
+				if (mark[at] || s->label[at] != SCREEN_VERGE)
+					continue;
+				if ((x - ji) * (x - ji) + (y - jj) * (y - jj) > r * r) {
+					reaches = true; /* longer than an object near the door */
+					break;
+				}
+				if (worldmodel_evidence(&c->model, s->x0 + x, s->y0 + y).res >= WORLDMODEL_RES_FOVEA) {
+					mark[at] = 1;
+					queue[tail++] = at;
+				} else {
+					mark[at] = 2;
+					joint = true;
+				}
+			}
+		}
+		if (reaches || !joint)
+			continue;
+		/* Were the blob space, the run across would go on through it: the
+		 * door's clearance half its extent along the run more. If both sides
+		 * still widen well beyond that, the door stands whatever it is. */
+		int32_t ext = 0;
+		while (ji + ext * ux >= 0 && jj + ext * uy >= 0 && ji + ext * ux < s->w && jj + ext * uy < s->h &&
+		       mark[(int64_t)(jj + ext * uy) * s->w + ji + ext * ux] == 1)
+			ext++;
+		if (jamb_wide(peak_a, c0 + ext / 2.0) && jamb_wide(peak_b, c0 + ext / 2.0))
+			continue;
+		loose = true;
+		if (!dist || dist[ej * s->w + ei] < 0)
+			continue;
+		Vec2 e = goals_centre(s->x0 + ei, s->y0 + ej);
+		double de = goals_distance(e, c->model.utak);
+		if (de < *best) {
+			*best = de;
+			*goal = e;
+			*look = true;
+		}
+	}
+	free(mark);
+	free(queue);
+	return loose;
+}
+
 /* unsettled(c, rm, cr, q, dist, best, goal, look): whether door q of rm, a door of
  * cr, may owe its narrowness to squares the eye has not settled (roomdoubt_next);
  * each such square, when dist is given, a candidate for look_at (*look set when one
@@ -561,6 +695,9 @@ static bool unsettled(const Controller *c, const RoomMap *rm, const CarryRooms *
 	double reach = door_box(s, d, &i0, &i1, &j0, &j1);
 	bool unseen = false, coarse = false;
 	double c0 = sqrt((double)rm->skeleton.dist2[d->y * s->w + d->x]), near2 = (c0 + 1.5) * (c0 + 1.5);
+	if (jamb_loose(c, d, c0, cr->peak[cr->merged[d->room_a]], cr->peak[cr->merged[d->room_b]], dist, best, goal,
+		       look))
+		return true;
 	for (int pass = 0; pass < 2; pass++) {
 		if (pass == 1) {
 			/* The unseen may be floor as far as it goes: the door's width is

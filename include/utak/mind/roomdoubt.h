@@ -12,7 +12,13 @@
  *
  * THE RULE. The DOUBTFUL squares are those seen only coarsely (never in the fovea)
  * that are either occupied, object or not, or floor beside (8-neighbour) an
- * occupied square: what a coarse cell across a wall's face would misplace. The
+ * occupied square: what a coarse cell across a wall's face would misplace. An
+ * object not felt (objects_felt) with a doubtful square that comes within a coarse
+ * cell of the verge (ROOMDOUBT_COARSE_CELL, along a row, a column or a diagonal
+ * of doubtful squares) is doubtful whole, its squares seen in the fovea too: a
+ * stub of wall one square thick, seen from afar, reads as an object parted from
+ * the wall by a cell's misread floor, and objects are space to rooms (for
+ * roomdoubt_check, not roomdoubt_door). The
  * PESSIMISTIC room map takes every doubtful square for wall, and merges rooms by the
  * verdict's door rule (carryroom.h). When the start and a point p are in the same
  * room there, they are in one room whatever the doubtful squares turn out to be
@@ -149,7 +155,15 @@ RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
  * rule. A coarse cell across an object near a wall, or a small object merged with
  * the unseen behind it, reads as a wall (paper 3.4.2); the judge counts objects
  * as space, and where the eye has not looked it knows nothing: a claim through
- * such a door is a false success. A square Utak has stood near has been seen in
+ * such a door is a false success. A door is unsettled too when a JAMB (the wall
+ * square beyond an end of the run across it) is a blob seen in the fovea that the
+ * model joins to the rest of the wall only through squares seen coarsely within
+ * ROOMDOUBT_VIEW of the jamb (an object the eye did not see stand clear of the
+ * wall, paper 3.4.2; the judge counts it as space), unless, the blob taken for
+ * space (the run going on through it: half its extent along the run more
+ * clearance), both sides would still widen well beyond the door, or touch has
+ * shown the jamb B (Utak has stood beside it and felt no object's colour there);
+ * until touched, the goal is the run's end beside it. A square Utak has stood near has been seen in
  * the fovea: read coarse again, it is only forgotten (worldmodel.h). For the
  * doors of `room` (its merged room, before the joins), *goal is where to look
  * from at the nearest such square not yet looked at (ROOMDOUBT_LOOK);
