@@ -271,8 +271,8 @@ static void arrive(Controller *c)
 			c->room_look = true; /* the next goal: a look at the door's coarse side */
 		else if (corner_frontier(c))
 			; /* the room seen in part: the next goal is a look at its unseen side */
-		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK)
-			c->phase = PHASE_DONE;
+		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK && !goals_corner_hidden(c))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden fails it, with his doubt) */
 		/* else not sure of the room: the next goal is a look at the wall between */
 		return;
 	case TASK_GO_SHAPE:

@@ -163,9 +163,16 @@ int64_t goals_corner_shortfall(Controller *c)
 	int32_t si, sj;
 	goals_cell_of(s, c->start, &si, &sj);
 	int32_t start_room = rooms_at(&rm.rooms, si, sj);
-	int64_t best = goals_room_corner_best(c, &rm, start_room), got = INT64_MIN;
+	int64_t best = goals_room_corner_best(c, &rm, start_room), got = goals_subject_score(c);
 	goals_roommap_free(&rm);
+	return best == INT64_MIN ? INT64_MAX : best - got; /* INT64_MAX: no floor seen in the room */
+}
+
+/* goals_subject_score(c): the best corner score of the task's subject on the model. */
+int64_t goals_subject_score(const Controller *c)
+{
 	int32_t ux, uy;
+	int64_t got = INT64_MIN;
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	/* Pushing, the object's squares; else, or when none are left in the held set
 	 * (the eye saw them all as floor after a push), Utak's own, beside it. */
@@ -176,7 +183,27 @@ int64_t goals_corner_shortfall(Controller *c)
 		int64_t v = goals_corner_score(c->task.corner, ux + c->model.held_dx[k], uy + c->model.held_dy[k]);
 		got = v > got ? v : got;
 	}
-	return best == INT64_MIN ? INT64_MAX : best - got; /* INT64_MAX: no floor seen in the room */
+	return got;
+}
+
+/* goals_corner_hidden(c): whether floor seen that beats the task's subject may be of
+ * the start's room after all (roomdoubt_hidden); if so, the task fails with Utak's
+ * doubt (no look yet: for a push he would have to let go first). */
+bool goals_corner_hidden(Controller *c)
+{
+	Vec2 at;
+	if (!roomdoubt_hidden(c, goals_subject_score(c), &at))
+		return false;
+	c->phase = PHASE_FAILED;
+	if (c->task.kind == TASK_GO_CORNER)
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell he is in the %s: floor that would beat it, at (%.1f, %.1f), may be of the room he started in, joined to it by squares seen only coarsely",
+			 task_corner_name(c->task.corner), at.x, at.y);
+	else
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: floor that would beat it, at (%.1f, %.1f), may be of the room he started in, joined to it by squares seen only coarsely",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
+	return true;
 }
 
 /* goals_corner_failed(c, short_by): the goal reached, and the corner still short_by

@@ -15,7 +15,9 @@
  * (paper 3.5) the object drifts a fraction of a square off the grid and its corner
  * catches on a neighbour the model already has. The corner is claimed
  * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
- * (push_seat_finish); the survey does not yet make (i)'s looks. Seated short, with
+ * (push_seat_finish), and only when no floor seen that beats it may be of that
+ * room after all (roomdoubt_hidden: else he doubts it; he does not yet let go to
+ * look); the survey does not yet make (i)'s looks. Seated short, with
  * another object in the way, Utak moves it out of the way first (pushclear.h). */
 #include "utak/mind/push.h"
 
@@ -385,7 +387,8 @@ static bool push_held_is_task_shape(const Controller *c)
 
 /* push_seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
  * holds, judged before he lets go; the corner claimed only when the model can tell it
- * is of the start's room, as for task (i). */
+ * is of the start's room, as for task (i), and that no floor seen that would beat it
+ * may be of that room (roomdoubt_hidden): else he doubts the corner. */
 void push_seat_finish(Controller *c)
 {
 	int64_t short_by = goals_corner_shortfall(c);
@@ -405,6 +408,8 @@ void push_seat_finish(Controller *c)
 		snprintf(c->why, sizeof c->why,
 			 "Utak cannot tell the %s he pushed the %s into is of the room he started in: a wall between may be seen only coarsely",
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
+	} else if (goals_corner_hidden(c)) {
+		/* failed, with his doubt */
 	} else if (c->doubt[0]) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why, "Utak doubts the object he pushed into the %s is the %s: %s",

@@ -18,7 +18,9 @@
  * wall. roomdoubt_next: for each door of the merged map, the squares within its
  * clearance of its cell or beside its run's ends that face floor, unseen or seen
  * only coarsely (the coarse ones weighed as in roomdoubt_jambs); the sides of
- * each such door joined in the merged map.
+ * each such door joined in the merged map. roomdoubt_hidden: a second room map of
+ * the screen with the coarse squares near floor taken for floor, merged, and the
+ * floor seen of the model's other rooms seen whole that it joins to the start's.
  * MEMORY: a grid and a room map of the screen, freed before returning.
  * COMPLEXITY: O(w h) for the map, O(w h) for the candidates, O(w h) for each
  * goals_near over at most the candidates kept (the nearest first). */
@@ -803,4 +805,79 @@ RoomDoubt roomdoubt_next(const Controller *c, const RoomMap *rm, CarryRooms *cr,
 	}
 	free(join);
 	return look ? ROOMDOUBT_LOOK : verdict;
+}
+
+/* hidden_floor(m, x, y): the square is occupied on the model but seen only coarsely,
+ * and within a cell less a square of floor seen (1 square at 2 x 2, 3 at 4 x 4): a
+ * coarse cell straddling a wall's face reads occupied over the floor it shares, so
+ * the square may be floor (roomdoubt_hidden). */
+static bool hidden_floor(const WorldModel *m, int32_t x, int32_t y)
+{
+	Evidence e = worldmodel_evidence(m, x, y);
+	if (e.res == WORLDMODEL_UNSEEN || e.res >= WORLDMODEL_RES_FOVEA || worldmodel_belief(m, x, y) != BELIEF_OCCUPIED)
+		return false;
+	int reach = e.res == WORLDMODEL_RES_INTERMEDIATE ? 1 : ROOMDOUBT_COARSE_CELL - 1;
+	for (int dy = -reach; dy <= reach; dy++)
+		for (int dx = -reach; dx <= reach; dx++)
+			if ((dx || dy) && worldmodel_belief(m, x + dx, y + dy) == BELIEF_FLOOR)
+				return true;
+	return false;
+}
+
+bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
+{
+	const Screen *s = &c->screen;
+	StartRooms sr;
+	if (!start_rooms_build(c, &sr))
+		return false;
+	int32_t w = s->w, h = s->h, a = carryroom_at(&sr.cr, &sr.rm, sr.si, sr.sj);
+	int64_t n = (int64_t)w * h;
+	/* The OPTIMISTIC map: the fixed space seen, and every square that may be floor
+	 * under a coarse cell, taken for floor. */
+	bool *maybe = util_alloc((size_t)n, sizeof *maybe);
+	RoomMap rm;
+	grid_init(&rm.known, w, h, GRID_BLOCKED);
+	for (int64_t k = 0; k < n; k++) {
+		int32_t i = (int32_t)(k % w), j = (int32_t)(k / w);
+		bool seen = s->label[k] != SCREEN_UNKNOWN;
+		maybe[k] = seen && s->fixed.cells[k] != GRID_FREE && hidden_floor(&c->model, s->x0 + i, s->y0 + j);
+		if (seen && (s->fixed.cells[k] == GRID_FREE || maybe[k]))
+			rm.known.cells[k] = GRID_FREE;
+	}
+	goals_roommap_find(&rm);
+	CarryRooms cr;
+	carryroom_merge(&rm, &cr);
+	int32_t b = carryroom_at(&cr, &rm, sr.si, sr.sj);
+	/* The model's rooms (merged) that are seen whole: no cell of one beside a
+	 * square never seen. A room seen in part is roomdoubt_beyond's and
+	 * roomdoubt_frontier's: the eye has not yet shown it a pocket. */
+	bool *open = util_alloc((size_t)(sr.cr.count > 0 ? sr.cr.count : 1), sizeof *open);
+	for (int32_t r = 0; r < sr.cr.count; r++)
+		open[r] = false;
+	for (int64_t k = 0; k < n; k++) {
+		int32_t i = (int32_t)(k % w), j = (int32_t)(k / w), r = carryroom_at(&sr.cr, &sr.rm, i, j);
+		for (int d = 0; d < 4 && r >= 0 && r < sr.cr.count && !open[r]; d++) {
+			int32_t x = i + (d == 0) - (d == 1), y = j + (d == 2) - (d == 3);
+			open[r] = x < 0 || y < 0 || x >= w || y >= h || s->label[y * w + x] == SCREEN_UNKNOWN;
+		}
+	}
+	int64_t best = INT64_MIN;
+	for (int64_t k = 0; a >= 0 && b >= 0 && k < n; k++) {
+		int32_t i = (int32_t)(k % w), j = (int32_t)(k / w);
+		int32_t r = carryroom_at(&sr.cr, &sr.rm, i, j);
+		if (s->label[k] != SCREEN_SPACE || maybe[k] || carryroom_at(&cr, &rm, i, j) != b || r == a || r < 0 ||
+		    r >= sr.cr.count || open[r])
+			continue;
+		int64_t score = goals_corner_score(c->task.corner, s->x0 + i, s->y0 + j);
+		if (score > got + CONTROLLER_CORNER_SLACK && score > best) {
+			best = score;
+			*at = goals_centre(s->x0 + i, s->y0 + j);
+		}
+	}
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	start_rooms_free(&sr);
+	free(maybe);
+	free(open);
+	return best > INT64_MIN;
 }

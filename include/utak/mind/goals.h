@@ -60,6 +60,13 @@ bool goals_corner(const Controller *c, const Grid *g, const int32_t *dist, const
 /* goals_corner_shortfall(c): how far short of the corner the task's subject is,
  * by the model (INT64_MAX when the starting room cannot be placed). */
 int64_t goals_corner_shortfall(Controller *c);
+/* goals_subject_score(c): the task's subject's best corner score on the model: the
+ * held object's squares pushing, else Utak's own square. */
+int64_t goals_subject_score(const Controller *c);
+/* goals_corner_hidden(c): at a corner Utak would claim, floor seen that beats the
+ * subject may be of the start's room (roomdoubt_hidden): true, the task failed
+ * with his doubt; false, nothing changed. */
+bool goals_corner_hidden(Controller *c);
 /* goals_corner_failed(c, short_by): fails the task, saying how far short. */
 void goals_corner_failed(Controller *c, int64_t short_by);
 /* goals_frontier(c, dist, goal): the nearest reachable known-floor cell beside an

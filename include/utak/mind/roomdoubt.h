@@ -174,4 +174,24 @@ RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
 RoomDoubt roomdoubt_next(const Controller *c, const RoomMap *rm, CarryRooms *cr, int32_t room, const int32_t *dist,
 			 Vec2 *goal);
 
+/* roomdoubt_hidden(c, got, at): at a corner Utak would claim, the subject's best
+ * corner score being `got`: whether floor seen that would score above got +
+ * CONTROLLER_CORNER_SLACK, in a room of the model's (goals_roommap_build, merged by
+ * carryroom_merge_seen) other than the start's and SEEN WHOLE (no cell of it beside
+ * a square never seen), may be of the start's room after all. The OPTIMISTIC map
+ * takes for floor, beside the fixed space seen, every occupied square seen only
+ * coarsely within a cell less a square of floor seen (1 at 2 x 2, 3 at 4 x 4: what
+ * a cell straddling a face reads occupied over), and merges its rooms by the
+ * verdict's door rule (carryroom_merge); such floor in the start's room there is a
+ * doubt, and *at is the best-scoring square of it. WHY: the eye looks down on the
+ * table, so a corner is hidden only by never having been in the field, or in it
+ * only coarsely. Coarse cells that join an object to a wall close the way round
+ * it, and the space between it and the corner reads as a pocket behind a door of
+ * its own; Utak, measuring against the best floor of his room, would claim a
+ * corner that the room's true corner beats (a false success). A room seen in part
+ * is left to roomdoubt_beyond and roomdoubt_frontier: it may yet widen into a
+ * room of its own, and a wall seen coarsely between two rooms would otherwise
+ * always read as a possible gap. COMPLEXITY: O(w h) two room maps of the screen. */
+bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at);
+
 #endif

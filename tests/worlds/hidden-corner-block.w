@@ -1,0 +1,9 @@
+# hidden-corner-block.w - the control for hidden-corner.w: a wall block (9 x 9) fills
+# the north-east of the table, so no space beyond it can beat the corners it leaves
+# (paper task (v); issue 13 item 6). The checks of roomdoubt_hidden find no floor
+# seen of another room that coarse cells might join to Utak's: the push is claimed
+# as before, in as many cycles.
+table 40 30
+wall 30 20 39 20 39 29 30 29
+object square A 8 8 12 8 12 12 8 12
+utak 20.5 12.5 north
