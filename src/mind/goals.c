@@ -172,18 +172,22 @@ int64_t goals_corner_shortfall(Controller *c)
 int64_t goals_subject_score(const Controller *c)
 {
 	int32_t ux, uy;
-	int64_t got = INT64_MIN;
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	/* Pushing, the object's squares; else, or when none are left in the held set
 	 * (the eye saw them all as floor after a push), Utak's own, beside it. */
-	int32_t n = c->task.kind == TASK_PUSH_CORNER && c->model.holding ? c->model.held_count : 0;
-	if (n == 0)
-		got = goals_corner_score(c->task.corner, ux, uy);
-	for (int32_t k = 0; k < n; k++) {
-		int64_t v = goals_corner_score(c->task.corner, ux + c->model.held_dx[k], uy + c->model.held_dy[k]);
-		got = v > got ? v : got;
+	if (c->task.kind == TASK_PUSH_CORNER && c->model.holding && c->model.held_count > 0)
+		return goals_held_score(c, ux, uy);
+	return goals_corner_score(c->task.corner, ux, uy);
+}
+
+int64_t goals_held_score(const Controller *c, int32_t x, int32_t y)
+{
+	int64_t best = INT64_MIN;
+	for (int32_t k = 0; k < c->model.held_count; k++) {
+		int64_t v = goals_corner_score(c->task.corner, x + c->model.held_dx[k], y + c->model.held_dy[k]);
+		best = v > best ? v : best;
 	}
-	return got;
+	return best;
 }
 
 /* goals_corner_hidden(c): whether floor seen that beats the task's subject may be of

@@ -21,6 +21,9 @@
 #include "utak/mind/planner.h"
 #include "utak/mind/push.h"
 
+/* The four neighbours of a square, for the floods and the rings below. */
+static const int8_t clear_step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+
 /* free_apart(c, held, at): screen cell at counts as floor round a set drawn off what
  * it touches: believed floor, or a held square (held[] marks them) it will leave. */
 static bool free_apart(const Screen *s, const uint8_t *held, int32_t i, int32_t j)
@@ -44,9 +47,6 @@ static void movable_sets(Controller *c, const uint8_t *held, uint8_t *mov)
 	size_t cells = (size_t)w * (size_t)h;
 	int32_t *queue = util_alloc(cells, sizeof *queue), *seen = util_alloc(cells, sizeof *seen);
 	memset(mov, 0, cells);
-	for (size_t at = 0; at < cells; at++)
-		seen[at] = 0;
-	static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 	for (int32_t at0 = 0; at0 < w * h; at0++) {
 		if (seen[at0] || s->free.cells[at0] == GRID_FREE || held[at0])
 			continue;
@@ -58,7 +58,7 @@ static void movable_sets(Controller *c, const uint8_t *held, uint8_t *mov)
 			int32_t at = queue[head++], i = at % w, j = at / w, l = s->label[at];
 			wall |= l >= 0 && l < c->model.node_count && objects_wall(c, l);
 			for (int d = 0; d < 4; d++) {
-				int32_t ni = i + step[d][0], nj = j + step[d][1], n = nj * w + ni;
+				int32_t ni = i + clear_step[d][0], nj = j + clear_step[d][1], n = nj * w + ni;
 				if (ni >= 0 && nj >= 0 && ni < w && nj < h && s->free.cells[n] != GRID_FREE && !held[n]) {
 					if (!seen[n]) {
 						seen[n] = 1;
@@ -115,9 +115,8 @@ static int back_off(Controller *c, const uint8_t *held, int *bx, int *by)
 			bool ok = true;
 			for (int32_t q = 0; q < m->held_count && ok; q++) {
 				int32_t i = ui + m->held_dx[q] + dx, j = uj + m->held_dy[q] + dy;
-				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 				for (int e = 0; e < 4 && ok; e++) {
-					int32_t ni = i + step[e][0], nj = j + step[e][1], ex = ni - ui - dx, ey = nj - uj - dy;
+					int32_t ni = i + clear_step[e][0], nj = j + clear_step[e][1], ex = ni - ui - dx, ey = nj - uj - dy;
 					bool own = ex == 0 && ey == 0;
 					for (int32_t r = 0; r < m->held_count && !own; r++)
 						own = m->held_dx[r] == ex && m->held_dy[r] == ey;
@@ -144,9 +143,8 @@ static int32_t set_size(const uint8_t *mov, int32_t w, int32_t h, int32_t at, ui
 	seen[at] = 1;
 	while (head < tail) {
 		int32_t k = queue[head++], i = k % w, j = k / w;
-		static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 		for (int d = 0; d < 4; d++) {
-			int32_t ni = i + step[d][0], nj = j + step[d][1];
+			int32_t ni = i + clear_step[d][0], nj = j + clear_step[d][1];
 			if (ni >= 0 && nj >= 0 && ni < w && nj < h && mov[nj * w + ni] && !seen[nj * w + ni]) {
 				seen[nj * w + ni] = 1;
 				queue[tail++] = nj * w + ni;
@@ -156,18 +154,6 @@ static int32_t set_size(const uint8_t *mov, int32_t w, int32_t h, int32_t at, ui
 	for (int32_t q = 0; q < tail; q++)
 		seen[queue[q]] = 0;
 	return tail;
-}
-
-/* reach_of(c, x, y): how far toward the corner the held object lies with Utak on
- * square (x, y): its best square's corner score. */
-static int64_t reach_of(const Controller *c, int32_t x, int32_t y)
-{
-	int64_t best = INT64_MIN;
-	for (int32_t q = 0; q < c->model.held_count; q++) {
-		int64_t v = goals_corner_score(c->task.corner, x + c->model.held_dx[q], y + c->model.held_dy[q]);
-		best = v > best ? v : best;
-	}
-	return best;
 }
 
 bool pushclear_begin(Controller *c, int64_t short_by)
@@ -193,7 +179,6 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 		if (s->label[at] == SCREEN_UNKNOWN)
 			base.cells[at] = GRID_BLOCKED;
 	uint8_t *held = util_alloc(cells, 1);
-	memset(held, 0, cells);
 	for (int32_t q = 0; q < m->held_count; q++) {
 		int32_t i = ui + m->held_dx[q], j = uj + m->held_dy[q];
 		if (i >= 0 && j >= 0 && i < w && j < h)
@@ -216,12 +201,12 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 	 * of those; worth clearing for only when it gains more than the slack (the
 	 * eye may place a wall a square off: the corner itself need not be reached
 	 * on the model, seating presses the object home against the real walls). */
-	int64_t now = reach_of(c, ux, uy), far = now;
+	int64_t now = goals_held_score(c, ux, uy), far = now;
 	int32_t target = -1;
 	for (size_t at = 0; at < cells; at++) {
 		if (dist[at] < 0)
 			continue;
-		int64_t r = reach_of(c, s->x0 + (int32_t)(at % (size_t)w), s->y0 + (int32_t)(at / (size_t)w));
+		int64_t r = goals_held_score(c, s->x0 + (int32_t)(at % (size_t)w), s->y0 + (int32_t)(at / (size_t)w));
 		if (r > far || (r == far && target >= 0 && dist[at] < dist[target])) {
 			far = r;
 			target = (int32_t)at;
@@ -233,8 +218,6 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 	 * sweep along it, and the first movable object it meets (from Utak). */
 	uint8_t *keep = util_alloc(cells, 1), *scratch = util_alloc(cells, 1);
 	int32_t *queue = util_alloc(cells, sizeof *queue);
-	memset(keep, 0, cells);
-	memset(scratch, 0, cells);
 	int32_t blocker = -1;
 	for (int32_t at = target; at >= 0;) {
 		int32_t i = at % w, j = at / w;
@@ -250,10 +233,9 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 		}
 		if (dist[at] == 0)
 			break;
-		static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 		int32_t prev = -1;
 		for (int d = 0; d < 4 && prev < 0; d++) {
-			int32_t ni = i + step[d][0], nj = j + step[d][1];
+			int32_t ni = i + clear_step[d][0], nj = j + clear_step[d][1];
 			if (ni >= 0 && nj >= 0 && ni < w && nj < h && dist[nj * w + ni] == dist[at] - 1)
 				prev = nj * w + ni;
 		}
@@ -274,9 +256,8 @@ bool pushclear_begin(Controller *c, int64_t short_by)
 			y0 = j < y0 ? j : y0;
 			x1 = i > x1 ? i : x1;
 			y1 = j > y1 ? j : y1;
-			static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 			for (int d = 0; d < 4; d++) {
-				int32_t ni = i + step[d][0], nj = j + step[d][1];
+				int32_t ni = i + clear_step[d][0], nj = j + clear_step[d][1];
 				if (ni >= 0 && nj >= 0 && ni < w && nj < h && mov[nj * w + ni] == 1) {
 					mov[nj * w + ni] = 2;
 					queue[tail++] = nj * w + ni;
@@ -410,7 +391,6 @@ bool pushclear_place(const Controller *c, const Grid *g, const int32_t *dist, co
 	int32_t w = g->w, h = g->h;
 	/* The way kept free, and a square round it (the eye's error). */
 	uint8_t *keep = util_alloc((size_t)w * (size_t)h, 1);
-	memset(keep, 0, (size_t)w * (size_t)h);
 	for (int k = 0; k < c->clear_keep_count; k++)
 		for (int32_t dj = -1; dj <= 1; dj++)
 			for (int32_t di = -1; di <= 1; di++) {

@@ -79,8 +79,6 @@ static bool *pessimistic(const Controller *c, int32_t si, int32_t sj, int32_t pi
 	 * meet the verge may be the verge): its squares seen in the fovea are
 	 * doubtful too. */
 	bool *part = util_alloc((size_t)(m->node_count > 0 ? m->node_count : 1), sizeof *part);
-	for (int32_t k = 0; k < m->node_count; k++)
-		part[k] = false;
 	for (int64_t k = 0; objects && k < n; k++) {
 		int32_t i = (int32_t)(k % s->w), j = (int32_t)(k / s->w), l = s->label[k];
 		if (!doubt[k] || l < 0 || l >= m->node_count || part[l] || m->node[l].kind != NODE_OBJECT ||
@@ -852,8 +850,6 @@ bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
 	 * square never seen. A room seen in part is roomdoubt_beyond's and
 	 * roomdoubt_frontier's: the eye has not yet shown it a pocket. */
 	bool *open = util_alloc((size_t)(sr.cr.count > 0 ? sr.cr.count : 1), sizeof *open);
-	for (int32_t r = 0; r < sr.cr.count; r++)
-		open[r] = false;
 	for (int64_t k = 0; k < n; k++) {
 		int32_t i = (int32_t)(k % w), j = (int32_t)(k / w), r = carryroom_at(&sr.cr, &sr.rm, i, j);
 		for (int d = 0; d < 4 && r >= 0 && r < sr.cr.count && !open[r]; d++) {

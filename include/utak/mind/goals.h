@@ -63,6 +63,10 @@ int64_t goals_corner_shortfall(Controller *c);
 /* goals_subject_score(c): the task's subject's best corner score on the model: the
  * held object's squares pushing, else Utak's own square. */
 int64_t goals_subject_score(const Controller *c);
+
+/* goals_held_score(c, x, y): the best corner score of the held object's squares with
+ * Utak on square (x, y); INT64_MIN when he holds no square. */
+int64_t goals_held_score(const Controller *c, int32_t x, int32_t y);
 /* goals_corner_hidden(c): at a corner Utak would claim, floor seen that beats the
  * subject may be of the start's room (roomdoubt_hidden): true, the task failed
  * with his doubt; false, nothing changed. */
