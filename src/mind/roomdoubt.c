@@ -663,9 +663,10 @@ static bool jamb_loose(const Controller *c, const RoomMap *rm, const RoomsDoor *
 	int count = 0;
 	/* The run's two ends. Both walk the blob from a to b, as before jamb_faces
 	 * came: at the first end that walks back toward the door, so the blob
-	 * counts one square there. (Walking away from the door at that end, as the
-	 * rule means, made Utak touch far more piers on the rates' worlds, 4 -> 39
-	 * cycles on random g87, for no verdict changed: left as it was, a doubt.) */
+	 * counts one square there. Walking away from the door at that end, as the
+	 * rule means, was tried (with other changes): Utak touched piers of doors
+	 * his eye had settled (random g87: 4 -> 39 cycles), and one new false
+	 * success came (g112, in a doorway). Left as it was: a doubt. */
 	jambs[count++] = (Jamb){d->ax - ux, d->ay - uy, ux, uy, d->ax, d->ay};
 	jambs[count++] = (Jamb){d->bx + ux, d->by + uy, ux, uy, d->bx, d->by};
 	/* A run much longer than twice the clearance does not lie across the
