@@ -156,14 +156,19 @@ RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
  * the unseen behind it, reads as a wall (paper 3.4.2); the judge counts objects
  * as space, and where the eye has not looked it knows nothing: a claim through
  * such a door is a false success. A door is unsettled too when a JAMB (the wall
- * square beyond an end of the run across it) is a blob seen in the fovea that the
+ * square beyond an end of the run across it; and where that run is longer than
+ * twice the door's clearance and 2, so that it does not lie across the narrowing,
+ * a diagonal one, each verge square seen in the fovea, facing floor, within the
+ * clearance and 1 of the door's cell: the faces that set its width) is a blob
+ * seen in the fovea that the
  * model joins to the rest of the wall only through squares seen coarsely within
  * ROOMDOUBT_VIEW of the jamb (an object the eye did not see stand clear of the
  * wall, paper 3.4.2; the judge counts it as space), unless, the blob taken for
- * space (the run going on through it: half its extent along the run more
- * clearance), both sides would still widen well beyond the door, or touch has
- * shown the jamb B (Utak has stood beside it and felt no object's colour there);
- * until touched, the goal is the run's end beside it. A square Utak has stood near has been seen in
+ * space (the run going on through it: half its extent along the run, or from the
+ * door's cell through a face, more clearance), both sides would still widen well
+ * beyond the door, or touch has shown the jamb B (Utak has stood beside it and
+ * felt no object's colour there); until touched, the goal is the run's end
+ * beside it (for a face, its free neighbour nearest the door's cell). A square Utak has stood near has been seen in
  * the fovea: read coarse again, it is only forgotten (worldmodel.h). For the
  * doors of `room` (its merged room, before the joins), *goal is where to look
  * from at the nearest such square not yet looked at (ROOMDOUBT_LOOK);
