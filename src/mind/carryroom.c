@@ -45,10 +45,11 @@ static bool cr_wide(double peak, double c)
 	return peak >= CARRYROOM_RATIO * c && peak >= c + CARRYROOM_MARGIN;
 }
 
-/* cr_merge(rm, open, out): carryroom_merge; with open (per rooms.h room: it touches
- * the unknown), a narrowing that fails the rule joins its two sides only when
- * neither side, as merged so far, is open (carryroom_merge_seen). */
-static void cr_merge(const RoomMap *rm, bool *open, CarryRooms *out)
+/* cr_merge(rm, open, each, out): carryroom_merge; with open (per rooms.h room: it
+ * touches the unknown), a narrowing that fails the rule joins its two sides only
+ * when neither side, as merged so far, is open (carryroom_merge_seen); with each
+ * too, only when some side is neither wide nor open (carryroom_merge_maybe). */
+static void cr_merge(const RoomMap *rm, bool *open, bool each, CarryRooms *out)
 {
 	const Rooms *r = &rm->rooms;
 	int32_t n = r->room_count, nd = r->door_count;
@@ -85,7 +86,8 @@ static void cr_merge(const RoomMap *rm, bool *open, CarryRooms *out)
 		out->door[q] = a != b && cr_wide(out->peak[a], key[q]) && cr_wide(out->peak[b], key[q]);
 		if (out->door[q] || a == b)
 			continue;
-		if (open && (open[a] || open[b])) {
+		if (open && (each ? (open[a] || cr_wide(out->peak[a], key[q])) && (open[b] || cr_wide(out->peak[b], key[q]))
+			       : open[a] || open[b])) {
 			out->door[q] = out->undecided[q] = true; /* kept apart until both are seen whole */
 			continue;
 		}
@@ -109,10 +111,12 @@ static void cr_merge(const RoomMap *rm, bool *open, CarryRooms *out)
 
 void carryroom_merge(const RoomMap *rm, CarryRooms *out)
 {
-	cr_merge(rm, NULL, out);
+	cr_merge(rm, NULL, false, out);
 }
 
-void carryroom_merge_seen(const RoomMap *rm, const Screen *s, CarryRooms *out)
+/* cr_open(rm, s): per rooms.h room of rm, whether a cell of it is 4-adjacent to a
+ * square of s never seen (caller frees). */
+static bool *cr_open(const RoomMap *rm, const Screen *s)
 {
 	const Rooms *r = &rm->rooms;
 	int32_t n = r->room_count;
@@ -128,7 +132,20 @@ void carryroom_merge_seen(const RoomMap *rm, const Screen *s, CarryRooms *out)
 				open[k] = x >= 0 && y >= 0 && x < s->w && y < s->h && s->label[y * s->w + x] == SCREEN_UNKNOWN;
 			}
 		}
-	cr_merge(rm, open, out);
+	return open;
+}
+
+void carryroom_merge_seen(const RoomMap *rm, const Screen *s, CarryRooms *out)
+{
+	bool *open = cr_open(rm, s);
+	cr_merge(rm, open, false, out);
+	free(open);
+}
+
+void carryroom_merge_maybe(const RoomMap *rm, const Screen *s, CarryRooms *out)
+{
+	bool *open = cr_open(rm, s);
+	cr_merge(rm, open, true, out);
 	free(open);
 }
 

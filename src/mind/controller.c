@@ -36,6 +36,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
+#include "utak/mind/hallsplit.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
 #include "utak/mind/tug.h"
@@ -240,6 +241,21 @@ static bool corner_frontier(Controller *c)
 	return seen_in_part;
 }
 
+/* corner_hall_split(c): whether a blob seen only coarsely may be a wall that parts
+ * the start's room from Utak's point (hallsplit.h); if so the task fails with his
+ * doubt. */
+static bool corner_hall_split(Controller *c)
+{
+	Vec2 at;
+	if (!hallsplit_parts(c, c->model.utak, &at))
+		return false;
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why,
+		 "Utak cannot tell he is in the %s: a blob seen only coarsely, at (%.1f, %.1f), may be a wall that parts the room he started in",
+		 task_corner_name(c->task.corner), at.x, at.y);
+	return true;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -271,8 +287,8 @@ static void arrive(Controller *c)
 			c->room_look = true; /* the next goal: a look at the door's coarse side */
 		else if (corner_frontier(c))
 			; /* the room seen in part: the next goal is a look at its unseen side */
-		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK && !goals_corner_hidden(c))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden fails it, with his doubt) */
+		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK && !goals_corner_hidden(c) && !corner_hall_split(c))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden and corner_hall_split fail it, with his doubt) */
 		/* else not sure of the room: the next goal is a look at the wall between */
 		return;
 	case TASK_GO_SHAPE:

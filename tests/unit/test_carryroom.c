@@ -7,7 +7,9 @@
  * the judge (two rooms joined by a door, or one, when one side is a pocket that does
  * not widen beyond the door), and the same L-shaped corridors with the same legs and
  * bend, or none where the judge finds none (legs too wide, too short, a straight
- * corridor, a plain room). */
+ * corridor, a plain room). Seen in part (the far side of a room never seen), the
+ * narrowings carryroom_merge_maybe keeps are the ones that may yet be doors: a
+ * pocket seen whole is no door whatever lies beyond. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -44,6 +46,37 @@ static int32_t merged_count(const CarryRooms *cr, const RoomMap *rm)
 	return n;
 }
 
+/* load_two_rooms(W, H, wx, lo, door): a W x H TABLE cut by a wall 2 thick at
+ * columns wx..wx+2 with a door from row lo to lo + door. */
+static void load_two_rooms(int W, int H, int wx, int lo, int door)
+{
+	char text[512];
+	snprintf(text, sizeof text,
+		 "table %d %d\nwall %d 1 %d 1 %d %d %d %d\nwall %d %d %d %d %d %d %d %d\nutak 1.5 1.5 north\n", W, H,
+		 wx, wx + 2, wx + 2, lo, wx, lo, wx, lo + door, wx + 2, lo + door, wx + 2, H - 1, wx, H - 1);
+	load(text);
+}
+
+/* seen_in_part(hide, s, rm): the loaded TABLE as a screen whose columns from `hide`
+ * eastward were never seen (SCREEN_UNKNOWN), and its room map as goals.c builds one
+ * (the unseen blocked); the caller frees s->label and rm. */
+static void seen_in_part(int32_t hide, Screen *s, RoomMap *rm)
+{
+	*s = (Screen){0};
+	s->w = table.w, s->h = table.h;
+	s->label = calloc((size_t)s->w * (size_t)s->h, sizeof *s->label);
+	grid_init(&rm->known, table.w, table.h, GRID_BLOCKED);
+	for (int32_t y = 0; y < table.h; y++)
+		for (int32_t x = 0; x < table.w; x++) {
+			int32_t k = y * table.w + x;
+			s->label[k] = x >= hide ? SCREEN_UNKNOWN : table_owner(&table, x, y) == TABLE_VERGE ? SCREEN_VERGE
+													  : SCREEN_SPACE;
+			if (s->label[k] == SCREEN_SPACE)
+				rm->known.cells[k] = GRID_FREE;
+		}
+	goals_roommap_find(rm);
+}
+
 TEST_CASE(rooms_agree_with_the_judge)
 {
 	/* Two rooms side by side, a wall 2 thick between them with a door: rooms
@@ -57,11 +90,7 @@ TEST_CASE(rooms_agree_with_the_judge)
 		if (door > h - 2)
 			door = h - 2;
 		int lo = 2 + oracle_rand_below(h - door - 1), wx = 1 + west, W = wx + 2 + east + 1, H = h + 2;
-		char text[512];
-		snprintf(text, sizeof text,
-			 "table %d %d\nwall %d 1 %d 1 %d %d %d %d\nwall %d %d %d %d %d %d %d %d\nutak 1.5 1.5 north\n", W,
-			 H, wx, wx + 2, wx + 2, lo, wx, lo, wx, lo + door, wx + 2, lo + door, wx + 2, H - 1, wx, H - 1);
-		load(text);
+		load_two_rooms(W, H, wx, lo, door);
 		JudgeRooms jr;
 		judge_rooms_find(&jr, &table);
 		RoomMap rm;
@@ -73,6 +102,16 @@ TEST_CASE(rooms_agree_with_the_judge)
 			fprintf(stderr, "  rooms %d and %d wide, %d high, door %d: judge %d rooms, Utak %d\n", west, east, h,
 				door, (int)jr.count, (int)mine);
 		TEST_CHECK(mine == jr.count);
+		/* Seen whole, carryroom_merge_maybe is the same rule. */
+		Screen s;
+		RoomMap whole;
+		seen_in_part(W, &s, &whole);
+		CarryRooms maybe;
+		carryroom_merge_maybe(&whole, &s, &maybe);
+		TEST_CHECK(merged_count(&maybe, &whole) == jr.count);
+		carryroom_free(&maybe);
+		goals_roommap_free(&whole);
+		free(s.label);
 		two += jr.count == 2;
 		one += jr.count == 1;
 		carryroom_free(&cr);
@@ -155,10 +194,48 @@ TEST_CASE(l_shaped_corridors_agree_with_the_judge)
 	TEST_CHECK(bends >= 10 && none >= 10);
 }
 
+TEST_CASE(merge_maybe_keeps_only_what_may_be_a_door)
+{
+	/* A room 6 wide (a pocket: rooms.c cuts it off, the judge does not) or 20
+	 * wide west of a wall 2 thick with a door 4 wide, a room 20 wide east of it
+	 * whose far 8 columns were never seen. The judge (the whole TABLE) finds one
+	 * room beside the pocket, two beside the hall. carryroom_merge_maybe must
+	 * agree: the pocket, seen whole, can never widen, whatever the east room turns
+	 * out to be (carryroom_merge_seen keeps that narrowing undecided); the east
+	 * room, seen in part, still widens beyond the door. (With nothing hidden, rooms_agree_with_the_judge checks it.) */
+	for (int t = 0; t < 2; t++) {
+		int west = t == 0 ? 6 : 20, east = 20, h = 20, door = 4, lo = 8, wx = 1 + west, W = wx + 2 + east + 1,
+		    H = h + 2;
+		load_two_rooms(W, H, wx, lo, door);
+		JudgeRooms jr;
+		judge_rooms_find(&jr, &table);
+		Screen s;
+		RoomMap rm;
+		seen_in_part(W - 1 - 8, &s, &rm);
+		CarryRooms maybe, seen;
+		carryroom_merge_maybe(&rm, &s, &maybe);
+		carryroom_merge_seen(&rm, &s, &seen);
+		fprintf(stderr, "  west %d wide: judge %d rooms, rooms.c %d doors, maybe %d rooms, seen %d\n", west,
+			(int)jr.count, (int)rm.rooms.door_count, (int)merged_count(&maybe, &rm),
+			(int)merged_count(&seen, &rm));
+		TEST_CHECK(jr.count == (t == 0 ? 1 : 2));
+		TEST_CHECK(merged_count(&maybe, &rm) == jr.count);
+		if (t == 0)
+			TEST_CHECK(merged_count(&seen, &rm) == 2); /* the undecided door maybe drops */
+		carryroom_free(&maybe);
+		carryroom_free(&seen);
+		goals_roommap_free(&rm);
+		free(s.label);
+		judge_rooms_free(&jr);
+		unload();
+	}
+}
+
 int main(void)
 {
 	(void)act; /* the fixture's motor helper: not needed here */
 	TEST_RUN(rooms_agree_with_the_judge);
 	TEST_RUN(l_shaped_corridors_agree_with_the_judge);
+	TEST_RUN(merge_maybe_keeps_only_what_may_be_a_door);
 	return TEST_EXIT();
 }

@@ -73,6 +73,12 @@ void carryroom_merge(const RoomMap *rm, CarryRooms *out);
  * room's. Used for the corner of Utak's starting room (goals.c, roomdoubt.c).
  * COMPLEXITY: O(w h + doors log doors). */
 void carryroom_merge_seen(const RoomMap *rm, const Screen *s, CarryRooms *out);
+/* carryroom_merge_maybe(rm, s, out): as carryroom_merge_seen, but a narrowing that
+ * fails the rule stays a door, undecided, only while EACH side, as merged so far,
+ * is wide by the rule or seen in part: a side seen whole and narrow cannot widen,
+ * and the narrowing can be no door whatever the other side turns out to be. The
+ * doors that MAY be doors, for a doubt (hallsplit.h). COMPLEXITY: as above. */
+void carryroom_merge_maybe(const RoomMap *rm, const Screen *s, CarryRooms *out);
 void carryroom_free(CarryRooms *cr);
 /* carryroom_at(cr, rm, x, y): the merged room of cell (x, y), -1 blocked or off. */
 int32_t carryroom_at(const CarryRooms *cr, const RoomMap *rm, int32_t x, int32_t y);
