@@ -96,6 +96,8 @@ static void rival_end(Controller *c, const char *what)
 	c->have_plan = false;
 	if (r->home_after) /* "go round": the loop is walked; home, and judged there again */
 		round_home(c, objects_find_target(c));
+	else
+		r->returning = true; /* back where he would have claimed (rival_goal) */
 }
 
 /* probe_as_claim(c, k): probe_begin on node k whatever the task: it asks for the
@@ -175,6 +177,8 @@ bool rival_begin(Controller *c, int32_t k)
 	r->tried_at[r->count++] = at;
 	r->arrivals = 0;
 	r->home_after = c->task.kind == TASK_GO_ROUND;
+	r->back = c->model.utak;
+	r->returning = false;
 	r->stage = RIVAL_GO;
 	size_t n = strlen(r->note);
 	snprintf(r->note + n, sizeof r->note - n, "; rival at (%.1f, %.1f): going to settle it (rival.h)", at.x, at.y);
@@ -184,6 +188,18 @@ bool rival_begin(Controller *c, int32_t k)
 
 bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 {
+	int32_t i, j0;
+	if (c->rival.returning) {
+		/* Back to where he set off from beside the object he would claim, while
+		 * it can be reached; arriving there, the claim is judged again. */
+		if (c->space.w == c->screen.w && c->space.h == c->screen.h && goals_cell_of(&c->screen, c->rival.back, &i, &j0) &&
+		    dist[j0 * c->screen.w + i] >= 0) {
+			out->goal = c->rival.back;
+			out->found = out->exploring = true;
+			return true;
+		}
+		c->rival.returning = false;
+	}
 	if (c->rival.stage != RIVAL_GO)
 		return false;
 	int32_t j = rival_node(c);
@@ -202,6 +218,12 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 bool rival_arrive(Controller *c)
 {
 	RivalRun *r = &c->rival;
+	if (r->returning) {
+		/* Back: the task's own arrival judges the claim again. */
+		r->returning = false;
+		c->exploring = false;
+		return false;
+	}
 	if (r->stage != RIVAL_GO)
 		return false;
 	c->have_plan = false;

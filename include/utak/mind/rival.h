@@ -36,9 +36,10 @@
  * is probed (probe_begin: grasp, quarter-square pushes, looks, push back, release;
  * only where the probe can be made safely). A disproved rival is named nothing
  * from then on (probe_disproved, objects_read). Then he returns to his claim and
- * it is judged again from the start: "go square" goes beside the object again,
- * "go round square" goes home (the whole trail counts for the winding, his measure
- * and the judge's alike), "push square" goes to its grasp side again.
+ * it is judged again from the start: "go square" and "push square" go back to the
+ * very point beside the object he set off from (where he would have claimed, or
+ * grasped: a push planned from elsewhere is another push), "go round square" goes
+ * home (the whole trail counts for the winding, his measure and the judge's alike).
  * OWN FIRST. Beside the object he would claim (not home from a loop), Utak first
  * probes that object itself, once, where the probe can be made safely: a rival is
  * a doubt only while this one may be a square. Disproved, it is named nothing and
@@ -77,6 +78,8 @@ typedef struct RivalRun {
 	Vec2 at;	/* ... its centroid when chosen, model frame */
 	int arrivals;	/* goals reached going to it */
 	bool home_after; /* "go round": home again when it is settled */
+	Vec2 back;	/* where he stood beside the object he would claim ... */
+	bool returning;	/* ... and he is going back there (the others) */
 	int count;	/* rivals begun this task */
 	int32_t tried_ident[RIVAL_MAX];
 	Vec2 tried_at[RIVAL_MAX];
