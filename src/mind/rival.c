@@ -55,7 +55,8 @@ static bool ring_unseen(const Controller *c, int32_t j, int32_t *x, int32_t *y)
 	double best = -1;
 	for (int32_t sy = (int32_t)floor(r->lo.y) - 1; sy <= (int32_t)ceil(r->hi.y); sy++)
 		for (int32_t sx = (int32_t)floor(r->lo.x) - 1; sx <= (int32_t)ceil(r->hi.x); sx++) {
-			if (worldmodel_node_at(m, sx, sy) == j || worldmodel_evidence(m, sx, sy).res == WORLDMODEL_RES_FOVEA)
+			if (worldmodel_node_at(m, sx, sy) == j ||
+			    worldmodel_evidence(m, sx, sy).res == WORLDMODEL_RES_FOVEA)
 				continue;
 			bool ring = false;
 			for (int32_t dy = -1; dy <= 1 && !ring; dy++)
@@ -77,10 +78,12 @@ static bool ring_unseen(const Controller *c, int32_t j, int32_t *x, int32_t *y)
 static bool rival_way(const Controller *c, int32_t j, const int32_t *dist, Vec2 *goal)
 {
 	int32_t x, y;
-	if (objects_unconfirmed_square(c, j, &x, &y) && goals_near(c, goals_centre(x, y), dist, goal))
+	if (objects_unconfirmed_square(c, j, &x, &y) &&
+	    goals_near(c, goals_centre(x, y), dist, goal))
 		return true;
 	if (c->rival.arrivals < RIVAL_ARRIVALS - 1 && ring_unseen(c, j, &x, &y) &&
-	    goals_near(c, goals_centre(x, y), dist, goal) && goals_distance(*goal, c->model.utak) > CONTROLLER_ARRIVED)
+	    goals_near(c, goals_centre(x, y), dist, goal) &&
+	    goals_distance(*goal, c->model.utak) > CONTROLLER_ARRIVED)
 		return true;
 	return goals_beside(c, j, dist, goal);
 }
@@ -91,7 +94,8 @@ static void rival_end(Controller *c, const char *what)
 {
 	RivalRun *r = &c->rival;
 	size_t n = strlen(r->note);
-	snprintf(r->note + n, sizeof r->note - n, "; rival at (%.1f, %.1f): %s", r->at.x, r->at.y, what);
+	snprintf(r->note + n, sizeof r->note - n, "; rival at (%.1f, %.1f): %s", r->at.x, r->at.y,
+	         what);
 	r->stage = RIVAL_IDLE;
 	c->have_plan = false;
 	if (r->home_after) /* "go round": the loop is walked; home, and judged there again */
@@ -122,7 +126,8 @@ bool rival_own_probed(const Controller *c, int32_t k)
 		return false;
 	Vec2 at = node_centre(c, k);
 	for (int i = 0; i < r->own_count; i++)
-		if (r->own_ident[i] == (int32_t)c->model.node[k].ident || goals_distance(r->own_at[i], at) < OBJECTS_SAME)
+		if (r->own_ident[i] == (int32_t)c->model.node[k].ident ||
+		    goals_distance(r->own_at[i], at) < OBJECTS_SAME)
 			return true;
 	return false;
 }
@@ -136,7 +141,8 @@ bool rival_begin(Controller *c, int32_t k)
 	if (j < 0 || !objects_rival_open(c, j))
 		return false;
 	/* OWN FIRST: beside the object he would claim, that one first. */
-	if (!rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) && probe_as_claim(c, k)) {
+	if (!rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) &&
+	    probe_as_claim(c, k)) {
 		r->own_ident[r->own_count] = (int32_t)c->model.node[k].ident;
 		r->own_at[r->own_count++] = node_centre(c, k);
 		r->stage = RIVAL_OWN;
@@ -155,7 +161,8 @@ bool rival_begin(Controller *c, int32_t k)
 		return false;
 	Vec2 at = node_centre(c, j);
 	for (int i = 0; i < r->count; i++)
-		if (r->tried_ident[i] == (int32_t)c->model.node[j].ident || goals_distance(r->tried_at[i], at) < OBJECTS_SAME)
+		if (r->tried_ident[i] == (int32_t)c->model.node[j].ident ||
+		    goals_distance(r->tried_at[i], at) < OBJECTS_SAME)
 			return false; /* settled once already: what it left stands */
 	/* Only when the way there is known (on this cycle's screen and space). */
 	const Grid *g = &c->space;
@@ -181,7 +188,8 @@ bool rival_begin(Controller *c, int32_t k)
 	r->returning = false;
 	r->stage = RIVAL_GO;
 	size_t n = strlen(r->note);
-	snprintf(r->note + n, sizeof r->note - n, "; rival at (%.1f, %.1f): going to settle it (rival.h)", at.x, at.y);
+	snprintf(r->note + n, sizeof r->note - n,
+	         "; rival at (%.1f, %.1f): going to settle it (rival.h)", at.x, at.y);
 	c->have_plan = false;
 	return true;
 }
@@ -192,7 +200,8 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 	if (c->rival.returning) {
 		/* Back to where he set off from beside the object he would claim, while
 		 * it can be reached; arriving there, the claim is judged again. */
-		if (c->space.w == c->screen.w && c->space.h == c->screen.h && goals_cell_of(&c->screen, c->rival.back, &i, &j0) &&
+		if (c->space.w == c->screen.w && c->space.h == c->screen.h &&
+		    goals_cell_of(&c->screen, c->rival.back, &i, &j0) &&
 		    dist[j0 * c->screen.w + i] >= 0) {
 			out->goal = c->rival.back;
 			out->found = out->exploring = true;
@@ -243,7 +252,8 @@ bool rival_arrive(Controller *c)
 	}
 	ObjectReading q = objects_read(c, j);
 	if (q.examined && !rival_own_probed(c, objects_find_target(c))) {
-		rival_end(c, "seen whole, it may be a square, and the object claimed was not probed: the doubt stands");
+		rival_end(c, "seen whole, it may be a square, and the object claimed was not "
+		             "probed: the doubt stands");
 		return true;
 	}
 	if (q.confirmed && objects_touching(c, j)) {
@@ -280,8 +290,10 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 		if (verdict == PROBE_INCONSISTENT)
 			c->rival.own_count--; /* no claim on it is left to spare a probe of */
 		size_t n = strlen(c->rival.note);
-		snprintf(c->rival.note + n, sizeof c->rival.note - n, "; probed first, before a rival: %s",
-			 verdict == PROBE_INCONSISTENT ? "it is no square, dropped" : "it may be a square");
+		snprintf(c->rival.note + n, sizeof c->rival.note - n,
+		         "; probed first, before a rival: %s",
+		         verdict == PROBE_INCONSISTENT ? "it is no square, dropped"
+		                                       : "it may be a square");
 		return false;
 	}
 	/* The probe's end (probe_decide) claims the task's object or drops it; here
@@ -295,8 +307,9 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 	c->target = target;
 	c->target_at = target_at;
 	c->phase = phase;
-	rival_end(c, verdict == PROBE_INCONSISTENT ? "probed, its squares fit no square: it is no square, the doubt is gone"
-						  : "probed, its squares may be a square's: the doubt stands");
+	rival_end(c, verdict == PROBE_INCONSISTENT
+	                 ? "probed, its squares fit no square: it is no square, the doubt is gone"
+	                 : "probed, its squares may be a square's: the doubt stands");
 	return false;
 }
 
@@ -306,17 +319,22 @@ bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		return false;
 	if (c->rival.stage == RIVAL_OWN && cmd->kind == MOTOR_RELEASE) {
 		snprintf(note, size, "; probe: released the object he would claim; its squares %s",
-			 c->probe.verdict == PROBE_INCONSISTENT ? "fit no square: it is not the square"
-								: "may be a square's: the claim waits on the rival");
+		         c->probe.verdict == PROBE_INCONSISTENT
+		             ? "fit no square: it is not the square"
+		             : "may be a square's: the claim waits on the rival");
 		return true;
 	}
 	if (c->rival.stage != RIVAL_PROBE)
 		return true; /* the object he would claim: probe.c's own notes */
 	if (cmd->kind == MOTOR_GRASP)
-		snprintf(note, size, "; probe: grasped the rival at (%.1f, %.1f), to push it %d way%s by a quarter square and back (rival.h)",
-			 c->rival.at.x, c->rival.at.y, c->probe.corners, c->probe.corners > 1 ? "s" : "");
+		snprintf(note, size,
+		         "; probe: grasped the rival at (%.1f, %.1f), to push it %d way%s by a "
+		         "quarter square and back (rival.h)",
+		         c->rival.at.x, c->rival.at.y, c->probe.corners,
+		         c->probe.corners > 1 ? "s" : "");
 	else if (cmd->kind == MOTOR_RELEASE)
 		snprintf(note, size, "; probe: released the rival; its squares %s",
-			 c->probe.verdict == PROBE_INCONSISTENT ? "fit no square" : "may be a square's");
+		         c->probe.verdict == PROBE_INCONSISTENT ? "fit no square"
+		                                                : "may be a square's");
 	return true;
 }

@@ -67,20 +67,20 @@
 
 typedef enum RivalStage {
 	RIVAL_IDLE,
-	RIVAL_GO,	/* going to the rival: to look at it, then beside it */
-	RIVAL_PROBE,	/* probing it (probe.h) */
-	RIVAL_OWN,	/* probing the object Utak would claim first (OWN FIRST) */
+	RIVAL_GO,    /* going to the rival: to look at it, then beside it */
+	RIVAL_PROBE, /* probing it (probe.h) */
+	RIVAL_OWN,   /* probing the object Utak would claim first (OWN FIRST) */
 } RivalStage;
 
 typedef struct RivalRun {
 	RivalStage stage;
-	int32_t ident;	/* the rival (model ident) */
-	Vec2 at;	/* ... its centroid when chosen, model frame */
-	int arrivals;	/* goals reached going to it */
+	int32_t ident;   /* the rival (model ident) */
+	Vec2 at;         /* ... the centre of its rectangle when chosen, model frame */
+	int arrivals;    /* goals reached going to it */
 	bool home_after; /* "go round": home again when it is settled */
-	Vec2 back;	/* where he stood beside the object he would claim ... */
-	bool returning;	/* ... and he is going back there (the others) */
-	int count;	/* rivals begun this task */
+	Vec2 back;       /* where he stood beside the object he would claim ... */
+	bool returning;  /* ... and he is going back there (the others) */
+	int count;       /* rivals begun this task */
 	int32_t tried_ident[RIVAL_MAX];
 	Vec2 tried_at[RIVAL_MAX];
 	char note[400]; /* what settling did since the last impression, for the trace */
