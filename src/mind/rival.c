@@ -220,6 +220,13 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		rival_end(c, "no way to it: the doubt stands");
 		return false;
 	}
+	/* A goal where he stands, once he has arrived somewhere on the way: the eye
+	 * and touch have shown from here all they will (else the arrivals would
+	 * follow one another without a command between). */
+	if (c->rival.arrivals > 0 && goals_distance(out->goal, c->model.utak) <= CONTROLLER_ARRIVED) {
+		rival_end(c, "nothing more to see or touch from here: the doubt stands");
+		return false;
+	}
 	out->found = out->exploring = true;
 	return true;
 }
