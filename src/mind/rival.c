@@ -220,10 +220,11 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		rival_end(c, "no way to it: the doubt stands");
 		return false;
 	}
-	/* A goal where he stands, once he has arrived somewhere on the way: the eye
+	/* A goal where he stands, and where he arrived on the way already: the eye
 	 * and touch have shown from here all they will (else the arrivals would
 	 * follow one another without a command between). */
-	if (c->rival.arrivals > 0 && goals_distance(out->goal, c->model.utak) <= CONTROLLER_ARRIVED) {
+	if (c->rival.arrivals > 0 && goals_distance(out->goal, c->model.utak) <= CONTROLLER_ARRIVED &&
+	    goals_distance(c->rival.arrived_at, c->model.utak) <= CONTROLLER_ARRIVED) {
 		rival_end(c, "nothing more to see or touch from here: the doubt stands");
 		return false;
 	}
@@ -244,6 +245,7 @@ bool rival_arrive(Controller *c)
 		return false;
 	c->have_plan = false;
 	r->arrivals++;
+	r->arrived_at = c->model.utak;
 	int32_t j = rival_node(c);
 	if (j < 0) {
 		rival_end(c, "no longer in the model");

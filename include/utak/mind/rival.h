@@ -77,6 +77,7 @@ typedef struct RivalRun {
 	int32_t ident;   /* the rival (model ident) */
 	Vec2 at;         /* ... the centre of its rectangle when chosen, model frame */
 	int arrivals;    /* goals reached going to it */
+	Vec2 arrived_at; /* ... the last of them */
 	bool home_after; /* "go round": home again when it is settled */
 	Vec2 back;       /* where he stood beside the object he would claim ... */
 	bool returning;  /* ... and he is going back there (the others) */
