@@ -34,6 +34,7 @@
 #include "utak/mind/objects.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/push.h"
+#include "utak/mind/rival.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/hallsplit.h"
@@ -260,6 +261,8 @@ static bool corner_hall_split(Controller *c)
 static void arrive(Controller *c)
 {
 	c->have_plan = false;
+	if (rival_arrive(c))
+		return; /* going to another object the claim is in doubt over (rival.h) */
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
 		c->room_look = c->room_following = false;
@@ -298,10 +301,14 @@ static void arrive(Controller *c)
 				/* Beside one he would doubt, seen closely only now: the next
 				 * goal is a look further for one beyond doubt (goals.c). */
 			} else if (objects_doubt(c, objects_find_target(c), doubt, sizeof doubt)) {
-				c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
-				snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
-					 task_shape_name(c->task.shape), doubt);
-			} else if (!probe_begin(c, objects_find_target(c))) {
+				/* A doubt over another object: settle it first where he can
+				 * (rival.h), then beside this one again. */
+				if (!rival_begin(c, objects_find_target(c))) {
+					c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
+					snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
+						 task_shape_name(c->task.shape), doubt);
+				}
+			} else if (rival_own_probed(c, objects_find_target(c)) || !probe_begin(c, objects_find_target(c))) {
 				c->phase = PHASE_DONE; /* else claimed, or dropped, by motion first */
 			}
 		} else
@@ -330,6 +337,8 @@ static void arrive(Controller *c)
 					/* Round one he would doubt: look further for one beyond doubt. */
 					c->round_loops++;
 					c->round_count = 0;
+				} else if (objects_doubt(c, k, doubt, sizeof doubt) && rival_begin(c, k)) {
+					/* a doubt over another object: settled first, then home again (rival.h) */
 				} else if (objects_doubt(c, k, doubt, sizeof doubt)) {
 					c->phase = PHASE_FAILED;
 					snprintf(c->why, sizeof c->why, "Utak doubts he went round the %s: %s",
@@ -374,6 +383,11 @@ static void arrive(Controller *c)
 			c->phase = PHASE_RELEASE;
 		else if (objects_touching_target(c) && objects_misread(c, objects_find_target(c)) && goals_more_to_see(c)) {
 			/* Beside one he would doubt: a look further first (goals.c). */
+		} else if (objects_touching_target(c) && c->clear_tries == 0 &&
+			   objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt) &&
+			   rival_begin(c, objects_find_target(c))) {
+			/* A doubt over another object: settled before the object to push is
+			 * chosen (rival.h), then back to its grasp side. */
 		} else if (objects_touching_target(c)) {
 			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
 			/* Fetched again after clearing the way (pushclear.h), the doubt is
@@ -482,15 +496,16 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	if (!c->has_task)
 		return false;
 	c->cycle++;
-	/* A square about to be claimed, confirmed by motion first (probe.h). */
-	if (probe_decide(c, cmd))
+	/* A square about to be claimed, or a rival, confirmed by motion first (probe.h,
+	 * rival.h). */
+	if (rival_decide(c, cmd))
 		return true;
 	/* An object not yet told from the wall it leans on: touch and motion. */
 	if (tug_decide(c, cmd))
 		return true;
 	/* Step 8 and 9, a few times over if arriving changes the phase. */
 	for (int round = 0; round < 4; round++) {
-		if (probe_decide(c, cmd)) /* begun on arriving (arrive) */
+		if (rival_decide(c, cmd)) /* begun on arriving (arrive) */
 			return true;
 		switch (c->phase) {
 		case PHASE_DONE:
@@ -582,7 +597,7 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	c->impression = *imp;
 	regions_find(&c->regions, imp);		 /* step 11 */
 	/* Only the corner push judges the object by its held squares (push_seat_finish). */
-	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER;
+	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER && !rival_probing(c);
 	worldmodel_accommodate(&c->model, cmd, imp);
 	if (cmd->kind == MOTOR_GRASP)
 		c->grasp_shape = shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count);
@@ -599,7 +614,11 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
 	n += pushclear_note(c, c->note + n, sizeof c->note - (size_t)n); /* a clearing begun: why */
-	if (probe_perceive(c, cmd, c->note + n, sizeof c->note - (size_t)n)) {
+	if (c->rival.note[0]) { /* a rival gone to, or settled (rival.h) */
+		n += snprintf(c->note + n, sizeof c->note - (size_t)n, "%s", c->rival.note);
+		c->rival.note[0] = '\0';
+	}
+	if (rival_perceive(c, cmd, c->note + n, sizeof c->note - (size_t)n)) {
 		c->last_position = c->model.utak; /* its pushes are short by design */
 		c->stuck = 0;
 		return;

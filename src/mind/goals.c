@@ -22,6 +22,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/carryroom.h"
+#include "utak/mind/rival.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
@@ -831,6 +832,8 @@ void goals_choose(Controller *c, GoalResult *out)
 			snprintf(out->why, sizeof out->why, "no door out of this room, and nothing left unseen");
 		break;
 	default: /* an object's task (going round it first finds it) */
+		if (!pushing && rival_goal(c, dist, out))
+			break; /* another object the claim is in doubt over: settled first (rival.h) */
 		if (c->task.kind == TASK_GO_ROUND && c->round_looking) {
 			/* Home from a loop round an object not seen whole: a closer look
 			 * at each part unseen, then the start again (round.c). */

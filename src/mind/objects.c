@@ -327,12 +327,12 @@ static bool other_frame(const Controller *c, int32_t k, double *aspect)
 	return other;
 }
 
-/* another_of_shape(c, k, &at): another object of the model than node k (not
- * felt to be wall), as far from the start or farther, is read the task's shape
- * (confirmed, a hypothesis or a guess, as objects_find_target counts them); at is
- * its centroid (objects.h, ANOTHER OF THE SHAPE). Nearer ones are the loop above
- * objects_doubt's. */
-static bool another_of_shape(Controller *c, int32_t k, Vec2 *at)
+/* another_of_shape(c, k, &at): the node of another object of the model than node k
+ * (not felt to be wall), as far from the start or farther, read the task's shape
+ * (confirmed, a hypothesis or a guess, as objects_find_target counts them), -1
+ * when there is none; at is its centroid (objects.h, ANOTHER OF THE SHAPE).
+ * Nearer ones are the loop above doubt_of's. */
+static int32_t another_of_shape(Controller *c, int32_t k, Vec2 *at)
 {
 	double d = goals_distance(objects_read(c, k).centroid, c->start);
 	for (int32_t j = 0; j < c->model.node_count; j++) {
@@ -341,18 +341,39 @@ static bool another_of_shape(Controller *c, int32_t k, Vec2 *at)
 		ObjectReading q = objects_read(c, j);
 		if (q.shape == c->task.shape && goals_distance(q.centroid, c->start) >= d) {
 			*at = q.centroid;
-			return true;
+			return j;
 		}
 	}
-	return false;
+	return -1;
 }
 
-bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
+/* unnamed_crumb(c, j, q): node j (read q) is left unnamed but may be a small square
+ * (objects.h, NEARER THE START): 8 to 14 squares spanning 3 or more each way, and
+ * no probe has shown that no square owns them (probe.h: the probe's hypothesis is
+ * every rectangle of a square's proportions, sides from 1.5, at any angle). */
+static bool unnamed_crumb(const Controller *c, int32_t j, const ObjectReading *q)
+{
+	const Box *r = &c->model.node[j].rect;
+	return q->shape == SHAPE_NONE && !q->disproved && q->squares >= OBJECTS_CRUMB_LEAST && q->squares <= OBJECTS_CRUMB &&
+	       r->hi.x - r->lo.x >= 3 && r->hi.y - r->lo.y >= 3 &&
+	       !probe_disproved(c, (int32_t)c->model.node[j].ident, q->centroid);
+}
+
+bool objects_rival_open(Controller *c, int32_t j)
+{
+	ObjectReading q = objects_read(c, j);
+	return !q.examined || q.shape == c->task.shape || unnamed_crumb(c, j, &q);
+}
+
+/* doubt_of(c, k, why, size, &rival): objects_doubt, and the node of the other
+ * object the doubt names (-1 when it names none). */
+static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *rival)
 {
 	ObjectReading o = objects_read(c, k);
 	const char *shape = task_shape_name(c->task.shape);
 	double aspect = 0;
 	Vec2 other;
+	*rival = -1;
 	/* Another of the shape nearer the start, not sure or not yet seen whole,
 	 * may be the one the task means. */
 	double d = goals_distance(o.centroid, c->start);
@@ -362,12 +383,10 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 		ObjectReading q = objects_read(c, j);
 		if (goals_distance(q.centroid, c->start) >= d)
 			continue;
-		const Box *r = &c->model.node[j].rect;
-		bool unnamed_crumb = q.shape == SHAPE_NONE && !q.disproved && q.squares >= OBJECTS_CRUMB_LEAST && q.squares <= OBJECTS_CRUMB &&
-				     r->hi.x - r->lo.x >= 3 && r->hi.y - r->lo.y >= 3;
-		if (!q.examined || unnamed_crumb || (q.shape == c->task.shape && doubt_own(&q))) {
+		if (!q.examined || unnamed_crumb(c, j, &q) || (q.shape == c->task.shape && doubt_own(&q))) {
 			snprintf(why, size, "what may be another %s lies nearer the start, at (%.1f, %.1f)", shape,
 				 q.centroid.x, q.centroid.y);
+			*rival = j;
 			return true;
 		}
 	}
@@ -388,12 +407,25 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 	else if (o.confirmed && o.shape == c->task.shape && other_frame(c, k, &aspect))
 		snprintf(why, size, "a rectangle %.2f times as long as wide covers the %s's %d squares exactly too", aspect,
 			 shape, (int)o.squares);
-	else if (another_of_shape(c, k, &other))
+	else if ((*rival = another_of_shape(c, k, &other)) >= 0)
 		snprintf(why, size, "another object, at (%.1f, %.1f), reads a %s too: this one may be a polygon of more corners over the same squares, and that one the %s",
 			 other.x, other.y, shape, shape);
 	else
 		return false;
 	return true;
+}
+
+bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
+{
+	int32_t rival;
+	return doubt_of(c, k, why, size, &rival);
+}
+
+int32_t objects_rival(Controller *c, int32_t k)
+{
+	char why[200];
+	int32_t rival;
+	return doubt_of(c, k, why, sizeof why, &rival) ? rival : -1;
 }
 
 bool objects_lacks(const Controller *c, int32_t k, int32_t x, int32_t y)

@@ -20,6 +20,7 @@
 #include "utak/plan/path.h"
 #include "utak/mind/planner.h"
 #include "utak/mind/probe.h"
+#include "utak/mind/rival.h"
 #include "utak/mind/regions.h"
 #include "utak/mind/screen.h"
 #include "utak/mind/shape.h"
@@ -204,6 +205,8 @@ typedef struct Controller {
 	int tugged_squares;
 	/* Shape by motion: the probe of the object about to be claimed (probe.h). */
 	ProbeRun probe;
+	/* Settling a doubt about another object by going to it (rival.h). */
+	RivalRun rival;
 	ShapeMemo memo[CONTROLLER_MEMOS];
 	int memo_next;		/* the entry to write next (the oldest) */
 	char note[2048];	/* what this cycle's perception and planning did (and the plan) */

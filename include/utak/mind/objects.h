@@ -178,6 +178,15 @@ bool objects_touching_target(Controller *c);
  * polygon covering the set, from how far its centres spread in each direction). */
 #define OBJECTS_NAMED_WIDTH 2.0
 bool objects_doubt(Controller *c, int32_t k, char *why, size_t size);
+/* objects_rival(c, k): the node of the other object that objects_doubt's doubt on
+ * node k names (one NEARER THE START, or ANOTHER OF THE SHAPE), -1 when there is
+ * no doubt or it names no other object. Utak goes and settles such a rival before
+ * he claims (rival.h). objects_rival_open(c, j): node j may still be the task's
+ * object by its own sight: never seen whole in the fovea, or read the task's
+ * shape, or an unnamed crumb that may be a small square (a crumb a probe has
+ * shown no square owns is none: probe.h). */
+int32_t objects_rival(Controller *c, int32_t k);
+bool objects_rival_open(Controller *c, int32_t j);
 /* objects_doubtful(c, k): node k is seen whole and doubtful by its own measures
  * (a crumb, in the gap, or inexact): one of the shape beyond doubt goes before it as the
  * task's object (objects_find_target), and after a loop round it Utak looks once

@@ -1,0 +1,122 @@
+/* rival.h - settling a doubt about ANOTHER object by going to it (issue 13 item 6:
+ * "where his model cannot tell, he goes and looks"; paper 3.3: a shape read from
+ * the squares an object covers is a hypothesis until confirmed). CONTROLLER SIDE:
+ * it acts on the world model and the impressions only.
+ *
+ * WHY. "The square" is the object of that shape nearest the start
+ * (doc/verdicts.md). Utak's claim on an object is in doubt when another object,
+ * the RIVAL, may be the one the task means (objects_doubt, objects_rival):
+ *   - one nearer the start never seen whole in the fovea, an unnamed crumb that
+ *     may be a small square, or one read a square with a doubt of its own;
+ *   - one as far or farther read a square too: if the object claimed is a polygon
+ *     of more corners over a square's squares (no eye can tell), the rival is the
+ *     square and the task means it.
+ * Often Utak could tell: the rival was only seen from afar (a closer look names
+ * it), or it is no square, which shape by motion shows (probe.h: pushed by a
+ * fraction of a square, a polygon that is no square owns squares no square would).
+ * A rival so shown to be no square (or named another shape by the fovea) can be
+ * the task's object in no world that agrees with what Utak has seen, and the doubt
+ * it raised is gone: the claim is judged again without it. A rival the probe does
+ * not disprove stays a doubt (a probe can only disprove a square, never prove one):
+ * nothing is claimed that was doubted without such a proof.
+ *
+ * WHEN. Where Utak would claim with a doubt that names a rival: "go square" beside
+ * the object (controller.c, arrive), "go round square" home from the loop, "push
+ * square" beside the object before he grasps it (the object to push is chosen
+ * then). At most RIVAL_MAX rivals a task, each once (by ident and by place), and
+ * only when the way there is known: a cell beside it (or in view of its unseen
+ * squares) reachable on the current screen.
+ *
+ * HOW. Utak goes to the rival: first to look at the squares of it the fovea has not
+ * seen (objects_unconfirmed_square), and at the floor round it not seen in the
+ * fovea (the probe asks for it), then beside it (goals_beside), at most
+ * RIVAL_ARRIVALS goals. Each arrival asks whether the rival is still open
+ * (objects_rival_open): seen whole and named no square (nor an unnamed crumb), it
+ * is settled. Touching it, seen whole, he probes it exactly as the claimed square
+ * is probed (probe_begin: grasp, quarter-square pushes, looks, push back, release;
+ * only where the probe can be made safely). A disproved rival is named nothing
+ * from then on (probe_disproved, objects_read). Then he returns to his claim and
+ * it is judged again from the start: "go square" and "push square" go back to the
+ * very point beside the object he set off from (where he would have claimed, or
+ * grasped: a push planned from elsewhere is another push), "go round square" goes
+ * home (the whole trail counts for the winding, his measure and the judge's alike).
+ * OWN FIRST. Beside the object he would claim (not home from a loop), Utak first
+ * probes that object itself, once, where the probe can be made safely: a rival is
+ * a doubt only while this one may be a square. Disproved, it is named nothing and
+ * dropped (as a claimed square is, probe.h), and the task goes on to the next
+ * object of the shape; may be a square, the rival is gone to as above, and "go
+ * square"'s claim makes no second probe of it (rival_own_probed).
+ * COST: a probe's 6 cycles, the way there and back, and a probe's 6 cycles, only
+ * where a rival doubt arises. */
+#ifndef UTAK_RIVAL_H
+#define UTAK_RIVAL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "utak/base/geom.h"
+#include "utak/impression.h"
+#include "utak/mind/probe.h"
+
+/* Rivals settled a task, at most. */
+#define RIVAL_MAX 2
+/* Goals reached going to one rival (looks at its unseen squares, then beside it),
+ * at most: a rival whose squares stay unseen from where Utak can stand is left. */
+#define RIVAL_ARRIVALS 4
+
+typedef enum RivalStage {
+	RIVAL_IDLE,
+	RIVAL_GO,    /* going to the rival: to look at it, then beside it */
+	RIVAL_PROBE, /* probing it (probe.h) */
+	RIVAL_OWN,   /* probing the object Utak would claim first (OWN FIRST) */
+} RivalStage;
+
+typedef struct RivalRun {
+	RivalStage stage;
+	int32_t ident;   /* the rival (model ident) */
+	Vec2 at;         /* ... the centre of its rectangle when chosen, model frame */
+	int arrivals;    /* goals reached going to it */
+	Vec2 arrived_at; /* ... the last of them */
+	bool home_after; /* "go round": home again when it is settled */
+	Vec2 back;       /* where he stood beside the object he would claim ... */
+	bool returning;  /* ... and he is going back there (the others) */
+	int count;       /* rivals begun this task */
+	int32_t tried_ident[RIVAL_MAX];
+	Vec2 tried_at[RIVAL_MAX];
+	char note[400]; /* what settling did since the last impression, for the trace */
+	/* Objects Utak would claim that he probed first (OWN FIRST), and found
+	 * may be squares: the claim's probe is not made again. */
+	int32_t own_ident[PROBE_RUNS];
+	Vec2 own_at[PROBE_RUNS];
+	int own_count;
+} RivalRun;
+
+struct Controller;
+struct GoalResult;
+/* rival_begin(c, k): the doubt on node k (the object Utak would claim) names a rival
+ * that may be settled (WHEN): going to it begun; false when none is (the doubt
+ * stands as it is). */
+bool rival_begin(struct Controller *c, int32_t k);
+/* rival_goal(c, dist, out): while going to a rival, the goal (a look at it, or
+ * beside it; exploring, so that arriving is the rival's: rival_arrive); false when
+ * no rival is being gone to. */
+bool rival_goal(struct Controller *c, const int32_t *dist, struct GoalResult *out);
+/* rival_arrive(c): a goal reached while going to a rival: settled by sight, a probe
+ * begun, or on to the next goal; false when no rival is being gone to. */
+bool rival_arrive(struct Controller *c);
+/* rival_decide(c, cmd): probe_decide, but a probe of a rival ends without claiming
+ * or dropping the task's object: the rival is disproved or not, and Utak returns
+ * to his claim. */
+bool rival_decide(struct Controller *c, MotorCommand *cmd);
+/* rival_perceive(c, cmd, note, size): probe_perceive, the note saying a rival was
+ * probed. */
+bool rival_perceive(struct Controller *c, const MotorCommand *cmd, char *note, size_t size);
+/* rival_probing(c): a probe of a rival, or of the object claimed (OWN FIRST), is
+ * under way. */
+bool rival_probing(const struct Controller *c);
+/* rival_own_probed(c, k): node k, the object Utak would claim, was probed first
+ * (OWN FIRST) and may be a square: its claim needs no second probe. */
+bool rival_own_probed(const struct Controller *c, int32_t k);
+
+#endif
