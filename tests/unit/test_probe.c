@@ -55,12 +55,17 @@ static Polygon moved(const Polygon *p, double dx, double dy)
 	return q;
 }
 
+/* Noise the disparity has not shown: the controller's slack is PROBE_SLACK_RATE
+ * whatever sigma is (probe.h); else at least 4 sigma, as when it has. */
+static bool unseen_noise;
+
 /* probe(p, corners, n, sigma, f, size, seed): p seen, then pushed to each of the n
  * corners in turn, each push going astray by a Gaussian of sigma squares per
  * square pushed (motion.h), and seen after each in cells of `size`, the eye's grid
  * on Utak's square: his point starts at f within his square (0, 0) and moves with
- * the object. Judged as the controller does: slack PROBE_SLACK_RATE (at least,
- * 4 sigma) times the root of the squared lengths pushed, the point unplaced. */
+ * the object. Judged as the controller does: slack PROBE_SLACK_RATE (at least
+ * 4 sigma, but for unseen_noise) times the root of the squared lengths pushed, the
+ * point unplaced. */
 static ProbeVerdict probe(const Polygon *p, const Vec2 *corners, int n, double sigma, Vec2 f, int32_t size,
 			  uint64_t *seed)
 {
@@ -82,7 +87,7 @@ static ProbeVerdict probe(const Polygon *p, const Vec2 *corners, int n, double s
 	}
 	int32_t nc = 0;
 	Vec2 at = vec2(0, 0), err = vec2(0, 0);
-	double pushed_sq = 0, rate = fmax(PROBE_SLACK_RATE, 4 * sigma);
+	double pushed_sq = 0, rate = unseen_noise ? PROBE_SLACK_RATE : fmax(PROBE_SLACK_RATE, 4 * sigma);
 	for (int l = 0; l < n; l++) {
 		Vec2 step = vec2_sub(corners[l], at);
 		double len = hypot(step.x, step.y);
@@ -211,6 +216,23 @@ TEST_CASE(small_true_squares_noisy_never_rejected)
 	}
 }
 
+/* The same under noise the disparity has not yet shown (the slack PROBE_SLACK_RATE,
+ * two sigma of 0.05 per push, where every cell of a look on its own had four):
+ * sides 2.6 to 4, Utak's point anywhere: never rejected. */
+TEST_CASE(true_squares_unseen_noise_never_rejected)
+{
+	uint64_t seed = 7;
+	unseen_noise = true;
+	for (int deg = 0; deg < 90; deg += 5) {
+		int o = (deg / 5) % 3;
+		double side = 2.6 + 0.7 * o;
+		Polygon p = rect(side, side * (o == 2 ? 1.1 : 1.0), deg, 30.29 + 0.31 * o + 0.01 * deg, 30.53 + 0.17 * o);
+		Vec2 f = vec2(fmod(0.13 + 0.37 * deg / 5, 1.0), fmod(0.71 + 0.29 * o + 0.11 * deg / 5, 1.0));
+		TEST_CHECK(probe(&p, corners, 3, 0.05, f, 1, &seed) != PROBE_INCONSISTENT);
+	}
+	unseen_noise = false;
+}
+
 /* square_cut(side, cut, deg, cx, cy): a square with one corner cut off by a line
  * `cut` squares from the corner (a pentagon: no square to the verdicts). */
 static Polygon square_cut(double side, double cut, double deg, double cx, double cy)
@@ -284,6 +306,7 @@ int main(void)
 	TEST_RUN(true_squares_noisy_coarse_never_rejected);
 	TEST_RUN(pieces_rejected);
 	TEST_RUN(small_true_squares_noisy_never_rejected);
+	TEST_RUN(true_squares_unseen_noise_never_rejected);
 	TEST_RUN(cut_squares_rejected);
 	TEST_RUN(empty_is_undecided);
 	return TEST_EXIT();
