@@ -11,12 +11,20 @@
  * rectangle Q0 (dc, dw, dh, da: the box's half-widths), so it contains Q0 shrunk
  * by R on every side and lies within Q0 grown by R (both rectangles). A square
  * of B that the grown one does not meet, or a square of B's ring that the shrunk
- * one meets, or a cell seen after the push whose count lies outside what the two
- * allow (moved by d, and grown and shrunk by the slack too), drops the box. The
+ * one meets, drops the box. Each look then has its own error of motion e, one
+ * for all its cells (probe.h): the box carries, for each look, the interval of e
+ * not yet ruled out; look_errors weighs it whole (Q0 moved by d + the interval's
+ * middle, grown and shrunk by R + the interval's half diagonal), then, on the
+ * cells that leaves open, in halves, down to pieces no wider than R; a cell whose
+ * count lies outside what the two allow drops a piece, no piece left drops the
+ * box, and the survivors' hull is the interval the box's parts inherit. The
  * search is depth first, splitting the parameter that contributes most to R.
- * When Utak's point is not known in his square, each place of the eye's grid is a
- * bit of a box's mask, cleared where the box's cells contradict that place; the
- * squares before the push, the same for every place, are weighed once a box. */
+ * When Utak's point is not known in his square, each place of it (a piece of his
+ * square) is a bit of a box's mask, cleared where the box's cells contradict it;
+ * a place may put a look's grid on one of a few squares (its error of motion
+ * within the slack of a cut), each weighed once a box whatever the places that
+ * share it; the squares before the push, the same for every place, are weighed
+ * once a box. */
 #include "utak/mind/probe.h"
 
 #include <math.h>
@@ -64,6 +72,9 @@ enum { P_A, P_W, P_H, P_X, P_Y, P_COUNT };
 typedef struct ProbeBox {
 	double lo[P_COUNT], hi[P_COUNT];
 	uint32_t alive; /* the places of the eye's grid not yet ruled out in it (bits) */
+	/* Each look's error of motion (x, y) not yet ruled out for every rectangle of
+	 * the box, at every place of the grid alive: [elo, ehi] on each axis. */
+	double elo[PROBE_LOOKS][2], ehi[PROBE_LOOKS][2];
 } ProbeBox;
 
 /* A square of the look before the push: owned (1) or not (0). */
@@ -74,12 +85,14 @@ typedef struct ProbeSquare {
 typedef struct ProbeSearch {
 	ProbeSquare *before; /* reordered as the search goes: the last to drop a box first */
 	int32_t nbefore;
-	const ProbeCell *cells;
-	int32_t ncells;
+	ProbeCell *cells; /* grouped by look: look l's are first[l] .. first[l + 1] - 1 */
+	int32_t ncells, first[PROBE_LOOKS + 1];
 	const ProbeLook *looks;
 	int32_t nlooks;
-	/* Place k of the eye's grid: look l's cells are squares (x, y) + shift[k][l]. */
-	int32_t shift[PROBE_SHIFTS][PROBE_LOOKS][2];
+	/* Place k of Utak's point: where it may put the eye's grid at look l, a mask
+	 * of the nine places a square either way or none on each axis (bit
+	 * (sy + 1) * 3 + sx + 1: look l's cells are squares (x + sx, y + sy)). */
+	uint16_t place[PROBE_SHIFTS][PROBE_LOOKS];
 	int nshifts;
 } ProbeSearch;
 
@@ -95,10 +108,114 @@ static double box_radius(const ProbeBox *b, double contrib[P_COUNT])
 	return contrib[P_A] + contrib[P_W] + contrib[P_H] + hypot(contrib[P_X], contrib[P_Y]);
 }
 
+/* The most cells of one look (the fovea and the intermediate zone: every cell of
+ * a look lies in it, for a look is one impression). */
+#define PROBE_CELLS_A_LOOK 256
+
+/* look_agrees(s, sx, sy, l, q, r, e, only, nonly, open, nopen): every cell of look
+ * l (or only the nonly of them listed in `only`, when it is not NULL), the grid
+ * moved by (sx, sy), allows some rectangle within r of q moved by look l's d and by e. With
+ * `open`, the cells a rectangle within r may own more or fewer squares of (the
+ * only ones a finer e can tell anything by) are listed in it. */
+static bool look_agrees(ProbeSearch *s, int32_t sx, int32_t sy, int32_t l, const ProbeRect *q, double r,
+			const double e[2],
+			const int32_t *only, int32_t nonly, int32_t *open, int32_t *nopen)
+{
+	Vec2 d = s->looks[l].d;
+	ProbeRect in = {q->cx + d.x + e[0], q->cy + d.y + e[1], q->c, q->s, q->hw - r, q->hh - r};
+	ProbeRect out = {in.cx, in.cy, q->c, q->s, q->hw + r, q->hh + r};
+	int32_t n = only ? nonly : s->first[l + 1] - s->first[l];
+	if (nopen)
+		*nopen = 0;
+	for (int32_t j = 0; j < n; j++) {
+		int32_t i = only ? only[j] : s->first[l] + j;
+		ProbeCell *k = &s->cells[i];
+		int32_t least = 0, most = 0;
+		for (int32_t y = k->y + sy; y < k->y + sy + k->size; y++)
+			for (int32_t x = k->x + sx; x < k->x + sx + k->size; x++) {
+				least += rect_meets(&in, x, y);
+				most += rect_meets(&out, x, y);
+			}
+		if (k->count < least || k->count > most) {
+			if (!only && i > s->first[l]) { /* to the front of its look: tried first next time */
+				ProbeCell t = s->cells[s->first[l]];
+				s->cells[s->first[l]] = *k;
+				*k = t;
+			}
+			return false;
+		}
+		if (open && least < most)
+			open[(*nopen)++] = i;
+	}
+	return true;
+}
+
+/* The most pieces an error of motion is cut into while a box is weighed. */
+#define PROBE_ERROR_PIECES 16
+
+/* look_errors(s, sx, sy, l, q, r, elo, ehi, lo, hi): the errors of motion in [elo,
+ * ehi] (x and y) with which look l, the grid moved by (sx, sy), may agree with some rectangle
+ * within r of q: false when none may; else their hull, in lo and hi. The whole
+ * interval is weighed first (a piece of half-sides (hx, hy) about e moves the
+ * rectangle by at most hypot(hx, hy) from q + d + e: weighed grown and shrunk by
+ * that and r); then, only on the cells it leaves open, halves of it, the longer
+ * side first, until a piece is no wider than r (the rectangle's own doubt: finer
+ * pieces would gain little) or PROBE_EPS, or PROBE_ERROR_PIECES are weighed (the
+ * rest kept whole: sound, only less sharp). */
+static bool look_errors(ProbeSearch *s, int32_t sx, int32_t sy, int32_t l, const ProbeRect *q, double r, const double elo[2],
+			const double ehi[2], double lo[2], double hi[2])
+{
+	int32_t open[PROBE_CELLS_A_LOOK], nopen = 0;
+	double hx0 = 0.5 * (ehi[0] - elo[0]), hy0 = 0.5 * (ehi[1] - elo[1]);
+	double e0[2] = {elo[0] + hx0, elo[1] + hy0};
+	bool room = s->first[l + 1] - s->first[l] <= PROBE_CELLS_A_LOOK;
+	if (!look_agrees(s, sx, sy, l, q, r + hypot(hx0, hy0), e0, NULL, 0, room ? open : NULL, &nopen))
+		return false;
+	lo[0] = elo[0], lo[1] = elo[1], hi[0] = ehi[0], hi[1] = ehi[1];
+	double fine = fmax(r, PROBE_EPS);
+	if (!room || nopen == 0 || hypot(hx0, hy0) <= fine)
+		return true;
+	double stack[PROBE_ERROR_PIECES + 8][4];
+	int top = 0, weighed = 0;
+	bool any = false;
+	lo[0] = lo[1] = INFINITY;
+	hi[0] = hi[1] = -INFINITY;
+	stack[top][0] = elo[0], stack[top][1] = elo[1], stack[top][2] = ehi[0], stack[top][3] = ehi[1];
+	top++;
+	bool first = true;
+	while (top > 0) {
+		double *p = stack[--top];
+		double x0 = p[0], y0 = p[1], x1 = p[2], y1 = p[3];
+		double hx = 0.5 * (x1 - x0), hy = 0.5 * (y1 - y0);
+		double e[2] = {x0 + hx, y0 + hy};
+		bool whole = weighed >= PROBE_ERROR_PIECES || top + 2 > PROBE_ERROR_PIECES + 8;
+		if (!whole && !first) {
+			weighed++;
+			if (!look_agrees(s, sx, sy, l, q, r + hypot(hx, hy), e, open, nopen, NULL, NULL))
+				continue;
+		}
+		first = false;
+		if (whole || hypot(hx, hy) <= fine) {
+			any = true;
+			lo[0] = fmin(lo[0], x0), lo[1] = fmin(lo[1], y0);
+			hi[0] = fmax(hi[0], x1), hi[1] = fmax(hi[1], y1);
+			continue;
+		}
+		int ax = hx >= hy ? 0 : 1;
+		double m = 0.5 * (p[ax] + p[ax + 2]);
+		double lo_half[4] = {x0, y0, x1, y1}, hi_half[4] = {x0, y0, x1, y1};
+		lo_half[ax + 2] = m;
+		hi_half[ax] = m;
+		memcpy(stack[top++], hi_half, sizeof hi_half);
+		memcpy(stack[top++], lo_half, sizeof lo_half);
+	}
+	return any;
+}
+
 /* box_alive(s, b, r): the places of the eye's grid (among b->alive) for which some
  * rectangle of the hypothesis in box b (radius r) may agree with all that was
  * seen; 0 when every one contradicts it. */
-static uint32_t box_alive(ProbeSearch *s, const ProbeBox *b, double r)
+static uint32_t box_alive(ProbeSearch *s, ProbeBox *b, double r)
 {
 	/* No rectangle in the box is square enough. */
 	if (b->lo[P_W] > PROBE_ASPECT * b->hi[P_H] || b->lo[P_H] > PROBE_ASPECT * b->hi[P_W])
@@ -120,33 +237,49 @@ static uint32_t box_alive(ProbeSearch *s, const ProbeBox *b, double r)
 			return 0;
 		}
 	}
-	/* After each push: moved by its d, and by up to its slack more on each axis. */
-	ProbeRect in2[PROBE_LOOKS], out2[PROBE_LOOKS];
-	for (int32_t l = 0; l < s->nlooks; l++) {
-		double ra = r + s->looks[l].slack * sqrt(2.0);
-		Vec2 d = s->looks[l].d;
-		in2[l] = (ProbeRect){cx + d.x, cy + d.y, c, sn, 0.5 * w - ra, 0.5 * h - ra};
-		out2[l] = (ProbeRect){cx + d.x, cy + d.y, c, sn, 0.5 * w + ra, 0.5 * h + ra};
-	}
+	/* After each push: each look on its own (each has its own error of motion),
+	 * at each place of the grid alive. */
 	uint32_t alive = b->alive;
+	double lo[PROBE_LOOKS][2], hi[PROBE_LOOKS][2];
+	for (int32_t l = 0; l < s->nlooks; l++)
+		lo[l][0] = lo[l][1] = INFINITY, hi[l][0] = hi[l][1] = -INFINITY;
+	ProbeRect mid = {cx, cy, c, sn, 0.5 * w, 0.5 * h};
+	/* A look's errors depend on the place of Utak's point only through where it
+	 * may put that look's grid: each of the nine is weighed once a box (state 0
+	 * not yet, 1 agrees, 2 does not). */
+	uint8_t state[PROBE_LOOKS][9] = {{0}};
+	double clo[PROBE_LOOKS][9][2], chi[PROBE_LOOKS][9][2];
 	for (int g = 0; g < s->nshifts; g++) {
 		if (!(alive >> g & 1))
 			continue;
-		for (int32_t i = 0; i < s->ncells; i++) {
-			const ProbeCell *k = &s->cells[i];
-			int32_t least = 0, most = 0;
-			int32_t kx = k->x + s->shift[g][k->look][0], ky = k->y + s->shift[g][k->look][1];
-			for (int32_t y = ky; y < ky + k->size; y++)
-				for (int32_t x = kx; x < kx + k->size; x++) {
-					least += rect_meets(&in2[k->look], x, y);
-					most += rect_meets(&out2[k->look], x, y);
+		for (int32_t l = 0; l < s->nlooks && (alive >> g & 1); l++) {
+			bool agrees = false;
+			for (int at = 0; at < 9; at++) {
+				if (!(s->place[g][l] >> at & 1))
+					continue;
+				if (!state[l][at])
+					state[l][at] = look_errors(s, at % 3 - 1, at / 3 - 1, l, &mid, r, b->elo[l], b->ehi[l],
+								   clo[l][at], chi[l][at])
+							   ? 1
+							   : 2;
+				if (state[l][at] == 1) {
+					agrees = true;
+					for (int ax = 0; ax < 2; ax++) {
+						lo[l][ax] = fmin(lo[l][ax], clo[l][at][ax]);
+						hi[l][ax] = fmax(hi[l][ax], chi[l][at][ax]);
+					}
 				}
-			if (k->count < least || k->count > most) {
-				alive &= ~(1u << g);
-				break;
 			}
+			if (!agrees)
+				alive &= ~(1u << g);
 		}
 	}
+	if (alive)
+		for (int32_t l = 0; l < s->nlooks; l++)
+			for (int ax = 0; ax < 2; ax++) {
+				b->elo[l][ax] = lo[l][ax];
+				b->ehi[l][ax] = hi[l][ax];
+			}
 	return alive;
 }
 
@@ -190,8 +323,20 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 				if ((pass == 0 && ring) || (pass == 1 && owned))
 					before[n++] = (ProbeSquare){x0 - 1 + i, y0 - 1 + j, owned};
 			}
+	/* The cells grouped by look. */
+	ProbeCell *grouped = util_alloc(ncells > 0 ? (size_t)ncells : 1, sizeof *grouped);
 	ProbeSearch *s = util_alloc(1, sizeof *s);
-	*s = (ProbeSearch){before, n, cells, ncells, looks, nlooks, {{{0}}}, 1};
+	*s = (ProbeSearch){before, n, grouped, ncells, {0}, looks, nlooks, {{0}}, 1};
+	int32_t placed = 0;
+	for (int32_t l = 0; l < nlooks; l++) {
+		s->first[l] = placed;
+		for (int32_t i = 0; i < ncells; i++)
+			if (cells[i].look == l)
+				grouped[placed++] = cells[i];
+	}
+	s->first[nlooks] = placed;
+	for (int32_t l = 0; l < nlooks; l++) /* placed: the grid where it was */
+		s->place[0][l] = 1u << 4;
 	if (unplaced) {
 		/* Utak's point is somewhere in his square, (f, g) from its lower-left
 		 * corner; after look l's push it is in the square floor(f + d.x),
@@ -222,18 +367,33 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 			for (int j = 0; j + 1 < ncut[1]; j++) {
 				if (cut[0][i + 1] - cut[0][i] <= 0 || cut[1][j + 1] - cut[1][j] <= 0)
 					continue; /* two cuts at one place */
-				double f = 0.5 * (cut[0][i] + cut[0][i + 1]), g = 0.5 * (cut[1][j] + cut[1][j + 1]);
+				/* The point in this piece, and motion's error within the
+				 * look's slack, put the grid at floor(f + d + e) on each axis:
+				 * within the slack of a cut, on either side of it. */
 				bool allowed = true;
 				for (int32_t l = 0; l < nlooks; l++) {
-					int32_t sx = (int32_t)floor(f + looks[l].d.x), sy = (int32_t)floor(g + looks[l].d.y);
-					s->shift[s->nshifts][l][0] = sx;
-					s->shift[s->nshifts][l][1] = sy;
-					allowed &= abs(sx) <= 1 && abs(sy) <= 1 && (looks[l].shifts >> ((sy + 1) * 3 + sx + 1) & 1);
+					double sl = looks[l].slack;
+					int32_t lo[2], hi[2];
+					for (int a = 0; a < 2; a++) {
+						const double *piece = a == 0 ? &cut[0][i] : &cut[1][j];
+						double d = a == 0 ? looks[l].d.x : looks[l].d.y;
+						lo[a] = (int32_t)floor(piece[0] + d - sl);
+						hi[a] = (int32_t)ceil(piece[1] + d + sl) - 1;
+						lo[a] = lo[a] < -1 ? -1 : lo[a]; /* a slack under 3/4 of a square: */
+						hi[a] = hi[a] > 1 ? 1 : hi[a];	 /* never beyond */
+					}
+					uint16_t mask = 0;
+					for (int32_t sy = lo[1]; sy <= hi[1]; sy++)
+						for (int32_t sx = lo[0]; sx <= hi[0]; sx++)
+							mask |= (uint16_t)(1u << ((sy + 1) * 3 + sx + 1));
+					s->place[s->nshifts][l] = mask & looks[l].shifts;
+					allowed &= s->place[s->nshifts][l] != 0;
 				}
 				s->nshifts += allowed;
 			}
 	}
 	ProbeVerdict verdict = search(s, x0, y0, x1, y1, budget);
+	free(grouped);
 	free(s);
 	free(before);
 	free(mark);
@@ -253,9 +413,15 @@ static ProbeVerdict search(ProbeSearch *s, int32_t x0, int32_t y0, int32_t x1, i
 	int top = 0;
 	ProbeVerdict verdict = PROBE_INCONSISTENT;
 	if (most_side >= PROBE_MIN_SIDE) {
-		stack[top++] = (ProbeBox){{0, PROBE_MIN_SIDE, PROBE_MIN_SIDE, x0, y0},
-					  {PROBE_QUARTER, most_side, most_side, x1 + 1, y1 + 1},
-					  (uint32_t)((1ull << s->nshifts) - 1)};
+		ProbeBox b = {.lo = {0, PROBE_MIN_SIDE, PROBE_MIN_SIDE, x0, y0},
+			      .hi = {PROBE_QUARTER, most_side, most_side, x1 + 1, y1 + 1},
+			      .alive = (uint32_t)((1ull << s->nshifts) - 1)};
+		for (int32_t l = 0; l < s->nlooks; l++) /* each look's error: its slack either way */
+			for (int a = 0; a < 2; a++) {
+				b.elo[l][a] = -s->looks[l].slack;
+				b.ehi[l][a] = s->looks[l].slack;
+			}
+		stack[top++] = b;
 	}
 	int64_t visited = 0;
 	while (top > 0) {

@@ -11,7 +11,9 @@
  *   his square, is never rejected, exact or noisy.
  *   Worldgen's irregular pieces that Utak took for the square in random worlds
  *   (their polygons copied here), each of which covers a square's squares
- *   standing still, are rejected by two diagonal quarter-square pushes. */
+ *   standing still, are rejected by two diagonal quarter-square pushes.
+ *   g258's piece and squares with one corner cut 0.4 or 0.5 deep, at poses where
+ *   one error of motion per look shows them (probe.h), are rejected by three. */
 #include <math.h>
 #include <string.h>
 
@@ -53,12 +55,17 @@ static Polygon moved(const Polygon *p, double dx, double dy)
 	return q;
 }
 
+/* Noise the disparity has not shown: the controller's slack is PROBE_SLACK_RATE
+ * whatever sigma is (probe.h); else at least 4 sigma, as when it has. */
+static bool unseen_noise;
+
 /* probe(p, corners, n, sigma, f, size, seed): p seen, then pushed to each of the n
  * corners in turn, each push going astray by a Gaussian of sigma squares per
  * square pushed (motion.h), and seen after each in cells of `size`, the eye's grid
  * on Utak's square: his point starts at f within his square (0, 0) and moves with
- * the object. Judged as the controller does: slack PROBE_SLACK_RATE (at least,
- * 4 sigma) times the root of the squared lengths pushed, the point unplaced. */
+ * the object. Judged as the controller does: slack PROBE_SLACK_RATE (at least
+ * 4 sigma, but for unseen_noise) times the root of the squared lengths pushed, the
+ * point unplaced. */
 static ProbeVerdict probe(const Polygon *p, const Vec2 *corners, int n, double sigma, Vec2 f, int32_t size,
 			  uint64_t *seed)
 {
@@ -80,7 +87,7 @@ static ProbeVerdict probe(const Polygon *p, const Vec2 *corners, int n, double s
 	}
 	int32_t nc = 0;
 	Vec2 at = vec2(0, 0), err = vec2(0, 0);
-	double pushed_sq = 0, rate = fmax(PROBE_SLACK_RATE, 4 * sigma);
+	double pushed_sq = 0, rate = unseen_noise ? PROBE_SLACK_RATE : fmax(PROBE_SLACK_RATE, 4 * sigma);
 	for (int l = 0; l < n; l++) {
 		Vec2 step = vec2_sub(corners[l], at);
 		double len = hypot(step.x, step.y);
@@ -161,7 +168,7 @@ TEST_CASE(true_squares_noisy_coarse_never_rejected)
  * headings), his point at the centre of his square (the test not told so), two
  * opposite corners reject each every time, exact motion seen in the fovea's
  * cells, and at least half the time under noisy motion (0.05). (g258's piece, 2.6
- * squares across with one corner cut, is not rejected: probe.h.) */
+ * squares across with one corner cut, needs three looks: cut_squares_rejected.) */
 TEST_CASE(pieces_rejected)
 {
 	static const double xy[4][16] = {
@@ -194,6 +201,97 @@ TEST_CASE(pieces_rejected)
 	}
 }
 
+/* A small true square (side 2.6 to 2.8, the size of g258's piece below), at every
+ * 5 degrees, three looks as the controller takes them, noisy motion (0.05):
+ * never rejected; one error of motion per look (probe.h) is what noise makes. */
+TEST_CASE(small_true_squares_noisy_never_rejected)
+{
+	uint64_t seed = 4;
+	for (int deg = 0; deg < 90; deg += 5) {
+		int o = (deg / 5) % 3;
+		double side = 2.6 + 0.1 * o;
+		Polygon p = rect(side, side * (o == 2 ? 1.1 : 1.0), deg, 30.29 + 0.31 * o, 30.53 + 0.17 * o);
+		Vec2 f = vec2(0.5 + 0.2 * (o - 1), 0.5 - 0.2 * (o - 1));
+		TEST_CHECK(probe(&p, corners, 3, 0.05, f, 1, &seed) != PROBE_INCONSISTENT);
+	}
+}
+
+/* The same under noise the disparity has not yet shown (the slack PROBE_SLACK_RATE,
+ * two sigma of 0.05 per push, where every cell of a look on its own had four):
+ * sides 2.6 to 4, Utak's point anywhere: never rejected. */
+TEST_CASE(true_squares_unseen_noise_never_rejected)
+{
+	uint64_t seed = 7;
+	unseen_noise = true;
+	for (int deg = 0; deg < 90; deg += 5) {
+		int o = (deg / 5) % 3;
+		double side = 2.6 + 0.7 * o;
+		Polygon p = rect(side, side * (o == 2 ? 1.1 : 1.0), deg, 30.29 + 0.31 * o + 0.01 * deg, 30.53 + 0.17 * o);
+		Vec2 f = vec2(fmod(0.13 + 0.37 * deg / 5, 1.0), fmod(0.71 + 0.29 * o + 0.11 * deg / 5, 1.0));
+		TEST_CHECK(probe(&p, corners, 3, 0.05, f, 1, &seed) != PROBE_INCONSISTENT);
+	}
+	unseen_noise = false;
+}
+
+/* square_cut(side, cut, deg, cx, cy): a square with one corner cut off by a line
+ * `cut` squares from the corner (a pentagon: no square to the verdicts). */
+static Polygon square_cut(double side, double cut, double deg, double cx, double cy)
+{
+	double c = cos(deg * 3.14159265358979323846 / 180), s = sin(deg * 3.14159265358979323846 / 180);
+	double h = side / 2, leg = cut * sqrt(2.0);
+	double xs[5] = {-h + leg, h, h, -h, -h}, ys[5] = {-h, -h, h, h, -h + leg};
+	Polygon p = {.count = 5};
+	for (int i = 0; i < 5; i++)
+		p.v[i] = vec2(cx + c * xs[i] - s * ys[i], cy + s * xs[i] + c * ys[i]);
+	return p;
+}
+
+/* g258(turn): random g258's piece (copied here), moved by whole squares and turned
+ * by `turn` quarter turns about (30, 30). */
+static Polygon g258(int turn)
+{
+	static const double xy[10] = {10.359, 36.303, 8.092, 37.546, 6.273, 35.823, 6.537, 34.477, 8.908, 33.67};
+	Polygon p = {.count = 5};
+	for (int i = 0; i < 5; i++) {
+		double x = xy[2 * i] - floor(xy[0]), y = xy[2 * i + 1] - floor(xy[1]);
+		for (int r = 0; r < turn; r++) {
+			double t = x;
+			x = -y;
+			y = t;
+		}
+		p.v[i] = vec2(x + 30, y + 30);
+	}
+	return p;
+}
+
+/* Squares with one corner cut, which a slack for motion spread over each cell of a
+ * look on its own let pass (probe7): g258's piece (2.6 squares a side, one corner
+ * cut off by a side of 1.4) at each quarter turn, three looks, Utak's point at the
+ * centre of his square: rejected 3 times of 4 with exact motion (1 before), 2 of 4
+ * under noise 0.05 (0 before); a 2.8 square cut 0.4 deep at 30 degrees and 0.5
+ * deep at 60: rejected each (neither before). A cut of 0.2 to 0.5 is not rejected
+ * at every angle: at some, no square's squares at the offsets a probe shows
+ * differ from the piece's (probe.h, PROBE_TAKES). */
+TEST_CASE(cut_squares_rejected)
+{
+	uint64_t seed = 3;
+	int exact = 0, noisy = 0;
+	for (int turn = 0; turn < 4; turn++) {
+		Polygon p = g258(turn);
+		exact += probe(&p, corners, 3, 0, vec2(0.5, 0.5), 1, &seed) == PROBE_INCONSISTENT;
+	}
+	for (int turn = 0; turn < 4; turn++) {
+		Polygon p = g258(turn);
+		noisy += probe(&p, corners, 3, 0.05, vec2(0.5, 0.5), 1, &seed) == PROBE_INCONSISTENT;
+	}
+	TEST_CHECK(exact >= 3);
+	TEST_CHECK(noisy >= 2);
+	for (int k = 0; k < 2; k++) {
+		Polygon p = square_cut(2.8, k ? 0.5 : 0.4, k ? 60 : 30, 30.13, 30.41);
+		TEST_CHECK(probe(&p, corners, 3, 0, vec2(0.5, 0.5), 1, &seed) == PROBE_INCONSISTENT);
+	}
+}
+
 /* Degenerate input: nothing to test. */
 TEST_CASE(empty_is_undecided)
 {
@@ -207,6 +305,9 @@ int main(void)
 	TEST_RUN(true_squares_never_rejected);
 	TEST_RUN(true_squares_noisy_coarse_never_rejected);
 	TEST_RUN(pieces_rejected);
+	TEST_RUN(small_true_squares_noisy_never_rejected);
+	TEST_RUN(true_squares_unseen_noise_never_rejected);
+	TEST_RUN(cut_squares_rejected);
 	TEST_RUN(empty_is_undecided);
 	return TEST_EXIT();
 }

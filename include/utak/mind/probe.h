@@ -27,13 +27,25 @@
  * side, model frame, each with how many of its squares the object owns: the
  * eye's gray level of a cell of 1 or 4 squares is that count exactly, eye.h),
  * is there a rectangle Q of the hypothesis with proj(Q) = B and proj(Q + d + e),
- * |e| <= slack on each axis, giving every cell's count? Decided by branch and
- * bound over Q's five parameters (angle, two sides, centre): a box of parameters
- * is dropped only when every rectangle in it is sure to contradict a square of B,
- * of B's ring, or a cell's count (the rectangles of a box lie within a distance R
- * of the box's middle one, so they all contain it shrunk by R and lie within it
- * grown by R); a box that survives until R < PROBE_EPS holds a rectangle that
- * agrees to within PROBE_EPS squares: CONSISTENT. So INCONSISTENT is a proof that
+ * |e| <= slack on each axis, giving every cell's count? e is ONE displacement for
+ * the whole look: the object is rigid and was pushed as one, so every cell of a
+ * look sees it moved by the same error. Decided by branch and bound over Q's five
+ * parameters (angle, two sides, centre): a box of parameters is dropped only when
+ * every rectangle in it is sure to contradict a square of B, of B's ring, or a
+ * cell's count (the rectangles of a box lie within a distance R of the box's
+ * middle one, so they all contain it shrunk by R and lie within it grown by R).
+ * Each look's e is weighed in pieces within the box (probe.c, look_errors): a
+ * piece of e is dropped when some cell of that look contradicts every rectangle
+ * of the box moved by every e of the piece; a box none of whose pieces survive for
+ * some look is dropped; the survivors' hull is what the box's smaller boxes start
+ * from (an e ruled out for every rectangle of a box is ruled out for every
+ * rectangle of its parts). A box that survives until R < PROBE_EPS holds a
+ * rectangle and an e per look that agree to within 2 PROBE_EPS squares:
+ * CONSISTENT. (probe7 grew the rectangle by the whole slack for each cell on its
+ * own, which let each cell see it at its own displacement, up to twice the slack
+ * apart: random g258's piece, a 2.6 square with one corner cut off by a side of
+ * 1.4, passed for a square, a false success. One e per look rejects it:
+ * tests/unit/test_probe.c, tests/worlds/cut-square.w.) So INCONSISTENT is a proof that
  * no square of the hypothesis explains what was seen (up to floating-point
  * rounding): a true square is never rejected, whatever its angle and offset
  * (tests/unit/test_probe.c). When the search would take more than `budget` boxes
@@ -92,10 +104,12 @@ typedef enum ProbeVerdict { PROBE_CONSISTENT, PROBE_INCONSISTENT, PROBE_UNDECIDE
  * his square before the pushes (a move that halted against the object leaves it
  * on the square's edge), so that a push of a quarter square may carry it, and
  * the eye's grid, into the next square: every place of it in the square is tried
- * (the square cut where some look's grid would change: at most 9 pieces for the
- * diagonal quarter-square pushes; a piece is dropped where it would put some
- * look's grid on a place its `shifts` rules out), and the verdict is CONSISTENT
- * if one piece is, INCONSISTENT if all are. `budget` is for all the searches together. nb 0 or
+ * (the square cut where some look's commanded d would change the grid: at most 9
+ * pieces for the diagonal quarter-square pushes; within a look's slack of a cut,
+ * its error of motion may put the grid on either side, and both are tried for
+ * that look; a place its `shifts` rules out is not tried, and a piece with none
+ * left for some look is dropped), and the verdict is CONSISTENT if one piece is,
+ * INCONSISTENT if all are. `budget` is for all the searches together. nb 0 or
  * more than PROBE_MAX_SQUARES, or a cell of no look: UNDECIDED. */
 #define PROBE_MAX_SQUARES 400
 ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks,
@@ -146,9 +160,14 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 /* Looks a probe takes at most (corners with room): each costs a cycle. With
  * Utak's point not known in his square, two looks left the pieces of random
  * worlds g123 and g208 in doubt (some place of the grid explained them), three
- * reject them (tests/rates.sh's worlds; four do no better there). The smallest
- * piece Utak took for the square, g258's 2.6-square pentagon with one corner cut,
- * passes: its sign is within a place of the grid and motion's slack. */
+ * reject them (tests/rates.sh's worlds; four do no better there). g258's
+ * 2.6-square pentagon with one corner cut passed while the slack was spread over
+ * each cell on its own; with one error of motion per look (THE TEST) three looks
+ * reject it. Not every cut corner is seen: a 2.8 square cut 0.4 or 0.5 deep is
+ * rejected at 7 or 8 of 27 poses (was 4 and 2); a fourth look, or pushes of a
+ * third or a half square, did no better on them, and even a slack of 0 with
+ * Utak's point known rejects only 9 of 27 at 0.4: where the cut lies, the few
+ * offsets a probe shows leave some square owning the same squares. */
 #define PROBE_TAKES 3
 /* Slack per square of push, when the disparity has shown no larger error: two
  * standard deviations of an error of 0.05 squares per square pushed (the noise
