@@ -721,17 +721,14 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 #define THIN_SMALL 256 /* a power of two: a word of values below it ORs below it */
 #define THIN_SPLIT 8
 
-/* skeleton_sort_listed(t, lv, start, order, maxd, nrest, high): the higher levels'
- * cells (dist2 above 1) listed in index order from the planes into high (scratch of
- * two values a listed cell: the padded index and the dist2), the histogram of their
- * dist2 (start[d + 1] the cells of value d), then a counting sort into order after
- * the lowest level's rest (nrest cells): the distance order, ties by index. The lowest
- * level (two thirds of the free cells on the maze) and the blocked cells are neither
- * counted nor sorted. Values below THIN_SMALL are counted in THIN_SPLIT tables by
- * place in the list, summed after (each table padded so that no two share their low
- * 12 address bits: 4K aliasing): counted in one table, each increment of a value
- * waited for the last one's store (the maze's higher cells are nearly all of dist2
- * 4, one after another). The sort takes four cells at a time: each bucket's next
+/* skeleton_sort_listed(lv, dist2, start, order, maxd, nrest, high): the higher
+ * levels' cells (dist2 above 1) listed in index order from the planes into high
+ * (scratch of two values a listed cell: the padded index and the dist2) and counted by
+ * dist2 as they are listed (skellevel_high; start[d + 1] the cells of value d), then
+ * counting-sorted into order after the lowest level's rest (nrest cells): the distance
+ * order, ties by index. The lowest level (two thirds of the free cells on the maze)
+ * and the blocked cells are neither counted nor sorted. The sort takes four cells at a
+ * time: each bucket's next
  * place is loaded for all four before any is stored, and a cell's place counts the
  * cells before it in the four with the same key; so the chain through start[], a
  * store forwarded to the next load, is one link a group rather than one a cell (it
@@ -739,32 +736,18 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 static void skeleton_sort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start,
                                  int32_t *order, int32_t maxd, int32_t nrest, int32_t *high)
 {
-	const int32_t nhigh = skellevel_high(lv, dist2, high);
-	assert(nhigh == lv->nhigh);
-	int32_t small[THIN_SPLIT][THIN_SMALL + 16];
+	SkelLevelCount small;
 	memset(small, 0, sizeof small);
-	int32_t k = 0;
-	for (; k + THIN_SPLIT <= nhigh; k += THIN_SPLIT) {
-		const int32_t *e = high + 2 * k;
-		int32_t any = 0;
-		for (int j = 0; j < THIN_SPLIT; j++)
-			any |= e[2 * j + 1];
-		if (any < THIN_SMALL)
-			for (int j = 0; j < THIN_SPLIT; j++)
-				small[j][e[2 * j + 1]]++;
-		else
-			for (int j = 0; j < THIN_SPLIT; j++)
-				start[e[2 * j + 1] + 1]++;
-	}
-	for (; k < nhigh; k++)
-		start[high[2 * k + 1] + 1]++;
-	for (int32_t d = 2; d < THIN_SMALL && d <= maxd; d++)
-		for (int j = 0; j < THIN_SPLIT; j++)
+	const int32_t nhigh = skellevel_high(lv, dist2, high, small, start);
+	assert(nhigh == lv->nhigh);
+	for (int32_t d = 2; d < SKELLEVEL_SMALL && d <= maxd; d++)
+		for (int j = 0; j < SKELLEVEL_LANES; j++)
 			start[d + 1] += small[j][d];
 	start[2] = nrest;
 	for (int32_t d = 2; d <= maxd; d++)
 		start[d + 1] += start[d];
-	for (k = 0; k + 4 <= nhigh; k += 4) {
+	int32_t k = 0;
+	for (; k + 4 <= nhigh; k += 4) {
 		const int32_t *e = high + 2 * k;
 		const int32_t k0 = e[1], k1 = e[3], k2 = e[5], k3 = e[7];
 		const int32_t p0 = start[k0];

@@ -129,9 +129,9 @@ static void skellevel_planes(SkelLevel *lv, const Grid *g)
 {
 	const int32_t w = g->w, h = g->h, words = lv->words;
 	uint64_t *const set = lv->set, *const low = lv->low, *const near = lv->near;
+	/* set is built by ORs, so cleared first; low, near and peel are written whole in
+	 * rows 1 .. h, and their padding rows and guard words stay as allocated, zero */
 	memset(set, 0, (size_t)lv->stride * (size_t)(h + 2) * sizeof *set);
-	memset(low, 0, (size_t)lv->stride * (size_t)(h + 2) * sizeof *low);
-	memset(near, 0, (size_t)lv->stride * (size_t)(h + 2) * sizeof *near);
 	/* the set: grid cell x is padded column x + 1 */
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *c = g->cells + (size_t)y * (size_t)w;
@@ -291,7 +291,8 @@ int32_t skellevel_count_rest(const SkelLevel *lv)
 	return count;
 }
 
-int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out)
+int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
+                       SkelLevelCount small, int32_t *big)
 {
 	/* the higher cells are never deleted here: they are the set's cells not low */
 	const int32_t w = lv->w, pw = w + 2;
@@ -302,9 +303,13 @@ int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out)
 		const int32_t *d2 = dist2 + (size_t)(r - 1) * (size_t)w - 1;
 		for (int32_t k = 0; k < lv->words; k++)
 			for (uint64_t m = c[k] & ~lo[k]; m != 0; m &= m - 1) {
-				const int32_t x = 64 * k + skellevel_lowest(m);
+				const int32_t x = 64 * k + skellevel_lowest(m), d = d2[x];
 				out[2 * count] = r * pw + x;
-				out[2 * count + 1] = d2[x];
+				out[2 * count + 1] = d;
+				if (d < SKELLEVEL_SMALL)
+					small[count & (SKELLEVEL_LANES - 1)][d]++;
+				else
+					big[d + 1]++;
 				count++;
 			}
 	}

@@ -58,9 +58,20 @@ int32_t skellevel_rest(const SkelLevel *lv, int32_t *out);
 /* skellevel_count_rest(lv): the number skellevel_rest would list. */
 int32_t skellevel_count_rest(const SkelLevel *lv);
 
-/* skellevel_high(lv, dist2, out): the free cells of dist2 above 1, in increasing
- * order, as pairs in out: the padded index, then the cell's dist2 (dist2 is the
- * grid's, w h values); returns their number (out holds twice as many values). */
-int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out);
+/* The histogram of skellevel_high: values below SKELLEVEL_SMALL counted in
+ * SKELLEVEL_LANES tables by place in the list (a power of two), so that consecutive
+ * cells of one value (a corridor's middle) do not each wait for the last one's store;
+ * each table padded so that no two share their low 12 address bits (4K aliasing). */
+#define SKELLEVEL_LANES 8
+#define SKELLEVEL_SMALL 256
+typedef int32_t SkelLevelCount[SKELLEVEL_LANES][SKELLEVEL_SMALL + 16];
+
+/* skellevel_high(lv, dist2, out, small, big): the free cells of dist2 above 1, in
+ * increasing order, as pairs in out: the padded index, then the cell's dist2 (dist2 is
+ * the grid's, w h values); returns their number (out holds twice as many values). Each
+ * is counted by its dist2 d: in small[lane][d] when d < SKELLEVEL_SMALL, else in
+ * big[d + 1]. */
+int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
+                       SkelLevelCount small, int32_t *big);
 
 #endif
