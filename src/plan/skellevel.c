@@ -78,17 +78,15 @@ static inline uint64_t skellevel_load8(const uint8_t *p)
 }
 
 #define SKELLEVEL_ONES 0x0101010101010101u
-#define SKELLEVEL_LOW7 0x7f7f7f7f7f7f7f7fu
 
-/* skellevel_free8(c): the 8 grid cells at c, bit i set when c[i] is free: a byte of
- * c ^ GRID_FREE is zero exactly where ((byte & 0x7f) + 0x7f) | byte has no top bit, and
- * the 8 bits at 8 i times 0x0102040810204080 fall on bit 56 + i with no carry (8 i + 7 j
- * is unique for i, j < 8). */
+/* skellevel_free8(c): the 8 grid cells at c, bit i set when c[i] is free: a cell is
+ * GRID_FREE (1) or GRID_BLOCKED (0), so its bit 0 says, and the 8 bits at 8 i times
+ * 0x0102040810204080 fall on bit 56 + i with no carry (8 i + 7 j is unique for
+ * i, j < 8). */
+_Static_assert(GRID_FREE == 1 && GRID_BLOCKED == 0, "skellevel_free8 reads bit 0");
 static inline uint64_t skellevel_free8(const uint8_t *c)
 {
-	const uint64_t e = skellevel_load8(c) ^ (SKELLEVEL_ONES * GRID_FREE);
-	const uint64_t v = (~(((e & SKELLEVEL_LOW7) + SKELLEVEL_LOW7) | e) >> 7) & SKELLEVEL_ONES;
-	return (v * 0x0102040810204080u) >> 56;
+	return ((skellevel_load8(c) & SKELLEVEL_ONES) * 0x0102040810204080u) >> 56;
 }
 
 /* skellevel_row(lv, plane, r): the first word of padded row r. */
