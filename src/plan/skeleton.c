@@ -7,7 +7,11 @@
  *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
  *    here in 2D with the (4, 8) topology. Free cells are visited in order of
  *    increasing dist2 (a counting sort: a bucket queue with all keys known in
- *    advance; ties by cell index, so the result is deterministic). A visited cell is
+ *    advance; ties by cell index, so the result is deterministic), except that the
+ *    lowest level, dist2 1, is first thinned by bit planes in parallel subfields
+ *    (skellevel.c: each of its deletions is one a visit would make, the order within
+ *    the level being the algorithm's free choice), and its cells left are then
+ *    visited in index order before the next level. A visited cell is
  *    deleted when it is simple (deleting it changes neither the 4-components of the
  *    set nor the 8-components of its complement: a 256-entry table over the 8
  *    neighbours, built from the definition of Bertrand's topological numbers
@@ -19,6 +23,9 @@
  *    again at once, so when the scan ends no cell of the set is deletable. Visiting in
  *    distance order peels the space like Blum's grassfire, so what is left lies on
  *    the ridge of the distance map, the medial axis.
+ *    Only the cells found ridge ends are marked (a bit plane): a cell of degree 1
+ *    when the visits are over is simple, so it was last kept as a ridge end; the
+ *    pruning takes its end points from the mark.
  * 3. Pruning: a small bay in a wall can still leave a branch whose tip is a ridge end,
  *    a spur. Every branch from an end point to a junction cell (degree >= 3) is
  *    removed when it has at most SKELETON_SPUR_FACTOR * clearance(junction) +
@@ -38,11 +45,16 @@
  *    order and a stack (4 bytes a cell each; the stack holds the transform's 2 bytes a
  *    cell of column distances before the thinning uses it), and the counting-sort
  *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
- *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack).
+ *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack);
+ *    the lowest level's four bit planes (skellevel.c, half a byte a cell) and the
+ *    ridge ends' plane (an eighth of a byte a cell). The higher levels' list (two
+ *    values a cell, when they are at most half the grid) is kept in the stack.
  *    The transform alone (skeleton_edt) keeps its column distances in dist2's first
  *    half; its other scratch is a few arrays of one row.
  *
- * COMPLEXITY  O(w h) after the transform (edt.c): the sort is two passes;
+ * COMPLEXITY  O(w h) after the transform (edt.c): the lowest level a few passes of
+ *    w h / 64 words; the sort two passes (over the higher levels' list alone where
+ *    they are at most half the grid);
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
  *    a free cell on the benchmark grids); pruning walks each branch once.
  *
@@ -122,6 +134,39 @@
  *    At 4096 the maze (instrumented, best of 3): the transform 18-20 ms, state and
  *    histogram 15, sort 16, visits 55-57, pruning 24 (scan and walks 14, the list to
  *    test again 5), about 130 ms against skeletonize's 295 (2.12 times at 48fe8a7).
+ *    A sixth round, on the maze, by algorithm rather than by instruction: the lowest
+ *    level (dist2 1: 524 288 of the 1024 maze's 786 429 free cells) thinned by bit
+ *    planes in four parallel subfields (skellevel.c) instead of visited one by one;
+ *    the higher levels listed from the planes with their dist2 and counted as they
+ *    are listed, and sorted alone (the blocked cells and the lowest level neither
+ *    counted nor sorted) when they are at most half the grid; the pruning's end
+ *    points from a plane of the cells found ridge ends instead of a scan of the
+ *    state. The order within the lowest level changed (the skeleton of the maze,
+ *    rooms and den520d is the same cell for cell at 1024 and 4096; elsewhere cells
+ *    move where the tie-break chose, with the same components and loops on all 30
+ *    grids; see the commit). Callgrind, skeleton_compute with its transform, 1024
+ *    grids: maze 83.9 -> 49.5 million instructions (80 -> 47 a cell), den520d 68.3
+ *    -> 60.7, rooms 94.2 -> 99.2, rects 82.9 -> 87.1, Boston_0_1024 82.7 -> 87.4 (the
+ *    planes cost about 7 million where the lowest level is a thin rim; Boston at 4096
+ *    1691 -> 1771 million). By phase on the 1024 maze (an instrumented copy, best of
+ *    21, the machine loaded): transform 0.96 ms, the lowest level's planes and
+ *    subfields 0.48, state 0.08, the higher levels' list and histogram 0.57, sort
+ *    0.32, visits 0.65 (308 000 visits, from 786 429), pruning 0.47 (its walks 0.27),
+ *    output 0.08: 3.6 ms in all. skelbench --compare (medians of 5, alternating with
+ *    the code before, loaded): maze 7.0-7.2 -> 4.4-4.5 ms at 1024, 135 -> 109 at 4096.
+ *    make bench-compare SIDE=1024 in one run (two runs, both loaded): the skeleton
+ *    4.61 and 5.21 ms on the maze against skeletonize's 17.9 and 18.6: 3.89 and 3.57
+ *    (3.10 in the README's table at e47d589); rooms 8.97 and 8.62, rects 11.3 and
+ *    12.9, Boston_0_1024 22.9 and 17.6, den520d 30.3 and 24.4. The maze's 5 is still
+ *    unmet: it needs about 3.6 ms in skelbench's cold run, where the transform alone
+ *    takes 1.0-1.1 (edt.c's, another job of issue 16) and the higher levels, a
+ *    quarter million cells listed, counted, sorted and visited one by one, 1.5; at
+ *    4096 the visits (26 ms) and the walks (10) wait on memory (the ridge test's
+ *    dist2 loads and the ends walked after the visits, no longer while the scan has
+ *    their rows in the cache). Not tried for want of time: the higher levels by
+ *    planes too (cells not deletable at the start of their level can all be marked
+ *    kept at once; a legitimate order within the level, but each level needs its
+ *    plane), and prefetching dist2 for the ridge test at 4096.
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 

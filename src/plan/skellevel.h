@@ -20,7 +20,8 @@ typedef struct SkelLevel {
 	uint64_t *set;  /* the cells in the thinning's set: the free cells, less the deleted */
 	uint64_t *low;  /* the free cells of the lowest level, dist2 1 (a 4-neighbour blocked) */
 	uint64_t *near; /* the cells with an 8-neighbour free and of dist2 above 1 */
-	uint64_t *peel; /* the low cells the subfields may delete (skellevel.c) */
+	uint64_t *peel; /* the low cells the subfields may delete: free 2 cells beyond
+	                 * them opposite each blocked 4-neighbour (skellevel.c) */
 	int32_t nlow;   /* the free cells of dist2 1 */
 	int32_t nhigh;  /* the free cells of dist2 above 1 */
 } SkelLevel;
