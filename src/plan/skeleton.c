@@ -7,7 +7,11 @@
  *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
  *    here in 2D with the (4, 8) topology. Free cells are visited in order of
  *    increasing dist2 (a counting sort: a bucket queue with all keys known in
- *    advance; ties by cell index, so the result is deterministic). A visited cell is
+ *    advance; ties by cell index, so the result is deterministic), except that the
+ *    lowest level, dist2 1, is first thinned by bit planes in parallel subfields
+ *    (skellevel.c: each of its deletions is one a visit would make, the order within
+ *    the level being the algorithm's free choice), and its cells left are then
+ *    visited in index order before the next level. A visited cell is
  *    deleted when it is simple (deleting it changes neither the 4-components of the
  *    set nor the 8-components of its complement: a 256-entry table over the 8
  *    neighbours, built from the definition of Bertrand's topological numbers
@@ -19,6 +23,9 @@
  *    again at once, so when the scan ends no cell of the set is deletable. Visiting in
  *    distance order peels the space like Blum's grassfire, so what is left lies on
  *    the ridge of the distance map, the medial axis.
+ *    Only the cells found ridge ends are marked (a bit plane): a cell of degree 1
+ *    when the visits are over is simple, so it was last kept as a ridge end; the
+ *    pruning takes its end points from the mark.
  * 3. Pruning: a small bay in a wall can still leave a branch whose tip is a ridge end,
  *    a spur. Every branch from an end point to a junction cell (degree >= 3) is
  *    removed when it has at most SKELETON_SPUR_FACTOR * clearance(junction) +
@@ -38,11 +45,16 @@
  *    order and a stack (4 bytes a cell each; the stack holds the transform's 2 bytes a
  *    cell of column distances before the thinning uses it), and the counting-sort
  *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
- *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack).
+ *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack);
+ *    the lowest level's four bit planes (skellevel.c, half a byte a cell) and the
+ *    ridge ends' plane (an eighth of a byte a cell). The higher levels' list (two
+ *    values a cell, when they are at most half the grid) is kept in the stack.
  *    The transform alone (skeleton_edt) keeps its column distances in dist2's first
  *    half; its other scratch is a few arrays of one row.
  *
- * COMPLEXITY  O(w h) after the transform (edt.c): the sort is two passes;
+ * COMPLEXITY  O(w h) after the transform (edt.c): the lowest level a few passes of
+ *    w h / 64 words; the sort two passes (over the higher levels' list alone where
+ *    they are at most half the grid);
  *    every cell is visited once plus once per deleted neighbour (at most 8; 1.1 visits
  *    a free cell on the benchmark grids); pruning walks each branch once.
  *
@@ -122,10 +134,47 @@
  *    At 4096 the maze (instrumented, best of 3): the transform 18-20 ms, state and
  *    histogram 15, sort 16, visits 55-57, pruning 24 (scan and walks 14, the list to
  *    test again 5), about 130 ms against skeletonize's 295 (2.12 times at 48fe8a7).
+ *    A sixth round, on the maze, by algorithm rather than by instruction: the lowest
+ *    level (dist2 1: 524 288 of the 1024 maze's 786 429 free cells) thinned by bit
+ *    planes in four parallel subfields (skellevel.c) instead of visited one by one;
+ *    the higher levels listed from the planes with their dist2 and counted as they
+ *    are listed, and sorted alone (the blocked cells and the lowest level neither
+ *    counted nor sorted) when they are at most half the grid; the pruning's end
+ *    points from a plane of the cells found ridge ends instead of a scan of the
+ *    state. The order within the lowest level changed (the skeleton of the maze,
+ *    rooms and den520d is the same cell for cell at 1024 and 4096; elsewhere cells
+ *    move where the tie-break chose, with the same components and loops on all 30
+ *    grids; see the commit). Callgrind, skeleton_compute with its transform, 1024
+ *    grids: maze 83.9 -> 49.5 million instructions (80 -> 47 a cell), den520d 68.3
+ *    -> 60.7, rooms 94.2 -> 99.2, rects 82.9 -> 87.1, Boston_0_1024 82.7 -> 87.4 (the
+ *    planes cost about 7 million where the lowest level is a thin rim; Boston at 4096
+ *    1691 -> 1771 million). By phase on the 1024 maze (an instrumented copy, best of
+ *    21, the machine loaded): transform 0.96 ms, the lowest level's planes and
+ *    subfields 0.48, state 0.08, the higher levels' list and histogram 0.57, sort
+ *    0.32, visits 0.65 (308 000 visits, from 786 429), pruning 0.47 (its walks 0.27),
+ *    output 0.08: 3.6 ms in all. skelbench --compare (medians of 5, alternating with
+ *    the code before, loaded): maze 7.0-7.2 -> 4.4-4.5 ms at 1024, 135 -> 109 at 4096.
+ *    make bench-compare SIDE=1024 in one run (two runs, both loaded): the skeleton
+ *    4.61 and 5.21 ms on the maze against skeletonize's 17.9 and 18.6: 3.89 and 3.57
+ *    (3.10 in the README's table at e47d589); rooms 8.97 and 8.62, rects 11.3 and
+ *    12.9, Boston_0_1024 22.9 and 17.6, den520d 30.3 and 24.4. The maze's 5 is still
+ *    unmet: it needs about 3.6 ms in skelbench's cold run, where the transform alone
+ *    takes 1.0-1.1 (edt.c's, another job of issue 16) and the higher levels, a
+ *    quarter million cells listed, counted, sorted and visited one by one, 1.5; at
+ *    4096 the visits (26 ms) and the walks (10) wait on memory (the ridge test's
+ *    dist2 loads and the ends walked after the visits, no longer while the scan has
+ *    their rows in the cache). Not tried for want of time: the higher levels by
+ *    planes too (cells not deletable at the start of their level can all be marked
+ *    kept at once; a legitimate order within the level, but each level needs its
+ *    plane), and prefetching dist2 for the ridge test at 4096. Tried and dropped:
+ *    counting the listed cells by runs of one value instead of in split tables, 2
+ *    million instructions fewer on the 1024 maze but the list 0.59 -> 0.80 ms (the
+ *    run's branch mispredicted where keys alternate).
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
 #include "edt_work.h"
+#include "skellevel.h"
 
 #include <assert.h>
 #include <math.h>
@@ -205,10 +254,23 @@ enum {
 	THIN_RIDGE = 2   /* simple with exactly one edge neighbour: a ridge end or not */
 };
 
+/* skeleton_yokoi(m): Yokoi's connectivity number of the neighbourhood m for a
+ * 4-connected set, the sum over the edge neighbours k of x_k (1 - x_{k+1} x_{k+2});
+ * it is 1 exactly for the simple points (skellevel.c's test on bit planes relies on it,
+ * asserted here over all 256 masks). */
+static unsigned skeleton_yokoi(unsigned m)
+{
+	unsigned c = 0;
+	for (unsigned k = 0; k < 8; k += 2)
+		c += ((m >> k) & 1) & ~((m >> ((k + 1) % 8)) & (m >> ((k + 2) % 8)) & 1);
+	return c;
+}
+
 /* skeleton_build_kind_table(kind): THIN_* of every mask (see the Thinner). */
 static void skeleton_build_kind_table(uint8_t kind[256])
 {
 	for (unsigned m = 0; m < 256; m++) {
+		assert(skeleton_is_simple_mask(m) == (skeleton_yokoi(m) == 1));
 		unsigned edge = (m & 1) + ((m >> 2) & 1) + ((m >> 4) & 1) + ((m >> 6) & 1);
 		kind[m] = !skeleton_is_simple_mask(m) ? THIN_KEEP : edge == 1 ? THIN_RIDGE : THIN_DELETE;
 	}
@@ -247,6 +309,10 @@ typedef struct Thinner {
 	int32_t off[8];   /* padded index offsets of the 8 neighbours */
 	int32_t *stack;   /* padded indices to try again */
 	int32_t top;
+	uint64_t *ends;   /* bit pi: pi was found a ridge end (thinner_ridge_end), at least
+	                   * once: the only cells that can be end points when the visits
+	                   * are over (thinner_prune) */
+	int32_t ends_words;
 	const int32_t *dist2;             /* w * h, unpadded */
 	uint8_t kind[1u << THIN_RASTER];  /* THIN_* of each raster mask */
 	uint8_t ring[1u << THIN_RASTER];  /* the neighbourhood mask (bit i: neighbour i) */
@@ -301,15 +367,21 @@ static inline unsigned thinner_raster(const uint8_t *st, int32_t pi, int32_t pw)
 	       (unsigned)(st[pi - 1] & SKELETON_IN) << 8 | (unsigned)(st[pi + 1] & SKELETON_IN) << 10;
 }
 
+/* thinner_divisor(d, mul, shift): the constants of thinner_row for the divisor d. */
+static void thinner_divisor(int32_t d, uint64_t *mul, unsigned *shift)
+{
+	unsigned l = 0;
+	while ((1u << l) < (unsigned)d)
+		l++;
+	*shift = 31 + l;
+	*mul = ((1ull << *shift) + (uint64_t)d - 1) / (uint64_t)d;
+}
+
 /* thinner_init_tables(t): the tables over the raster mask, found by reading probes
  * (one neighbour at a time set in a 3 x 3 patch), and thinner_row's constants. */
 static void thinner_init_tables(Thinner *t)
 {
-	unsigned l = 0;
-	while ((1u << l) < (unsigned)t->pw)
-		l++;
-	t->row_shift = 31 + l;
-	t->row_mul = ((1ull << t->row_shift) + (uint64_t)t->pw - 1) / (uint64_t)t->pw;
+	thinner_divisor(t->pw, &t->row_mul, &t->row_shift);
 	uint8_t kind8[256];
 	skeleton_build_kind_table(kind8);
 	uint8_t patch[3 * 5 + 4];
@@ -352,6 +424,7 @@ static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
 	for (; m != 0; m &= m - 1)
 		if (d2[t->doff[thinner_lowest_bit(m)]] > d)
 			return false;
+	t->ends[pi >> 6] |= (uint64_t)1 << (pi & 63); /* see Thinner.ends */
 	return true;
 }
 
@@ -638,32 +711,12 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 	int32_t nremove = 0, npending = 0;
 	int32_t *remove = t->stack;
 	const uint8_t *st = t->state;
-	const int32_t w = t->w, pw = t->pw;
-	for (int32_t y = 0; y < t->h; y++) {
-		const int32_t row = (y + 1) * pw + 1;
-		int32_t x = 0;
-		for (; x + 8 <= w; x += 8) {
-			const uint8_t *p = st + row + x;
-			const uint64_t in = thinner_load8(p) & THIN_ONES;
-			if (in == 0)
-				continue; /* most words of a sparse skeleton: rooms, rects */
-			const uint64_t deg = (thinner_load8(p - 1) & THIN_ONES) +
-			                     (thinner_load8(p + 1) & THIN_ONES) +
-			                     (thinner_load8(p - pw) & THIN_ONES) +
-			                     (thinner_load8(p + pw) & THIN_ONES);
-			const uint64_t e = deg ^ THIN_ONES;
-			const uint64_t one = ~(((e & THIN_LOW7) + THIN_LOW7) | e) & (in << 7);
-			if (one == 0)
-				continue;
-			for (int32_t j = 0; j < 8; j++)
-				if ((p[j] & SKELETON_IN) && thinner_degree(t, row + x + j) == 1)
-					nremove = thinner_walk(t, row + x + j, remove, nremove, longest, scratch,
-					                       &npending);
+	for (int32_t k = 0; k < t->ends_words; k++)
+		for (uint64_t m = t->ends[k]; m != 0; m &= m - 1) {
+			const int32_t pi = 64 * k + skellevel_lowest(m);
+			if ((st[pi] & SKELETON_IN) && thinner_degree(t, pi) == 1)
+				nremove = thinner_walk(t, pi, remove, nremove, longest, scratch, &npending);
 		}
-		for (; x < w; x++)
-			if ((st[row + x] & SKELETON_IN) && thinner_degree(t, row + x) == 1)
-				nremove = thinner_walk(t, row + x, remove, nremove, longest, scratch, &npending);
-	}
 	/* the branches listed by the walks as pending: judged by their junctions' dist2,
 	 * the loads independent of one another; the spurs' cells stay in remove, the
 	 * others' are taken out (the list in scratch is in the order of remove) */
@@ -709,12 +762,127 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 	return nremove;
 }
 
-/* ---------------------------------------------------------------- the skeleton */
+/* ---------------------------------------------------------------- the visiting order */
 
-/* The histogram's split tables (skeleton_compute): values below THIN_SMALL, in
- * THIN_SPLIT tables by column (a power of two). */
+/* The histogram's split tables (skeleton_sort_listed, skeleton_sort_rows): values
+ * below THIN_SMALL, in THIN_SPLIT tables by place (a power of two). */
 #define THIN_SMALL 256 /* a power of two: a word of values below it ORs below it */
 #define THIN_SPLIT 8
+
+/* skeleton_sort_listed(lv, dist2, start, order, maxd, nrest, high): the higher
+ * levels' cells (dist2 above 1) listed in index order from the planes into high
+ * (scratch of two values a listed cell: the padded index and the dist2) and counted by
+ * dist2 as they are listed (skellevel_high; start[d + 1] the cells of value d), then
+ * counting-sorted into order after the lowest level's rest (nrest cells): the distance
+ * order, ties by index. The lowest level (two thirds of the free cells on the maze)
+ * and the blocked cells are neither counted nor sorted. The sort takes four cells at a
+ * time: each bucket's next
+ * place is loaded for all four before any is stored, and a cell's place counts the
+ * cells before it in the four with the same key; so the chain through start[], a
+ * store forwarded to the next load, is one link a group rather than one a cell (it
+ * was most of the sort's time). */
+static void skeleton_sort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start,
+                                 int32_t *order, int32_t maxd, int32_t nrest, int32_t *high)
+{
+	SkelLevelCount small;
+	memset(small, 0, sizeof small);
+	const int32_t nhigh = skellevel_high(lv, dist2, high, small, start);
+	assert(nhigh == lv->nhigh);
+	for (int32_t d = 2; d < SKELLEVEL_SMALL && d <= maxd; d++)
+		for (int j = 0; j < SKELLEVEL_LANES; j++)
+			start[d + 1] += small[j][d];
+	start[2] = nrest;
+	for (int32_t d = 2; d <= maxd; d++)
+		start[d + 1] += start[d];
+	int32_t k = 0;
+	for (; k + 4 <= nhigh; k += 4) {
+		const int32_t *e = high + 2 * k;
+		const int32_t k0 = e[1], k1 = e[3], k2 = e[5], k3 = e[7];
+		const int32_t p0 = start[k0];
+		const int32_t p1 = start[k1] + (k1 == k0);
+		const int32_t p2 = start[k2] + (k2 == k0) + (k2 == k1);
+		const int32_t p3 = start[k3] + (k3 == k0) + (k3 == k1) + (k3 == k2);
+		start[k0] = p0 + 1;
+		start[k1] = p1 + 1;
+		start[k2] = p2 + 1;
+		start[k3] = p3 + 1;
+		order[p0] = e[0];
+		order[p1] = e[2];
+		order[p2] = e[4];
+		order[p3] = e[6];
+	}
+	for (; k < nhigh; k++)
+		order[start[high[2 * k + 1]]++] = high[2 * k];
+	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
+}
+
+/* skeleton_sort_rows(t, start, order, maxd): every cell of the grid sorted by dist2
+ * into order, ties by index, as padded indices: the blocked cells (dist2 0) first, so
+ * that the loop needs no branch and no test, then the lowest level's, then the higher
+ * levels' in the distance order. For a grid whose higher levels are most of its cells
+ * (rooms, open maps), where listing them first (skeleton_sort_listed) costs more than
+ * it saves. The histogram over the rows of dist2 in split tables by column, and the
+ * sort four cells a group, as skeleton_sort_listed (see there). */
+static void skeleton_sort_rows(const Thinner *t, int32_t *start, int32_t *order, int32_t maxd)
+{
+	const int32_t w = t->w, h = t->h;
+	int32_t small[THIN_SPLIT][THIN_SMALL + 16];
+	memset(small, 0, sizeof small);
+	for (int32_t y = 0; y < h; y++) {
+		const int32_t *restrict d2 = t->dist2 + (size_t)y * w;
+		int32_t x = 0;
+		for (; x + THIN_SPLIT <= w; x += THIN_SPLIT) {
+			int32_t any = 0;
+			for (int j = 0; j < THIN_SPLIT; j++)
+				any |= d2[x + j];
+			if (any < THIN_SMALL)
+				for (int j = 0; j < THIN_SPLIT; j++)
+					small[j][d2[x + j]]++;
+			else
+				for (int j = 0; j < THIN_SPLIT; j++)
+					start[d2[x + j] + 1]++;
+		}
+		for (; x < w; x++)
+			start[d2[x] + 1]++;
+	}
+	for (int32_t d = 0; d < THIN_SMALL && d <= maxd; d++)
+		for (int j = 0; j < THIN_SPLIT; j++)
+			start[d + 1] += small[j][d];
+	start[0] = 0;
+	for (int32_t d = 0; d <= maxd; d++)
+		start[d + 1] += start[d];
+	for (int32_t y = 0; y < h; y++) {
+		const int32_t *restrict d2 = t->dist2 + (size_t)y * w;
+		const int32_t base = (y + 1) * t->pw + 1;
+		int32_t x = 0;
+		for (; x + 4 <= w; x += 4) {
+			const int32_t k0 = d2[x], k1 = d2[x + 1], k2 = d2[x + 2], k3 = d2[x + 3];
+			const int32_t p0 = start[k0];
+			const int32_t p1 = start[k1] + (k1 == k0);
+			const int32_t p2 = start[k2] + (k2 == k0) + (k2 == k1);
+			const int32_t p3 = start[k3] + (k3 == k0) + (k3 == k1) + (k3 == k2);
+			start[k0] = p0 + 1;
+			start[k1] = p1 + 1;
+			start[k2] = p2 + 1;
+			start[k3] = p3 + 1;
+			order[p0] = base + x;
+			order[p1] = base + x + 1;
+			order[p2] = base + x + 2;
+			order[p3] = base + x + 3;
+		}
+		for (; x < w; x++)
+			order[start[d2[x]]++] = base + x;
+	}
+	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
+}
+
+/* ---------------------------------------------------------------- the skeleton */
+
+/* The higher levels are sorted from a list of their cells when they are at most this
+ * share of the grid's cells (skeleton_sort_listed), else with the whole grid
+ * (skeleton_sort_rows); at most a half, as the list, two values a cell, is kept in
+ * the stack, one value a cell of the grid. */
+#define SKELETON_LISTED 0.5
 
 /* The working space of skeleton_compute, kept between calls so that computing the
  * skeleton of a grid of the same size again touches no new memory. */
@@ -722,9 +890,11 @@ struct SkeletonWork {
 	size_t cells;   /* the grid size it was made for, w * h */
 	uint8_t *state; /* (w + 2) * (h + 2) */
 	int32_t *stack; /* w * h */
+	uint64_t *ends; /* ceil((w + 2) (h + 2) / 64): the Thinner's */
 	int32_t *order; /* w * h */
 	int32_t *start; /* start_cap */
 	size_t start_cap;
+	SkelLevel level; /* the lowest level's bit planes (skellevel.c) */
 };
 
 void skeleton_init(Skeleton *s)
@@ -738,8 +908,10 @@ static void skeleton_free_work(struct SkeletonWork *wk)
 		return;
 	free(wk->state);
 	free(wk->stack);
+	free(wk->ends);
 	free(wk->order);
 	free(wk->start);
+	skellevel_free(&wk->level);
 	free(wk);
 }
 
@@ -764,6 +936,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		s->work->cells = n;
 		s->work->state = util_alloc(pn + 3, 1); /* + 3: thinner_raster's last load */
 		s->work->stack = util_alloc(n, sizeof *s->work->stack);
+		s->work->ends = util_alloc((pn + 63) / 64, sizeof *s->work->ends);
 		s->work->order = util_alloc(n, sizeof *s->work->order);
 	}
 	s->w = w;
@@ -786,98 +959,37 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
 	t.state = wk->state;
 	t.stack = wk->stack;
+	t.ends = wk->ends;
+	t.ends_words = (int32_t)((pn + 63) / 64);
+	memset(t.ends, 0, (size_t)t.ends_words * sizeof *t.ends);
 	for (int i = 0; i < 8; i++) {
 		t.off[i] = SKELETON_DX[i] + SKELETON_DY[i] * t.pw;
 		t.doff[i] = SKELETON_DX[i] + SKELETON_DY[i] * w;
 	}
 	thinner_init_tables(&t);
 
-	/* the padded state: the free cells in the set, the ring around the grid not; and
-	 * the counting sort's histogram of dist2, start[d + 1] the free cells of value d.
-	 * Values below THIN_SMALL are counted in THIN_SPLIT tables by column, summed after
-	 * (each table padded so that no two share their low 12 address bits: 4K aliasing).
-	 * Counted in one table as the transform made each row (the transform's former count),
-	 * each increment of a value waited for the last one's store: on a grid of few
-	 * values (the maze: six) the transform took 2.3-2.4 ms with its count at 1024 and
-	 * 1.0 without, and 37 and 18 ms at 4096; here, on rows read again, the state and
-	 * the histogram take 0.9 ms (0.3 of it the read) and 15. */
-	int32_t small[THIN_SPLIT][THIN_SMALL + 16];
-	memset(small, 0, sizeof small);
-	memset(t.state, 0, (size_t)t.pw);
-	memset(t.state + (size_t)(h + 1) * t.pw, 0, (size_t)t.pw + 3);
-	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *restrict c = g->cells + (size_t)y * w;
-		uint8_t *restrict st = t.state + (size_t)(y + 1) * t.pw;
-		st[0] = st[w + 1] = 0;
-		int32_t x = 0;
-		/* 8 cells at a time: a lane of c ^ GRID_FREE is zero exactly where
-		 * ((lane & 0x7f) + 0x7f) | lane has no top bit */
-		for (; x + 8 <= w; x += 8) {
-			const uint64_t e = thinner_load8(c + x) ^ (THIN_ONES * GRID_FREE);
-			const uint64_t v = ((~(((e & THIN_LOW7) + THIN_LOW7) | e) >> 7) & THIN_ONES) * SKELETON_IN;
-			memcpy(st + x + 1, &v, sizeof v);
-		}
-		for (; x < w; x++)
-			st[x + 1] = c[x] == GRID_FREE ? SKELETON_IN : 0;
-		/* the histogram of the row's dist2 (see the sort below) */
-		const int32_t *restrict d2 = s->dist2 + (size_t)y * w;
-		for (x = 0; x + THIN_SPLIT <= w; x += THIN_SPLIT) {
-			int32_t any = 0;
-			for (int j = 0; j < THIN_SPLIT; j++)
-				any |= d2[x + j];
-			if (any < THIN_SMALL)
-				for (int j = 0; j < THIN_SPLIT; j++)
-					small[j][d2[x + j]]++;
-			else
-				for (int j = 0; j < THIN_SPLIT; j++)
-					start[d2[x + j] + 1]++;
-		}
-		for (; x < w; x++)
-			start[d2[x] + 1]++;
+	/* The lowest level, dist2 1, by bit planes (skellevel.c); the padded state made
+	 * from the planes' set. Then the visiting order: what is left of the lowest level,
+	 * in index order, then the higher levels' cells sorted by dist2, ties by index; by
+	 * a list of the higher cells where they are at most SKELETON_LISTED of the grid,
+	 * else by a sort of the whole grid (the same order either way). */
+	SkelLevel *lv = &wk->level;
+	skellevel_thin(lv, g);
+	skellevel_state(lv, t.state, SKELETON_IN);
+	memset(t.state + pn, 0, 3);
+	int32_t *visit = order;
+	int32_t nrest;
+	if ((double)lv->nhigh <= SKELETON_LISTED * (double)n) {
+		nrest = skellevel_rest(lv, order);
+		skeleton_sort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack);
+	} else {
+		skeleton_sort_rows(&t, start, order, maxd);
+		const int32_t nblocked = (int32_t)n - lv->nlow - lv->nhigh;
+		nrest = skellevel_count_rest(lv);
+		visit = order + nblocked + lv->nlow - nrest;
+		skellevel_rest(lv, visit);
 	}
-	for (int32_t d = 1; d < THIN_SMALL && d <= maxd; d++)
-		for (int j = 0; j < THIN_SPLIT; j++)
-			start[d + 1] += small[j][d];
-	/* counting sort of the cells by dist2, ties by index (the histogram made with the
-	 * state above): the blocked cells, dist2 0, come first,
-	 * so that the loop needs no branch and no test, and the free ones follow in the
-	 * distance order. Four cells at a time: each bucket's next place is loaded for all
-	 * four before any is stored, and a cell's place counts the cells before it in the
-	 * four with the same key; so the chain through start[], a store forwarded to the
-	 * next load, is one link a group rather than one a cell (it was most of the
-	 * sort's time). */
-	int32_t nfree = 0;
-	for (int32_t d = 1; d <= maxd; d++)
-		nfree += start[d + 1];
-	const int32_t nblocked = (int32_t)n - nfree;
-	start[1] = nblocked;
-	for (int32_t d = 0; d <= maxd; d++)
-		start[d + 1] += start[d];
-	for (int32_t y = 0; y < h; y++) {
-		const int32_t *restrict d2 = s->dist2 + (size_t)y * w;
-		const int32_t base = (y + 1) * t.pw + 1;
-		int32_t x = 0;
-		for (; x + 4 <= w; x += 4) {
-			const int32_t k0 = d2[x], k1 = d2[x + 1], k2 = d2[x + 2], k3 = d2[x + 3];
-			const int32_t p0 = start[k0];
-			const int32_t p1 = start[k1] + (k1 == k0);
-			const int32_t p2 = start[k2] + (k2 == k0) + (k2 == k1);
-			const int32_t p3 = start[k3] + (k3 == k0) + (k3 == k1) + (k3 == k2);
-			start[k0] = p0 + 1;
-			start[k1] = p1 + 1;
-			start[k2] = p2 + 1;
-			start[k3] = p3 + 1;
-			order[p0] = base + x;
-			order[p1] = base + x + 1;
-			order[p2] = base + x + 2;
-			order[p3] = base + x + 3;
-		}
-		for (; x < w; x++)
-			order[start[d2[x]]++] = base + x;
-	}
-	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
-
-	thinner_visit_all(&t, order + nblocked, nfree);
+	thinner_visit_all(&t, visit, nrest + lv->nhigh);
 	s->pruned = thinner_prune(&t, order, maxd);
 
 	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */

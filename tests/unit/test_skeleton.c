@@ -239,6 +239,32 @@ TEST_CASE(skeleton_topology_on_random_grids)
 	}
 }
 
+/* The lowest level is thinned by bit planes of 64 cells a word (src/plan/skellevel.c),
+ * the padded row being w + 2 cells: widths about one and two words, where a row's
+ * last word is full, or holds one cell, or the next word begins. */
+TEST_CASE(skeleton_topology_across_word_boundaries)
+{
+	static const int widths[] = {1, 2, 60, 61, 62, 63, 64, 65, 66, 125, 126, 127, 128, 130};
+	oracle_seed = 11;
+	for (size_t k = 0; k < sizeof widths / sizeof widths[0]; k++)
+		for (int trial = 0; trial < 6; trial++) {
+			Grid g;
+			int w = widths[k], h = 1 + oracle_rand_below(14);
+			oracle_random_grid(&g, w, h, trial * 8, trial % 2 ? 0 : 2);
+			Skeleton s;
+			skeleton_init(&s);
+			skeleton_compute(&s, &g);
+			bool ok = skeleton_validate(&s, &g) && topology_matches(&g, &s);
+			dump_on_failure(&s, &g, ok);
+			TEST_CHECK(ok);
+			ok = thin_by_definition(&s);
+			dump_on_failure(&s, &g, ok);
+			TEST_CHECK(ok);
+			skeleton_free(&s);
+			grid_free(&g);
+		}
+}
+
 /* count_blocks(s, &pinwheels): the 2x2 blocks all of skeleton, and among them the
  * pinwheels, whose four cells each have a skeleton edge neighbour outside the block. */
 static int count_blocks(const Skeleton *s, int *pinwheels)
@@ -420,6 +446,7 @@ int main(void)
 	TEST_RUN(edt_all_free_all_blocked_and_thin_grids);
 	TEST_RUN(edt_equals_brute_force_on_wide_open_grids);
 	TEST_RUN(skeleton_topology_on_random_grids);
+	TEST_RUN(skeleton_topology_across_word_boundaries);
 	TEST_RUN(skeleton_2x2_blocks_only_pinwheels);
 	TEST_RUN(skeleton_ring_has_one_loop_and_clearance);
 	TEST_RUN(skeleton_of_diagonal_pinch_is_two_components);

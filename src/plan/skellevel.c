@@ -1,0 +1,326 @@
+/* skellevel.c - the skeleton's lowest distance level thinned by bit planes, 64 cells a
+ * word (paper 4.2; skeleton.c calls it before its visits).
+ *
+ * WHY  The distance-ordered thinning (skeleton.c) visits the free cells one by one in
+ *    order of dist2. Its first level, dist2 1 (the free cells with a blocked 4-neighbour
+ *    or on the grid's edge), is most of the visits where the space is narrow: on the
+ *    1024 maze (corridors 3 wide) 524 288 of its 786 429 visits. The order within a
+ *    level is not fixed by the algorithm (the distance order alone is; skeleton.c
+ *    took the cell index), so any order of the first level's deletions gives a
+ *    distance-ordered thinning, provided each deletion is one the visit would make at
+ *    that moment: a simple cell that is not a ridge end.
+ *
+ * ALGORITHM  The cells of the lowest level that are deletable are deleted by
+ *    subfields, as in the parallel thinning of Golay and Preston (Preston and Duff,
+ *    "Modern Cellular Automata", 1984; Hall, "Parallel connectivity-preserving thinning
+ *    algorithms", 1996): the padded grid is cut into four subfields by the parities of
+ *    x and y. No two cells of one subfield are 8-adjacent, so deleting one changes no
+ *    other's neighbourhood, and the deletable cells of a subfield, all deleted at once,
+ *    are the same as deleted one after another in any order: each sub-iteration is a
+ *    sequence of the thinning's own deletions. The four subfields are taken in turn,
+ *    SKELLEVEL_ROUNDS times. Only the level's cells where the space is at least 3
+ *    wide across every wall they touch are candidates (the plane `peel`: for each
+ *    4-neighbour not free, the two cells in line on the opposite side are free):
+ *    in a passage 2 wide both cells are of level 1, and which of them stays is the
+ *    tie-break's choice, left to the index order as before. A candidate is tested as
+ *    skeleton.c's visit tests it:
+ *    - simple: Yokoi's connectivity number for 4-connected sets,
+ *      C4 = sum over k = 0, 2, 4, 6 of x_k (1 - x_{k+1} x_{k+2}) (x_i the ring of 8
+ *      neighbours from east, counter-clockwise, indices mod 8), is 1; equivalent to
+ *      Bertrand's T4 = 1 and T8bar = 1 on all 256 neighbourhoods (asserted against
+ *      skeleton.c's table when it is built);
+ *    - not a ridge end: it has other than one 4-neighbour in the set, or an
+ *      8-neighbour in the set of larger dist2. During this pass the set's cells of
+ *      dist2 above 1 are all there (nothing of a higher level is deleted yet), so the
+ *      second is the plane `near`, fixed: some 8-neighbour is free and not of level 1.
+ *    What is left of the level (cells not deletable when their subfield's turn came)
+ *    is then visited by skeleton.c one by one in index order before the next level,
+ *    as any cell of the level would be, so none deletable is left behind. No cell of
+ *    a lower level exists (dist2 0 is blocked), so no earlier visited cell waits for a
+ *    retry when one of these is deleted.
+ *    The thinning as a whole thus stays Pudney's distance-ordered homotopic thinning;
+ *    only the order within the first level changed (subfields first, then the rest by
+ *    index, where it was all by index), and with it, where a corridor's medial axis
+ *    falls between two cells of one level, which of them is kept.
+ *
+ * MEMORY  four planes of (h + 2) (ceil((w + 2) / 64) + 2) words: half a byte a cell.
+ * COMPLEXITY  O(w h / 64) words a pass: the planes are two passes, each sub-iteration
+ *    half the rows, the state a pass, the rest's list a pass.
+ * MEASURED  (issue 16; skeleton.c's header has the whole) on the 1024 maze, 524 288
+ *    cells of dist2 1: all deleted or left to the visits in 0.48 ms (planes, two
+ *    rounds of subfields; 6.8 million instructions, callgrind), where their visits
+ *    took about 1.6 ms; the 1024 rooms, rects and Boston_0_1024, whose lowest level
+ *    is a thin rim, pay about 7 million instructions for 1-2 million fewer in the
+ *    visits. The second round costs 0.4 million instructions on the maze (most words
+ *    have no candidate left). */
+#include "skellevel.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/util.h"
+
+/* Rounds of the four subfields: the second round deletes what the first one's later
+ * subfields made deletable (a corner a corridor turns), the rest is left to the
+ * visits. */
+#define SKELLEVEL_ROUNDS 2
+
+void skellevel_init(SkelLevel *lv)
+{
+	*lv = (SkelLevel){0};
+}
+
+void skellevel_free(SkelLevel *lv)
+{
+	free(lv->set);
+	free(lv->low);
+	free(lv->near);
+	free(lv->peel);
+	*lv = (SkelLevel){0};
+}
+
+/* skellevel_load8(p): the 8 bytes at p, byte i at bits 8 i whatever the machine's byte
+ * order (compilers make it one load on a little-endian machine). */
+static inline uint64_t skellevel_load8(const uint8_t *p)
+{
+	return (uint64_t)p[0] | (uint64_t)p[1] << 8 | (uint64_t)p[2] << 16 | (uint64_t)p[3] << 24 |
+	       (uint64_t)p[4] << 32 | (uint64_t)p[5] << 40 | (uint64_t)p[6] << 48 |
+	       (uint64_t)p[7] << 56;
+}
+
+#define SKELLEVEL_ONES 0x0101010101010101u
+
+/* skellevel_free8(c): the 8 grid cells at c, bit i set when c[i] is free: a cell is
+ * GRID_FREE (1) or GRID_BLOCKED (0), so its bit 0 says, and the 8 bits at 8 i times
+ * 0x0102040810204080 fall on bit 56 + i with no carry (8 i + 7 j is unique for
+ * i, j < 8). */
+_Static_assert(GRID_FREE == 1 && GRID_BLOCKED == 0, "skellevel_free8 reads bit 0");
+static inline uint64_t skellevel_free8(const uint8_t *c)
+{
+	return ((skellevel_load8(c) & SKELLEVEL_ONES) * 0x0102040810204080u) >> 56;
+}
+
+/* skellevel_row(lv, plane, r): the first word of padded row r. */
+static inline uint64_t *skellevel_row(const SkelLevel *lv, uint64_t *plane, int32_t r)
+{
+	return plane + (size_t)r * (size_t)lv->stride + 1;
+}
+
+/* The word of the cells one column east (x + 1) and west (x - 1) of word k's cells, the
+ * words beside it giving the end bits. */
+static inline uint64_t skellevel_east(const uint64_t *row, int32_t k)
+{
+	return row[k] >> 1 | row[k + 1] << 63;
+}
+static inline uint64_t skellevel_west(const uint64_t *row, int32_t k)
+{
+	return row[k] << 1 | row[k - 1] >> 63;
+}
+
+/* skellevel_one(a, b, c, d): the bits set in exactly one of the four words. */
+static inline uint64_t skellevel_one(uint64_t a, uint64_t b, uint64_t c, uint64_t d)
+{
+	return (a | b | c | d) & ~((a & b) | (c & d) | ((a | b) & (c | d)));
+}
+
+/* skellevel_count(v): the bits set in v (a sum of bits by halves, no table). */
+static inline int32_t skellevel_count(uint64_t v)
+{
+	v -= (v >> 1) & 0x5555555555555555u;
+	v = (v & 0x3333333333333333u) + ((v >> 2) & 0x3333333333333333u);
+	v = (v + (v >> 4)) & 0x0f0f0f0f0f0f0f0fu;
+	return (int32_t)((v * SKELLEVEL_ONES) >> 56);
+}
+
+/* skellevel_planes(lv, g): set (the free cells), low and near, nlow and nhigh (see
+ * SkelLevel) of g. */
+static void skellevel_planes(SkelLevel *lv, const Grid *g)
+{
+	const int32_t w = g->w, h = g->h, words = lv->words;
+	uint64_t *const set = lv->set, *const low = lv->low, *const near = lv->near;
+	/* set is built by ORs, so cleared first; low, near and peel are written whole in
+	 * rows 1 .. h, and their padding rows and guard words stay as allocated, zero */
+	memset(set, 0, (size_t)lv->stride * (size_t)(h + 2) * sizeof *set);
+	/* the set: grid cell x is padded column x + 1 */
+	for (int32_t y = 0; y < h; y++) {
+		const uint8_t *c = g->cells + (size_t)y * (size_t)w;
+		uint64_t *row = skellevel_row(lv, set, y + 1);
+		int32_t x = 0;
+		for (; x + 64 <= w; x += 64) {
+			uint64_t v = 0;
+			for (int j = 0; j < 8; j++)
+				v |= skellevel_free8(c + x + 8 * j) << (8 * j);
+			row[x / 64] |= v << 1;
+			row[x / 64 + 1] |= v >> 63;
+		}
+		for (; x < w; x++)
+			if (c[x] == GRID_FREE)
+				row[(x + 1) / 64] |= (uint64_t)1 << ((x + 1) % 64);
+	}
+	/* low: free with a 4-neighbour not free */
+	int32_t nlow = 0, nhigh = 0;
+	for (int32_t r = 1; r <= h; r++) {
+		const uint64_t *s = skellevel_row(lv, set, r - 1), *c = skellevel_row(lv, set, r),
+		               *n = skellevel_row(lv, set, r + 1);
+		uint64_t *lo = skellevel_row(lv, low, r);
+		for (int32_t k = 0; k < words; k++) {
+			const uint64_t l =
+			    c[k] & ~(skellevel_east(c, k) & skellevel_west(c, k) & n[k] & s[k]);
+			lo[k] = l;
+			nlow += skellevel_count(l);
+			nhigh += skellevel_count(c[k] & ~l);
+		}
+	}
+	/* near: the free cells of higher levels (set and not low) ORed over the rows
+	 * above and below, then dilated by a column either way */
+	for (int32_t r = 1; r <= h; r++) {
+		const uint64_t *s = skellevel_row(lv, set, r - 1), *c = skellevel_row(lv, set, r),
+		               *n = skellevel_row(lv, set, r + 1);
+		const uint64_t *ls = skellevel_row(lv, low, r - 1), *lc = skellevel_row(lv, low, r),
+		               *ln = skellevel_row(lv, low, r + 1);
+		uint64_t *ne = skellevel_row(lv, near, r), *pe = skellevel_row(lv, lv->peel, r);
+		/* rows two away: a missing one (outside the padding) stands in as the padding
+		 * row, as it is read only where the row between is free */
+		const uint64_t *s2 = skellevel_row(lv, set, r >= 2 ? r - 2 : 0),
+		               *n2 = skellevel_row(lv, set, r + 2 <= h + 1 ? r + 2 : h + 1);
+		for (int32_t k = 0; k < words; k++) {
+			const uint64_t fe = skellevel_east(c, k), fw = skellevel_west(c, k);
+			const uint64_t fee = c[k] >> 2 | c[k + 1] << 62, fww = c[k] << 2 | c[k - 1] >> 62;
+			pe[k] = lc[k] & (fe | (fw & fww)) & (fw | (fe & fee)) & (n[k] | (s[k] & s2[k])) &
+			        (s[k] | (n[k] & n2[k]));
+		}
+		uint64_t prev = 0, cur = (s[0] & ~ls[0]) | (c[0] & ~lc[0]) | (n[0] & ~ln[0]);
+		for (int32_t k = 0; k < words; k++) {
+			const uint64_t next = (s[k + 1] & ~ls[k + 1]) | (c[k + 1] & ~lc[k + 1]) |
+			                      (n[k + 1] & ~ln[k + 1]); /* the guard word when k is last */
+			ne[k] = cur | cur << 1 | prev >> 63 | cur >> 1 | next << 63;
+			prev = cur;
+			cur = next;
+		}
+	}
+	lv->nlow = nlow;
+	lv->nhigh = nhigh;
+}
+
+/* skellevel_subfield(lv, a, b): one sub-iteration: the low cells in the set of padded
+ * column parity a and row parity b that are deletable (see the top of the file) are
+ * deleted, all at once. Row r is updated in place: its cells' neighbours in rows r - 1
+ * and r + 1 are of the other row parity, and in row r of the other column parity, so
+ * none changes during the sub-iteration. The ring of neighbours x0 .. x7 runs from
+ * east counter-clockwise, north being row r + 1 (skeleton.c's order). */
+static void skellevel_subfield(SkelLevel *lv, int a, int b)
+{
+	const uint64_t parity = a == 0 ? 0x5555555555555555u : 0xaaaaaaaaaaaaaaaau;
+	const int32_t words = lv->words;
+	for (int32_t r = 2 - b; r <= lv->h; r += 2) {
+		uint64_t *c = skellevel_row(lv, lv->set, r);
+		const uint64_t *n = skellevel_row(lv, lv->set, r + 1),
+		               *s = skellevel_row(lv, lv->set, r - 1),
+		               *pe = skellevel_row(lv, lv->peel, r),
+		               *ne = skellevel_row(lv, lv->near, r);
+		for (int32_t k = 0; k < words; k++) {
+			const uint64_t cand = c[k] & pe[k] & parity;
+			if (cand == 0)
+				continue;
+			const uint64_t x0 = skellevel_east(c, k), x1 = skellevel_east(n, k), x2 = n[k],
+			               x3 = skellevel_west(n, k), x4 = skellevel_west(c, k),
+			               x5 = skellevel_west(s, k), x6 = s[k], x7 = skellevel_east(s, k);
+			const uint64_t simple = skellevel_one(x0 & ~(x1 & x2), x2 & ~(x3 & x4),
+			                                      x4 & ~(x5 & x6), x6 & ~(x7 & x0));
+			const uint64_t ridge = skellevel_one(x0, x2, x4, x6) & ~ne[k];
+			c[k] &= ~(cand & simple & ~ridge);
+		}
+	}
+}
+
+void skellevel_thin(SkelLevel *lv, const Grid *g)
+{
+	if (!lv->set || lv->w != g->w || lv->h != g->h) {
+		skellevel_free(lv);
+		lv->w = g->w;
+		lv->h = g->h;
+		lv->words = (g->w + 2 + 63) / 64;
+		lv->stride = lv->words + 2;
+		const size_t n = (size_t)lv->stride * (size_t)(g->h + 2);
+		lv->set = util_alloc(n, sizeof *lv->set);
+		lv->low = util_alloc(n, sizeof *lv->low);
+		lv->near = util_alloc(n, sizeof *lv->near);
+		lv->peel = util_alloc(n, sizeof *lv->peel);
+	}
+	skellevel_planes(lv, g);
+	for (int round = 0; round < SKELLEVEL_ROUNDS; round++)
+		for (int b = 0; b < 2; b++)
+			for (int a = 0; a < 2; a++)
+				skellevel_subfield(lv, a, b);
+}
+
+void skellevel_state(const SkelLevel *lv, uint8_t *state, uint8_t in)
+{
+	/* each byte of a word, 8 cells, to 8 state bytes by a table in memory order */
+	uint64_t spread[256];
+	for (unsigned v = 0; v < 256; v++) {
+		uint8_t bytes[8];
+		for (int i = 0; i < 8; i++)
+			bytes[i] = (v >> i) & 1 ? in : 0;
+		memcpy(&spread[v], bytes, sizeof bytes);
+	}
+	const int32_t pw = lv->w + 2;
+	for (int32_t r = 0; r <= lv->h + 1; r++) {
+		const uint64_t *row = skellevel_row(lv, lv->set, r);
+		uint8_t *st = state + (size_t)r * (size_t)pw;
+		int32_t x = 0;
+		for (; x + 8 <= pw; x += 8)
+			memcpy(st + x, &spread[(row[x / 64] >> (x % 64)) & 255u], 8);
+		for (; x < pw; x++)
+			st[x] = (row[x / 64] >> (x % 64)) & 1 ? in : 0;
+	}
+}
+
+int32_t skellevel_rest(const SkelLevel *lv, int32_t *out)
+{
+	const int32_t pw = lv->w + 2;
+	int32_t count = 0;
+	for (int32_t r = 1; r <= lv->h; r++) {
+		const uint64_t *c = skellevel_row(lv, lv->set, r), *lo = skellevel_row(lv, lv->low, r);
+		for (int32_t k = 0; k < lv->words; k++)
+			for (uint64_t m = c[k] & lo[k]; m != 0; m &= m - 1)
+				out[count++] = r * pw + 64 * k + skellevel_lowest(m);
+	}
+	return count;
+}
+
+int32_t skellevel_count_rest(const SkelLevel *lv)
+{
+	int32_t count = 0;
+	for (int32_t r = 1; r <= lv->h; r++) {
+		const uint64_t *c = skellevel_row(lv, lv->set, r), *lo = skellevel_row(lv, lv->low, r);
+		for (int32_t k = 0; k < lv->words; k++)
+			count += skellevel_count(c[k] & lo[k]);
+	}
+	return count;
+}
+
+int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
+                       SkelLevelCount small, int32_t *big)
+{
+	/* the higher cells are never deleted here: they are the set's cells not low */
+	const int32_t w = lv->w, pw = w + 2;
+	int32_t count = 0;
+	for (int32_t r = 1; r <= lv->h; r++) {
+		const uint64_t *c = skellevel_row(lv, lv->set, r), *lo = skellevel_row(lv, lv->low, r);
+		/* padded column x of row r is the grid's cell x - 1 of row r - 1 */
+		const int32_t *d2 = dist2 + (size_t)(r - 1) * (size_t)w - 1;
+		for (int32_t k = 0; k < lv->words; k++)
+			for (uint64_t m = c[k] & ~lo[k]; m != 0; m &= m - 1) {
+				const int32_t x = 64 * k + skellevel_lowest(m), d = d2[x];
+				out[2 * count] = r * pw + x;
+				out[2 * count + 1] = d;
+				if (d < SKELLEVEL_SMALL)
+					small[count & (SKELLEVEL_LANES - 1)][d]++;
+				else
+					big[d + 1]++;
+				count++;
+			}
+	}
+	return count;
+}
