@@ -507,9 +507,16 @@ static bool room_toward(const Controller *c, const ProbeRun *p, int sx, int sy)
 
 bool probe_begin(Controller *c, int32_t k)
 {
+	if (c->task.kind != TASK_GO_SHAPE)
+		return false;
+	return probe_begin_object(c, k);
+}
+
+bool probe_begin_object(Controller *c, int32_t k)
+{
 	ProbeRun *p = &c->probe;
 	const WorldModel *m = &c->model;
-	if (c->task.kind != TASK_GO_SHAPE || c->task.shape != SHAPE_SQUARE || p->runs >= PROBE_RUNS || k < 0 ||
+	if (c->task.shape != SHAPE_SQUARE || p->runs >= PROBE_RUNS || k < 0 ||
 	    m->node[k].kind != NODE_OBJECT)
 		return false;
 	ObjectReading o = objects_read(c, k);

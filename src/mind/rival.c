@@ -104,21 +104,6 @@ static void rival_end(Controller *c, const char *what)
 		r->returning = true; /* back where he would have claimed (rival_goal) */
 }
 
-/* probe_as_claim(c, k): probe_begin on node k whatever the task: it asks for the
- * task "go square" (it was made for that claim); the conditions that make a probe
- * safe are the same for "go round square" and "push square", whose object is the
- * square too. */
-static bool probe_as_claim(Controller *c, int32_t k)
-{
-	if (c->task.shape != SHAPE_SQUARE)
-		return false;
-	TaskKind kind = c->task.kind;
-	c->task.kind = TASK_GO_SHAPE;
-	bool begun = probe_begin(c, k);
-	c->task.kind = kind;
-	return begun;
-}
-
 bool rival_own_probed(const Controller *c, int32_t k)
 {
 	const RivalRun *r = &c->rival;
@@ -142,7 +127,7 @@ bool rival_begin(Controller *c, int32_t k)
 		return false;
 	/* OWN FIRST: beside the object he would claim, that one first. */
 	if (!rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) &&
-	    probe_as_claim(c, k)) {
+	    probe_begin_object(c, k)) {
 		r->own_ident[r->own_count] = (int32_t)c->model.node[k].ident;
 		r->own_at[r->own_count++] = node_centre(c, k);
 		r->stage = RIVAL_OWN;
@@ -266,7 +251,7 @@ bool rival_arrive(Controller *c)
 		return true;
 	}
 	if (q.confirmed && objects_touching(c, j)) {
-		if (probe_as_claim(c, j))
+		if (probe_begin_object(c, j))
 			r->stage = RIVAL_PROBE;
 		else
 			rival_end(c, "no probe can be made safely here: the doubt stands");

@@ -225,6 +225,10 @@ struct Controller;
 /* probe_begin(c, k): a probe of object node k begun (see WHEN); false when none
  * can be made. */
 bool probe_begin(struct Controller *c, int32_t k);
+/* probe_begin_object(c, k): the same for any task whose object is the square
+ * ("go round square", "push square" too: rival.h probes the object Utak would
+ * claim and its rival before the claim); probe_begin is it for "go square". */
+bool probe_begin_object(struct Controller *c, int32_t k);
 /* probe_decide(c, cmd): the probe's next command; false when none is under way,
  * or when it has just ended (the claim made, c->phase DONE, or the object
  * dropped and the plan to be made again). */
