@@ -6,7 +6,7 @@
  * 2. Thinning: distance-ordered homotopic thinning (Pudney, "Distance-ordered homotopic
  *    thinning: a skeletonization algorithm for 3D digital images", CVIU 72(3), 1998),
  *    here in 2D with the (4, 8) topology. Free cells are visited in order of
- *    increasing dist2 (a counting sort: a bucket queue with all keys known in
+ *    increasing dist2 (a counting sort, skelsort.c: a bucket queue with all keys known in
  *    advance; ties by cell index, so the result is deterministic), except that the
  *    lowest level, dist2 1, is first thinned by bit planes in parallel subfields
  *    (skellevel.c: each of its deletions is one a visit would make, the order within
@@ -174,6 +174,7 @@
 #include "utak/plan/skeleton.h"
 
 #include "edt_work.h"
+#include "skelsort.h"
 #include "skellevel.h"
 
 #include <assert.h>
@@ -762,125 +763,11 @@ static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
 	return nremove;
 }
 
-/* ---------------------------------------------------------------- the visiting order */
-
-/* The histogram's split tables (skeleton_sort_listed, skeleton_sort_rows): values
- * below THIN_SMALL, in THIN_SPLIT tables by place (a power of two). */
-#define THIN_SMALL 256 /* a power of two: a word of values below it ORs below it */
-#define THIN_SPLIT 8
-
-/* skeleton_sort_listed(lv, dist2, start, order, maxd, nrest, high): the higher
- * levels' cells (dist2 above 1) listed in index order from the planes into high
- * (scratch of two values a listed cell: the padded index and the dist2) and counted by
- * dist2 as they are listed (skellevel_high; start[d + 1] the cells of value d), then
- * counting-sorted into order after the lowest level's rest (nrest cells): the distance
- * order, ties by index. The lowest level (two thirds of the free cells on the maze)
- * and the blocked cells are neither counted nor sorted. The sort takes four cells at a
- * time: each bucket's next
- * place is loaded for all four before any is stored, and a cell's place counts the
- * cells before it in the four with the same key; so the chain through start[], a
- * store forwarded to the next load, is one link a group rather than one a cell (it
- * was most of the sort's time). */
-static void skeleton_sort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start,
-                                 int32_t *order, int32_t maxd, int32_t nrest, int32_t *high)
-{
-	SkelLevelCount small;
-	memset(small, 0, sizeof small);
-	const int32_t nhigh = skellevel_high(lv, dist2, high, small, start);
-	assert(nhigh == lv->nhigh);
-	for (int32_t d = 2; d < SKELLEVEL_SMALL && d <= maxd; d++)
-		for (int j = 0; j < SKELLEVEL_LANES; j++)
-			start[d + 1] += small[j][d];
-	start[2] = nrest;
-	for (int32_t d = 2; d <= maxd; d++)
-		start[d + 1] += start[d];
-	int32_t k = 0;
-	for (; k + 4 <= nhigh; k += 4) {
-		const int32_t *e = high + 2 * k;
-		const int32_t k0 = e[1], k1 = e[3], k2 = e[5], k3 = e[7];
-		const int32_t p0 = start[k0];
-		const int32_t p1 = start[k1] + (k1 == k0);
-		const int32_t p2 = start[k2] + (k2 == k0) + (k2 == k1);
-		const int32_t p3 = start[k3] + (k3 == k0) + (k3 == k1) + (k3 == k2);
-		start[k0] = p0 + 1;
-		start[k1] = p1 + 1;
-		start[k2] = p2 + 1;
-		start[k3] = p3 + 1;
-		order[p0] = e[0];
-		order[p1] = e[2];
-		order[p2] = e[4];
-		order[p3] = e[6];
-	}
-	for (; k < nhigh; k++)
-		order[start[high[2 * k + 1]]++] = high[2 * k];
-	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
-}
-
-/* skeleton_sort_rows(t, start, order, maxd): every cell of the grid sorted by dist2
- * into order, ties by index, as padded indices: the blocked cells (dist2 0) first, so
- * that the loop needs no branch and no test, then the lowest level's, then the higher
- * levels' in the distance order. For a grid whose higher levels are most of its cells
- * (rooms, open maps), where listing them first (skeleton_sort_listed) costs more than
- * it saves. The histogram over the rows of dist2 in split tables by column, and the
- * sort four cells a group, as skeleton_sort_listed (see there). */
-static void skeleton_sort_rows(const Thinner *t, int32_t *start, int32_t *order, int32_t maxd)
-{
-	const int32_t w = t->w, h = t->h;
-	int32_t small[THIN_SPLIT][THIN_SMALL + 16];
-	memset(small, 0, sizeof small);
-	for (int32_t y = 0; y < h; y++) {
-		const int32_t *restrict d2 = t->dist2 + (size_t)y * w;
-		int32_t x = 0;
-		for (; x + THIN_SPLIT <= w; x += THIN_SPLIT) {
-			int32_t any = 0;
-			for (int j = 0; j < THIN_SPLIT; j++)
-				any |= d2[x + j];
-			if (any < THIN_SMALL)
-				for (int j = 0; j < THIN_SPLIT; j++)
-					small[j][d2[x + j]]++;
-			else
-				for (int j = 0; j < THIN_SPLIT; j++)
-					start[d2[x + j] + 1]++;
-		}
-		for (; x < w; x++)
-			start[d2[x] + 1]++;
-	}
-	for (int32_t d = 0; d < THIN_SMALL && d <= maxd; d++)
-		for (int j = 0; j < THIN_SPLIT; j++)
-			start[d + 1] += small[j][d];
-	start[0] = 0;
-	for (int32_t d = 0; d <= maxd; d++)
-		start[d + 1] += start[d];
-	for (int32_t y = 0; y < h; y++) {
-		const int32_t *restrict d2 = t->dist2 + (size_t)y * w;
-		const int32_t base = (y + 1) * t->pw + 1;
-		int32_t x = 0;
-		for (; x + 4 <= w; x += 4) {
-			const int32_t k0 = d2[x], k1 = d2[x + 1], k2 = d2[x + 2], k3 = d2[x + 3];
-			const int32_t p0 = start[k0];
-			const int32_t p1 = start[k1] + (k1 == k0);
-			const int32_t p2 = start[k2] + (k2 == k0) + (k2 == k1);
-			const int32_t p3 = start[k3] + (k3 == k0) + (k3 == k1) + (k3 == k2);
-			start[k0] = p0 + 1;
-			start[k1] = p1 + 1;
-			start[k2] = p2 + 1;
-			start[k3] = p3 + 1;
-			order[p0] = base + x;
-			order[p1] = base + x + 1;
-			order[p2] = base + x + 2;
-			order[p3] = base + x + 3;
-		}
-		for (; x < w; x++)
-			order[start[d2[x]]++] = base + x;
-	}
-	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
-}
-
 /* ---------------------------------------------------------------- the skeleton */
 
 /* The higher levels are sorted from a list of their cells when they are at most this
- * share of the grid's cells (skeleton_sort_listed), else with the whole grid
- * (skeleton_sort_rows); at most a half, as the list, two values a cell, is kept in
+ * share of the grid's cells (skelsort_listed), else with the whole grid
+ * (skelsort_rows); at most a half, as the list, two values a cell, is kept in
  * the stack, one value a cell of the grid. */
 #define SKELETON_LISTED 0.5
 
@@ -981,9 +868,9 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	int32_t nrest;
 	if ((double)lv->nhigh <= SKELETON_LISTED * (double)n) {
 		nrest = skellevel_rest(lv, order);
-		skeleton_sort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack);
+		skelsort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack);
 	} else {
-		skeleton_sort_rows(&t, start, order, maxd);
+		skelsort_rows(s->dist2, w, h, t.pw, start, order, maxd);
 		const int32_t nblocked = (int32_t)n - lv->nlow - lv->nhigh;
 		nrest = skellevel_count_rest(lv);
 		visit = order + nblocked + lv->nlow - nrest;
