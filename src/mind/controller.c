@@ -194,6 +194,26 @@ static void remember(Controller *c, Vec2 p)
 		c->visited[c->visited_count++] = p;
 }
 
+/* shun(c, goal): a goal whose path is blocked, its own square now occupied on the
+ * plan's space and never seen in the fovea, is not chosen again by goals_near.
+ * WHY: the fringe of an object seen only in the 2 x 2 and 4 x 4 cells reads
+ * otherwise from each square Utak stands on (the cells fall on other squares).
+ * Looking at a hypothesis from the floor nearest a square of it he has not seen
+ * in the fovea, two such cells, on two sides of the object, were each occupied
+ * as seen from the way to the other: every path was blocked in turn and he went
+ * to and fro between the two ways until the cycles ran out (random g258,
+ * tests/worlds/look-fringe.w). */
+static void shun(Controller *c, Vec2 goal)
+{
+	int32_t i, j;
+	int32_t x = (int32_t)floor(goal.x), y = (int32_t)floor(goal.y);
+	if (c->phase != PHASE_TRAVEL || /* pushing, the space is the configuration space */
+	    !goals_cell_of(&c->screen, goal, &i, &j) || c->space.cells[j * c->space.w + i] == GRID_FREE ||
+	    worldmodel_evidence(&c->model, x, y).res == WORLDMODEL_RES_FOVEA || c->shunned_count >= CONTROLLER_MAX_VISITED)
+		return;
+	c->shunned[c->shunned_count++] = goal;
+}
+
 /* utak_reach(c): breadth-first steps from Utak's cell over this cycle's screen
  * (goals_reach), for roomdoubt.h's checks; the caller frees. */
 static int32_t *utak_reach(const Controller *c)
@@ -672,8 +692,10 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	else if (round_stale(c)) {
 		reason = "the object to go round is not what it seemed";
 		c->round_count = 0;
-	} else if (!route_viable(c))
+	} else if (!route_viable(c)) {
 		reason = "the path is blocked";
+		shun(c, old_goal);
+	}
 	else if (c->task.kind != TASK_GO_ROUND) {
 		goals_choose(c, &gr);
 		/* Exploring, one place to look from is as good as another: the one

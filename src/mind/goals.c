@@ -316,7 +316,9 @@ bool goals_beside(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goa
 }
 
 /* goals_near(c, p, dist, goal): the reachable free cell nearest point p (ties to
- * the nearer Utak by steps), not a goal already reached. */
+ * the nearer Utak by steps), not a goal already reached, nor one given up because
+ * its square read occupied on the way (c->shunned) unless the fovea has seen it
+ * since. */
 bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal)
 {
 	const Screen *s = &c->screen;
@@ -328,6 +330,9 @@ bool goals_near(const Controller *c, Vec2 p, const int32_t *dist, Vec2 *goal)
 		bool visited = false;
 		for (int v = 0; v < c->visited_count && !visited; v++)
 			visited = goals_distance(here, c->visited[v]) < 0.5;
+		for (int v = 0; v < c->shunned_count && !visited; v++)
+			visited = goals_distance(here, c->shunned[v]) < 0.5 &&
+				  worldmodel_evidence(&c->model, s->x0 + at % s->w, s->y0 + at / s->w).res != WORLDMODEL_RES_FOVEA;
 		double d = goals_distance(here, p) + 1e-3 * dist[at];
 		if (!visited && d < best) {
 			best = d;

@@ -155,6 +155,12 @@ typedef struct Controller {
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];
 	int visited_count;
+	/* Goals given up because the eye showed their square occupied on the way
+	 * there, while it was never seen in the fovea (controller.c, shun): a
+	 * square at the fringe of an object seen coarsely reads floor from one
+	 * place and occupied from the next; goals_near does not choose it again. */
+	Vec2 shunned[CONTROLLER_MAX_VISITED];
+	int shunned_count;
 	/* Squares found blocked by bumping into them: where a move or push halted,
 	 * the squares its shapes would have entered next. Touch of a kind: the eye
 	 * may have read them as floor (a verge glimpsed coarsely). */
