@@ -70,6 +70,7 @@ typedef enum RivalStage {
 	RIVAL_GO,    /* going to the rival: to look at it, then beside it */
 	RIVAL_PROBE, /* probing it (probe.h) */
 	RIVAL_OWN,   /* probing the object Utak would claim first (OWN FIRST) */
+	RIVAL_OWN_GO, /* "go round": going back beside the object gone round, to probe it */
 } RivalStage;
 
 typedef struct RivalRun {
@@ -90,6 +91,9 @@ typedef struct RivalRun {
 	int32_t own_ident[PROBE_RUNS];
 	Vec2 own_at[PROBE_RUNS];
 	int own_count;
+	/* "go round": trips back to the object gone round begun this task (OWN
+	 * FIRST ON A LOOP), at most RIVAL_MAX. */
+	int own_trips;
 } RivalRun;
 
 struct Controller;
@@ -118,5 +122,10 @@ bool rival_probing(const struct Controller *c);
 /* rival_own_probed(c, k): node k, the object Utak would claim, was probed first
  * (OWN FIRST) and may be a square: its claim needs no second probe. */
 bool rival_own_probed(const struct Controller *c, int32_t k);
+/* rival_loop_closed(c): "go round square", the loop just closed round the task's
+ * object (its last point before home), seen whole, and a doubt names a rival:
+ * settling begun from there, beside the object (OWN FIRST ON A LOOP), then home;
+ * false when nothing was begun (home as before). */
+bool rival_loop_closed(struct Controller *c);
 
 #endif
