@@ -346,6 +346,9 @@ static void arrive(Controller *c)
 			 * beside it, then home (round.c). */
 			c->round_looking = c->round_looked = true;
 			c->round_count = 0;
+		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && rival_loop_closed(c)) {
+			/* The loop closed round an object a doubt over another names:
+			 * settled from here, beside it, then home (rival.h). */
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */

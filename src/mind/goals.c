@@ -847,6 +847,20 @@ void goals_choose(Controller *c, GoalResult *out)
 				out->exploring = out->found = true;
 				break;
 			}
+			/* Seen closer, beside it still: a doubt over another object is
+			 * settled from here (rival.h), then home. */
+			if (rival_loop_closed(c)) {
+				c->round_looking = false;
+				if (rival_probing(c)) {
+					/* touching it: probed from where he stands, the
+					 * arrival's next command (controller.c) */
+					out->goal = c->model.utak;
+					out->exploring = out->found = true;
+					break;
+				}
+				if (rival_goal(c, dist, out))
+					break;
+			}
 			round_home(c, k);
 		}
 		if (c->task.kind == TASK_GO_ROUND && c->round_count > 0) {

@@ -72,6 +72,31 @@ static bool ring_unseen(const Controller *c, int32_t j, int32_t *x, int32_t *y)
 	return best >= 0;
 }
 
+/* own_may_probe(c, k): object node k, gone round, is one a probe could be made of
+ * from beside it (probe.h, WHEN), as far as the model can tell from afar: seen
+ * whole, of few enough squares, and no square 8-adjacent to it believed occupied
+ * (a wall or another object there: no probe, so no trip); ring squares seen only
+ * coarsely are looked at on the way (rival_way). */
+static bool own_may_probe(Controller *c, int32_t k)
+{
+	const WorldModel *m = &c->model;
+	ObjectReading o = objects_read(c, k);
+	if (!o.confirmed || o.squares > PROBE_MAX_SQUARES)
+		return false;
+	const Box *r = &m->node[k].rect;
+	for (int32_t sy = (int32_t)floor(r->lo.y) - 1; sy <= (int32_t)ceil(r->hi.y); sy++)
+		for (int32_t sx = (int32_t)floor(r->lo.x) - 1; sx <= (int32_t)ceil(r->hi.x); sx++) {
+			if (worldmodel_node_at(m, sx, sy) == k ||
+			    worldmodel_belief(m, sx, sy) != BELIEF_OCCUPIED)
+				continue;
+			for (int32_t dy = -1; dy <= 1; dy++)
+				for (int32_t dx = -1; dx <= 1; dx++)
+					if (worldmodel_node_at(m, sx + dx, sy + dy) == k)
+						return false;
+		}
+	return true;
+}
+
 /* rival_way(c, j, dist, goal): where to go next for rival node j: near the square of
  * it, or of the floor round it, the fovea has not seen nearest Utak, or, all seen,
  * beside it (where touch reaches it). */
@@ -93,15 +118,56 @@ static bool rival_way(const Controller *c, int32_t j, const int32_t *dist, Vec2 
 static void rival_end(Controller *c, const char *what)
 {
 	RivalRun *r = &c->rival;
+	bool own = r->stage == RIVAL_OWN_GO;
 	size_t n = strlen(r->note);
-	snprintf(r->note + n, sizeof r->note - n, "; rival at (%.1f, %.1f): %s", r->at.x, r->at.y,
-	         what);
+	snprintf(r->note + n, sizeof r->note - n, "; %s at (%.1f, %.1f): %s",
+	         own ? "the object gone round" : "rival", r->at.x, r->at.y, what);
 	r->stage = RIVAL_IDLE;
 	c->have_plan = false;
+	if (own) {
+		/* No probe of the object gone round: no other trip to it would fare
+		 * better. The rival as rival8 settles it without (rival_begin), or home. */
+		r->own_trips = RIVAL_MAX;
+		if (rival_begin(c, objects_find_target(c)))
+			return;
+	}
 	if (r->home_after) /* "go round": the loop is walked; home, and judged there again */
 		round_home(c, objects_find_target(c));
 	else
 		r->returning = true; /* back where he would have claimed (rival_goal) */
+}
+
+/* rival_set_off(c, j, stage): going to object node j begun (stage RIVAL_GO, a
+ * rival; RIVAL_OWN_GO, the object gone round), only when the way there is known
+ * (on this cycle's screen and space); false, nothing begun, when it is not. */
+static bool rival_set_off(Controller *c, int32_t j, RivalStage stage)
+{
+	RivalRun *r = &c->rival;
+	const Grid *g = &c->space;
+	if (g->w == 0 || c->screen.w != g->w || c->screen.h != g->h)
+		return false;
+	int32_t ui, uj;
+	if (!goals_cell_of(&c->screen, c->model.utak, &ui, &uj))
+		return false;
+	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
+	goals_reach(g, ui, uj, dist);
+	Vec2 goal;
+	int arrivals = r->arrivals;
+	r->arrivals = 0; /* rival_way's looks at the ring count from the start */
+	bool way = rival_way(c, j, dist, &goal);
+	r->arrivals = arrivals;
+	free(dist);
+	if (!way)
+		return false;
+	r->ident = (int32_t)c->model.node[j].ident;
+	r->at = node_centre(c, j);
+	r->arrivals = 0;
+	r->home_after = c->task.kind == TASK_GO_ROUND;
+	r->back = c->model.utak;
+	r->returning = false;
+	r->stage = stage;
+	c->have_plan = false;
+	return true;
 }
 
 bool rival_own_probed(const Controller *c, int32_t k)
@@ -117,7 +183,10 @@ bool rival_own_probed(const Controller *c, int32_t k)
 	return false;
 }
 
-bool rival_begin(Controller *c, int32_t k)
+/* begin(c, k, own_trip): rival_begin; with own_trip, Utak is where the loop round
+ * node k closed, and may go back beside it to probe it first (a short way: from
+ * home the way back and out again would cost a loop's approach twice). */
+static bool begin(Controller *c, int32_t k, bool own_trip)
 {
 	RivalRun *r = &c->rival;
 	if (k < 0 || r->stage != RIVAL_IDLE)
@@ -125,13 +194,33 @@ bool rival_begin(Controller *c, int32_t k)
 	int32_t j = objects_rival(c, k);
 	if (j < 0 || !objects_rival_open(c, j))
 		return false;
-	/* OWN FIRST: beside the object he would claim, that one first. */
-	if (!rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) &&
+	/* OWN FIRST: beside the object he would claim, that one first, whatever the
+	 * rival (going round, only from where the loop closed: own_trip). Going
+	 * round, a rival never seen whole is not looked at first either: a look
+	 * that shows it reading a square leaves the doubt, for the object gone
+	 * round was not probed (random g134, in a version that looked first: the
+	 * piece gone round was never disproved; probed first, it is, and the
+	 * square beside it is gone round instead). */
+	bool own = c->task.kind != TASK_GO_ROUND || own_trip;
+	if (own && !rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) &&
 	    probe_begin_object(c, k)) {
 		r->own_ident[r->own_count] = (int32_t)c->model.node[k].ident;
 		r->own_at[r->own_count++] = node_centre(c, k);
 		r->stage = RIVAL_OWN;
 		c->have_plan = false;
+		return true;
+	}
+	/* OWN FIRST ON A LOOP: "go round square" walks round the object without
+	 * touching it, so he goes back beside it to probe it first (where a probe
+	 * may be made, and the way is known), then to the rival, then home. */
+	if (own && own_trip && !rival_own_probed(c, k) && r->own_count < PROBE_RUNS &&
+	    r->own_trips < RIVAL_MAX && own_may_probe(c, k) && rival_set_off(c, k, RIVAL_OWN_GO)) {
+		r->own_trips++;
+		size_t n = strlen(r->note);
+		snprintf(r->note + n, sizeof r->note - n,
+		         "; back to the %s gone round, at (%.1f, %.1f), to probe it before a rival "
+		         "(rival.h)",
+		         task_shape_name(c->task.shape), r->at.x, r->at.y);
 		return true;
 	}
 	if (r->count >= RIVAL_MAX)
@@ -149,34 +238,20 @@ bool rival_begin(Controller *c, int32_t k)
 		if (r->tried_ident[i] == (int32_t)c->model.node[j].ident ||
 		    goals_distance(r->tried_at[i], at) < OBJECTS_SAME)
 			return false; /* settled once already: what it left stands */
-	/* Only when the way there is known (on this cycle's screen and space). */
-	const Grid *g = &c->space;
-	if (g->w == 0 || c->screen.w != g->w || c->screen.h != g->h)
+	if (!rival_set_off(c, j, RIVAL_GO))
 		return false;
-	int32_t ui, uj;
-	if (!goals_cell_of(&c->screen, c->model.utak, &ui, &uj))
-		return false;
-	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
-	goals_reach(g, ui, uj, dist);
-	Vec2 goal;
-	bool way = rival_way(c, j, dist, &goal);
-	free(dist);
-	if (!way)
-		return false;
-	r->ident = (int32_t)c->model.node[j].ident;
-	r->at = at;
 	r->tried_ident[r->count] = r->ident;
 	r->tried_at[r->count++] = at;
-	r->arrivals = 0;
-	r->home_after = c->task.kind == TASK_GO_ROUND;
-	r->back = c->model.utak;
-	r->returning = false;
-	r->stage = RIVAL_GO;
 	size_t n = strlen(r->note);
 	snprintf(r->note + n, sizeof r->note - n,
 	         "; rival at (%.1f, %.1f): going to settle it (rival.h)", at.x, at.y);
 	c->have_plan = false;
 	return true;
+}
+
+bool rival_begin(Controller *c, int32_t k)
+{
+	return begin(c, k, false);
 }
 
 bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
@@ -194,16 +269,16 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		}
 		c->rival.returning = false;
 	}
-	if (c->rival.stage != RIVAL_GO)
+	if (c->rival.stage != RIVAL_GO && c->rival.stage != RIVAL_OWN_GO)
 		return false;
 	int32_t j = rival_node(c);
 	if (j < 0) {
 		rival_end(c, "no longer in the model");
-		return false;
+		return c->rival.stage == RIVAL_GO && rival_goal(c, dist, out);
 	}
 	if (!rival_way(c, j, dist, &out->goal)) {
 		rival_end(c, "no way to it: the doubt stands");
-		return false;
+		return c->rival.stage == RIVAL_GO && rival_goal(c, dist, out);
 	}
 	/* A goal where he stands, and where he arrived on the way already: the eye
 	 * and touch have shown from here all they will (else the arrivals would
@@ -211,7 +286,8 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 	if (c->rival.arrivals > 0 && goals_distance(out->goal, c->model.utak) <= CONTROLLER_ARRIVED &&
 	    goals_distance(c->rival.arrived_at, c->model.utak) <= CONTROLLER_ARRIVED) {
 		rival_end(c, "nothing more to see or touch from here: the doubt stands");
-		return false;
+		/* (after the object gone round, a rival may be gone to: its first goal) */
+		return c->rival.stage == RIVAL_GO && rival_goal(c, dist, out);
 	}
 	out->found = out->exploring = true;
 	return true;
@@ -226,7 +302,7 @@ bool rival_arrive(Controller *c)
 		c->exploring = false;
 		return false;
 	}
-	if (r->stage != RIVAL_GO)
+	if (r->stage != RIVAL_GO && r->stage != RIVAL_OWN_GO)
 		return false;
 	c->have_plan = false;
 	r->arrivals++;
@@ -234,6 +310,19 @@ bool rival_arrive(Controller *c)
 	int32_t j = rival_node(c);
 	if (j < 0) {
 		rival_end(c, "no longer in the model");
+		return true;
+	}
+	if (r->stage == RIVAL_OWN_GO) {
+		/* Back beside the object gone round: probed now if it can be (OWN
+		 * FIRST ON A LOOP), else on to the next goal, or given up. */
+		if (j != objects_find_target(c))
+			rival_end(c, "no longer the task's object");
+		else if (objects_touching(c, j) && probe_begin_object(c, j)) {
+			r->own_ident[r->own_count] = (int32_t)c->model.node[j].ident;
+			r->own_at[r->own_count++] = node_centre(c, j);
+			r->stage = RIVAL_OWN;
+		} else if (r->arrivals >= RIVAL_ARRIVALS)
+			rival_end(c, "no probe can be made safely from where Utak can stand");
 		return true;
 	}
 	if (j == objects_find_target(c)) {
@@ -288,6 +377,17 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 		         "; probed first, before a rival: %s",
 		         verdict == PROBE_INCONSISTENT ? "it is no square, dropped"
 		                                       : "it may be a square");
+		if (c->task.kind == TASK_GO_ROUND) {
+			/* The loop was walked round it. No square: the loop counts for
+			 * nothing, and the task goes on (a loop round the next one of
+			 * the shape). May be one: on to the rival, or home. */
+			int32_t k = objects_find_target(c);
+			if (verdict == PROBE_INCONSISTENT) {
+				c->round_count = 0;
+				c->round_looked = c->round_looking = false;
+			} else if (!rival_begin(c, k))
+				round_home(c, k);
+		}
 		return false;
 	}
 	/* The probe's end (probe_decide) claims the task's object or drops it; here
@@ -331,4 +431,13 @@ bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		         c->probe.verdict == PROBE_INCONSISTENT ? "fit no square"
 		                                                : "may be a square's");
 	return true;
+}
+
+bool rival_loop_closed(Controller *c)
+{
+	int32_t k = objects_find_target(c);
+	char why[160];
+	return c->task.kind == TASK_GO_ROUND && k >= 0 && objects_read(c, k).confirmed &&
+	       fabs(round_believed_turns(c, k)) > CONTROLLER_ROUND_TURNS &&
+	       objects_doubt(c, k, why, sizeof why) && begin(c, k, true);
 }

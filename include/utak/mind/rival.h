@@ -21,9 +21,9 @@
  * nothing is claimed that was doubted without such a proof.
  *
  * WHEN. Where Utak would claim with a doubt that names a rival: "go square" beside
- * the object (controller.c, arrive), "go round square" home from the loop, "push
- * square" beside the object before he grasps it (the object to push is chosen
- * then). At most RIVAL_MAX rivals a task, each once (by ident and by place), and
+ * the object (controller.c, arrive), "go round square" where the loop closes
+ * (below) and home from it, "push square" beside the object before he grasps it
+ * (the object to push is chosen then). At most RIVAL_MAX rivals a task, each once (by ident and by place), and
  * only when the way there is known: a cell beside it (or in view of its unseen
  * squares) reachable on the current screen.
  *
@@ -46,8 +46,23 @@
  * dropped (as a claimed square is, probe.h), and the task goes on to the next
  * object of the shape; may be a square, the rival is gone to as above, and "go
  * square"'s claim makes no second probe of it (rival_own_probed).
+ * OWN FIRST ON A LOOP. "Go round square" walks round the object without touching
+ * it, and home he is far from it: a rival seen whole that reads a square would
+ * never be probed (the object gone round was not), and the doubt would stand. So
+ * where the loop closes (its last point before home, or the closer looks after
+ * it: rival_loop_closed, Utak beside the object still) and a doubt names a
+ * rival, he probes the object gone round first: touching it, from there; else he
+ * goes back beside it (RIVAL_OWN_GO: looks at its ring seen only coarsely, then
+ * goals_beside; only when it is seen whole and nothing but floor may lie round it,
+ * own_may_probe), at most RIVAL_MAX such trips a task. May be a square: on to the
+ * rival as above, then home. Disproved: it is dropped, the loop round it counts
+ * for nothing, and the task goes on (a loop round the next one of the shape).
+ * Not from home (rival_begin there is rival8's: a rival seen whole is left): the
+ * way back to the object and out again would cost the approach twice (random
+ * g114, 290 cycles, ran out of the 300 so).
  * COST: a probe's 6 cycles, the way there and back, and a probe's 6 cycles, only
- * where a rival doubt arises. */
+ * where a rival doubt arises (going round, and the short way back beside the
+ * object gone round). */
 #ifndef UTAK_RIVAL_H
 #define UTAK_RIVAL_H
 
@@ -70,6 +85,7 @@ typedef enum RivalStage {
 	RIVAL_GO,    /* going to the rival: to look at it, then beside it */
 	RIVAL_PROBE, /* probing it (probe.h) */
 	RIVAL_OWN,   /* probing the object Utak would claim first (OWN FIRST) */
+	RIVAL_OWN_GO, /* "go round": going back beside the object gone round, to probe it */
 } RivalStage;
 
 typedef struct RivalRun {
@@ -90,6 +106,9 @@ typedef struct RivalRun {
 	int32_t own_ident[PROBE_RUNS];
 	Vec2 own_at[PROBE_RUNS];
 	int own_count;
+	/* "go round": trips back to the object gone round begun this task (OWN
+	 * FIRST ON A LOOP), at most RIVAL_MAX. */
+	int own_trips;
 } RivalRun;
 
 struct Controller;
@@ -118,5 +137,10 @@ bool rival_probing(const struct Controller *c);
 /* rival_own_probed(c, k): node k, the object Utak would claim, was probed first
  * (OWN FIRST) and may be a square: its claim needs no second probe. */
 bool rival_own_probed(const struct Controller *c, int32_t k);
+/* rival_loop_closed(c): "go round square", the loop just closed round the task's
+ * object (its last point before home), seen whole, and a doubt names a rival:
+ * settling begun from there, beside the object (OWN FIRST ON A LOOP), then home;
+ * false when nothing was begun (home as before). */
+bool rival_loop_closed(struct Controller *c);
 
 #endif
