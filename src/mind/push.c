@@ -17,7 +17,9 @@
  * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
  * (push_seat_finish), and only when no floor seen that beats it may be of that
  * room after all (roomdoubt_hidden: else he doubts it; he does not yet let go to
- * look); the survey does not yet make (i)'s looks. Seated short, with
+ * look), and only when no blob seen only coarsely, taken for wall, may part the
+ * start's hall from the object's squares that reach the corner (hallsplit.h, as
+ * task (i) asks of Utak: held_hall_split); the survey does not yet make (i)'s looks. Seated short, with
  * another object in the way, Utak moves it out of the way first (pushclear.h). */
 #include "utak/mind/push.h"
 
@@ -27,6 +29,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/hallsplit.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
@@ -356,6 +359,41 @@ static bool held_room_doubt(Controller *c)
 	return d != ROOMDOUBT_NONE;
 }
 
+/* held_hall_split(c, short_by): whether a blob the eye has seen only coarsely, taken
+ * for wall, may part the room Utak started in from every square of the held object
+ * that reaches the corner (scores at most the slack short of the best floor seen in
+ * the start's room, short_by short of it itself: goals_corner_shortfall), by task
+ * (i)'s rule (hallsplit.h); if so the task fails with his doubt. WHY the object's
+ * squares, not Utak's point: the judge counts the object's squares in the start's
+ * room; pushed through the gap beside a free-standing stub, object and Utak both end
+ * in the other half, but held at the gap's mouth the object may be parted while he
+ * is not. With none left in the held set (goals_subject_score), Utak's own square. */
+static bool held_hall_split(Controller *c, int64_t short_by)
+{
+	const WorldModel *m = &c->model;
+	int32_t ux, uy, n = 0;
+	worldmodel_utak_square(m, &ux, &uy);
+	int64_t least = goals_subject_score(c) + short_by - CONTROLLER_CORNER_SLACK;
+	Vec2 *p = util_alloc((size_t)m->held_count + 1, sizeof *p), at;
+	if (m->holding && m->held_count > 0) {
+		for (int32_t k = 0; k < m->held_count; k++) {
+			int32_t x = ux + m->held_dx[k], y = uy + m->held_dy[k];
+			if (goals_corner_score(c->task.corner, x, y) >= least)
+				p[n++] = goals_centre(x, y);
+		}
+	} else
+		p[n++] = m->utak;
+	bool parted = hallsplit_parts_all(c, p, n, &at);
+	free(p);
+	if (parted) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: a blob seen only coarsely, at (%.1f, %.1f), may be a wall that parts it from the room he started in",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
+	}
+	return parted;
+}
+
 /* push_held_is_task_shape(c): what Utak holds is the task's shape: his held squares
  * read as it, or they read as it when he grasped and now lie within the box they
  * had then (shifted with them: wm_register_held) and one square beyond, its sides
@@ -408,7 +446,7 @@ void push_seat_finish(Controller *c)
 		snprintf(c->why, sizeof c->why,
 			 "Utak cannot tell the %s he pushed the %s into is of the room he started in: a wall between may be seen only coarsely",
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
-	} else if (goals_corner_hidden(c)) {
+	} else if (goals_corner_hidden(c) || held_hall_split(c, short_by)) {
 		/* failed, with his doubt */
 	} else if (c->doubt[0]) {
 		c->phase = PHASE_FAILED;
