@@ -1,6 +1,6 @@
 # hall-stub-push-object.w - hall-stub-push.w with the stub an object (letter S)
 # instead of wall: the control, and the rule's cost (hallsplit.h, push.c
-# held_hall_split). The verdict counts objects as space, so the hall is one room
+# held_room_split). The verdict counts objects as space, so the hall is one room
 # and the square pushed into the south-west corner is achieved; but Utak's eye,
 # seeing the stub only coarsely and never touching it, cannot tell it from the
 # wall of hall-stub-push.w, so he claims the corner with a doubt.

@@ -9,7 +9,7 @@
 # as an object (space to his rooms), and pushes the square through the west gap:
 # before hallsplit_parts_all he claimed the south room's corner (a false success);
 # now, the stub taken for wall parting the square's squares from his start, he
-# doubts it (push.c held_hall_split). The control: hall-stub-push-object.w.
+# doubts it (push.c held_room_split). The control: hall-stub-push-object.w.
 table 43 110
 wall 22 57 14 57 14 55 22 55
 object square1 Y 8 62 13 62 13 67 8 67

@@ -24,7 +24,7 @@
  * with a doubt (controller.c). For a push (task (v)) the points are the held
  * object's squares that reach the corner, not Utak's: the judge counts the
  * object's squares in the start's room; the doubt stands when the node parts the
- * start from every one of them (push.c held_hall_split). He does not go and touch the blob: a touch visit
+ * start from every one of them (push.c held_room_split). He does not go and touch the blob: a touch visit
  * (tried) cost 14-29% more cycles on the random corner runs, and the coarse blob,
  * seen closer, splits into other nodes (a stub beside an object reads as one blob
  * from afar), so the touch often felt the object and left the wall unsettled. A
