@@ -17,10 +17,12 @@
  * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
  * (push_seat_finish), and only when no floor seen that beats it may be of that
  * room after all (roomdoubt_hidden: else he doubts it; he does not yet let go to
- * look), and only when no blob seen only coarsely, taken for wall, may part the
- * start's hall from the object's squares that reach the corner (hallsplit.h, as
- * task (i) asks of Utak: held_room_split); the survey does not yet make (i)'s looks. Seated short, with
- * another object in the way, Utak moves it out of the way first (pushclear.h). */
+ * look), and only when one of the object's squares that reach the corner lies in
+ * the start's room on his own room map and no blob seen only coarsely, taken for
+ * wall, may part the start's hall from all of them (hallsplit.h, as task (i) asks
+ * of Utak: held_room_split); the survey does not yet make (i)'s looks. Seated
+ * short, with another object in the way, Utak moves it out of the way first
+ * (pushclear.h). */
 #include "utak/mind/push.h"
 
 #include <math.h>
