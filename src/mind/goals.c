@@ -114,6 +114,27 @@ int64_t goals_room_corner_best(const Controller *c, const RoomMap *rm, int32_t r
 	return best;
 }
 
+bool goals_in_start_room(const Controller *c, const Vec2 *p, int32_t n)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj;
+	if (n <= 0 || !goals_cell_of(s, c->start, &si, &sj))
+		return false;
+	RoomMap rm;
+	goals_roommap_build(&rm, s);
+	CarryRooms cr;
+	carryroom_merge_seen(&rm, s, &cr);
+	int32_t start = carryroom_at(&cr, &rm, si, sj);
+	bool in = false;
+	for (int32_t k = 0; k < n && !in && start >= 0; k++) {
+		int32_t i, j;
+		in = goals_cell_of(s, p[k], &i, &j) && carryroom_at(&cr, &rm, i, j) == start;
+	}
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	return in;
+}
+
 /* goals_corner(c, g, dist, room): the reachable cell of `room` (merged by the
  * verdict's door rule, as in goals_room_corner_best) extreme toward the task's
  * corner (any room when room < 0). */

@@ -21,10 +21,31 @@
 
 bool hallsplit_parts(const Controller *c, Vec2 p, Vec2 *at)
 {
+	return hallsplit_parts_all(c, &p, 1, at);
+}
+
+/* hs_parted(cr, rm, s, a, p, n): whether room a (the start's, >= 0) is none of the
+ * merged rooms of the n points p; a point on no room is not parted. */
+static bool hs_parted(const CarryRooms *cr, const RoomMap *rm, const Screen *s, int32_t a, const Vec2 *p,
+		      int32_t n)
+{
+	for (int32_t i = 0; i < n; i++) {
+		int32_t pi, pj;
+		if (!goals_cell_of(s, p[i], &pi, &pj))
+			return false;
+		int32_t b = carryroom_at(cr, rm, pi, pj);
+		if (b < 0 || b == a)
+			return false;
+	}
+	return n > 0;
+}
+
+bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
+{
 	const Screen *s = &c->screen;
 	const WorldModel *m = &c->model;
-	int32_t si, sj, pi, pj;
-	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, p, &pi, &pj))
+	int32_t si, sj;
+	if (np <= 0 || !goals_cell_of(s, c->start, &si, &sj))
 		return false;
 	int64_t n = (int64_t)s->w * s->h;
 	for (int32_t k = 0; k < m->node_count; k++) {
@@ -51,10 +72,11 @@ bool hallsplit_parts(const Controller *c, Vec2 p, Vec2 *at)
 		goals_roommap_find(&rm);
 		CarryRooms cr;
 		carryroom_merge_maybe(&rm, s, &cr);
-		int32_t a = carryroom_at(&cr, &rm, si, sj), b = carryroom_at(&cr, &rm, pi, pj);
+		int32_t a = carryroom_at(&cr, &rm, si, sj);
+		bool parted = a >= 0 && hs_parted(&cr, &rm, s, a, p, np);
 		carryroom_free(&cr);
 		goals_roommap_free(&rm);
-		if (a >= 0 && b >= 0 && a != b) {
+		if (parted) {
 			*at = goals_centre(s->x0 + (int32_t)(first % s->w), s->y0 + (int32_t)(first / s->w));
 			return true;
 		}

@@ -17,8 +17,12 @@
  * only when task (i)'s rule (roomdoubt.h) tells it is of the starting room
  * (push_seat_finish), and only when no floor seen that beats it may be of that
  * room after all (roomdoubt_hidden: else he doubts it; he does not yet let go to
- * look); the survey does not yet make (i)'s looks. Seated short, with
- * another object in the way, Utak moves it out of the way first (pushclear.h). */
+ * look), and only when one of the object's squares that reach the corner lies in
+ * the start's room on his own room map and no blob seen only coarsely, taken for
+ * wall, may part the start's hall from all of them (hallsplit.h, as task (i) asks
+ * of Utak: held_room_split); the survey does not yet make (i)'s looks. Seated
+ * short, with another object in the way, Utak moves it out of the way first
+ * (pushclear.h). */
 #include "utak/mind/push.h"
 
 #include <math.h>
@@ -27,6 +31,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/hallsplit.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
@@ -356,6 +361,61 @@ static bool held_room_doubt(Controller *c)
 	return d != ROOMDOUBT_NONE;
 }
 
+/* held_reach(c, short_by, p): the held object's squares that reach the corner (score
+ * at most the slack short of the best floor seen in the start's room, short_by short
+ * of it itself: goals_corner_shortfall), as model points into p (room for
+ * held_count + 1); with none left in the held set (goals_subject_score), Utak's own
+ * square. Returns their number. */
+static int32_t held_reach(const Controller *c, int64_t short_by, Vec2 *p)
+{
+	const WorldModel *m = &c->model;
+	int32_t ux, uy, n = 0;
+	worldmodel_utak_square(m, &ux, &uy);
+	int64_t least = goals_subject_score(c) + short_by - CONTROLLER_CORNER_SLACK;
+	if (!m->holding || m->held_count == 0) {
+		p[n++] = m->utak;
+		return n;
+	}
+	for (int32_t k = 0; k < m->held_count; k++) {
+		int32_t x = ux + m->held_dx[k], y = uy + m->held_dy[k];
+		if (goals_corner_score(c->task.corner, x, y) >= least)
+			p[n++] = goals_centre(x, y);
+	}
+	return n;
+}
+
+/* held_room_split(c, short_by): whether the squares of the held object that reach
+ * the corner (held_reach) may lie outside the room Utak started in; if so the task
+ * fails with his doubt. The judge counts only the object's squares in the start's
+ * room, so two things are asked, on this cycle's screen. (1) On his own room map
+ * (goals_in_start_room: the rooms the corner is measured in), one of them lies in
+ * the start's room: WHY, the shortfall compares the object's best square with the
+ * best floor seen in that room, and an object pushed past the room's door scores
+ * beyond every floor of it (a negative shortfall), which is no corner of it. (2)
+ * No blob seen only coarsely, taken for wall, parts the start from every one of
+ * them, by task (i)'s rule (hallsplit.h): WHY, a free-standing stub read as an
+ * object is space to his rooms and the wall that parts the hall to the judge's. */
+static bool held_room_split(Controller *c, int64_t short_by)
+{
+	Vec2 *p = util_alloc((size_t)c->model.held_count + 1, sizeof *p), at;
+	int32_t n = held_reach(c, short_by, p);
+	bool beyond = !goals_in_start_room(c, p, n);
+	bool parted = !beyond && hallsplit_parts_all(c, p, n, &at);
+	free(p);
+	if (beyond) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: none of its squares that reach it lies in the room he started in, by his model",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner));
+	} else if (parted) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: a blob seen only coarsely, at (%.1f, %.1f), may be a wall that parts it from the room he started in",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
+	}
+	return beyond || parted;
+}
+
 /* push_held_is_task_shape(c): what Utak holds is the task's shape: his held squares
  * read as it, or they read as it when he grasped and now lie within the box they
  * had then (shifted with them: wm_register_held) and one square beyond, its sides
@@ -408,7 +468,7 @@ void push_seat_finish(Controller *c)
 		snprintf(c->why, sizeof c->why,
 			 "Utak cannot tell the %s he pushed the %s into is of the room he started in: a wall between may be seen only coarsely",
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
-	} else if (goals_corner_hidden(c)) {
+	} else if (goals_corner_hidden(c) || held_room_split(c, short_by)) {
 		/* failed, with his doubt */
 	} else if (c->doubt[0]) {
 		c->phase = PHASE_FAILED;

@@ -67,6 +67,11 @@ int64_t goals_subject_score(const Controller *c);
 /* goals_held_score(c, x, y): the best corner score of the held object's squares with
  * Utak on square (x, y); INT64_MIN when he holds no square. */
 int64_t goals_held_score(const Controller *c, int32_t x, int32_t y);
+/* goals_in_start_room(c, p, n): whether one of the n model points p lies in the room
+ * Utak started in on c->screen's room map, merged as goals_room_corner_best merges
+ * it (carryroom_merge_seen): the room his corner is measured in. Task (v): the
+ * judge counts only the object's squares in that room (push.c). */
+bool goals_in_start_room(const Controller *c, const Vec2 *p, int32_t n);
 /* goals_corner_hidden(c): at a corner Utak would claim, floor seen that beats the
  * subject may be of the start's room (roomdoubt_hidden): true, the task failed
  * with his doubt; false, nothing changed. */
