@@ -628,14 +628,6 @@ static void thinner_sort(int32_t *a, int32_t n, int32_t *tmp)
 	memcpy(a, from, (size_t)n * sizeof *a);
 }
 
-/* thinner_load8(p): the 8 bytes at p, in the machine's byte order. */
-static inline uint64_t thinner_load8(const uint8_t *p)
-{
-	uint64_t v;
-	memcpy(&v, p, sizeof v);
-	return v;
-}
-
 /* thinner_walk(t, end, remove, nremove, longest, pending): walks from the end point end
  * to a junction; when the branch is a spur (see the header comment), or may be one,
  * its cells are added to remove[0 .. nremove); returns the new count. The next cell is
