@@ -633,18 +633,24 @@ bool probe_decide(Controller *c, MotorCommand *cmd)
 	case PROBE_FINISH:
 		break;
 	}
-	p->stage = PROBE_IDLE; /* judged on the release's impression (probe_perceive) */
-	if (p->verdict == PROBE_INCONSISTENT) {
-		if (p->disproved_count < PROBE_DISPROVED) {
-			p->disproved_ident[p->disproved_count] = p->ident;
-			p->disproved_at[p->disproved_count++] = p->at;
-		}
+	if (probe_end(c) == PROBE_INCONSISTENT) {
 		c->target = 0; /* not the square: the task goes on without it */
 		c->have_plan = false;
 	} else {
 		c->phase = PHASE_DONE;
 	}
 	return false;
+}
+
+ProbeVerdict probe_end(Controller *c)
+{
+	ProbeRun *p = &c->probe;
+	p->stage = PROBE_IDLE; /* judged on the release's impression (probe_perceive) */
+	if (p->verdict == PROBE_INCONSISTENT && p->disproved_count < PROBE_DISPROVED) {
+		p->disproved_ident[p->disproved_count] = p->ident;
+		p->disproved_at[p->disproved_count++] = p->at;
+	}
+	return p->verdict;
 }
 
 /* count_of(level, total): how many of a cell's `total` squares are occupied, from

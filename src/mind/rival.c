@@ -364,10 +364,9 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 		/* The object he would claim, probed first: disproved, it is dropped
 		 * (probe_decide: the task goes on without it); else the claim waits
 		 * on the rival (arrive asks again). Not claimed here either way. */
-		ControllerPhase phase = c->phase;
-		ProbeVerdict verdict = c->probe.verdict;
-		probe_decide(c, cmd);
-		c->phase = phase;
+		ProbeVerdict verdict = probe_end(c);
+		if (verdict == PROBE_INCONSISTENT)
+			c->target = 0; /* not the square: the task goes on without it */
 		c->have_plan = false;
 		c->rival.stage = RIVAL_IDLE;
 		if (verdict == PROBE_INCONSISTENT)
@@ -390,17 +389,11 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 		}
 		return false;
 	}
-	/* The probe's end (probe_decide) claims the task's object or drops it; here
-	 * the object probed is the rival: what it records (a disproved object) is
-	 * kept, and the task's object and phase are left as they were. */
-	int32_t target = c->target;
-	Vec2 target_at = c->target_at;
-	ControllerPhase phase = c->phase;
-	ProbeVerdict verdict = c->probe.verdict;
-	probe_decide(c, cmd);
-	c->target = target;
-	c->target_at = target_at;
-	c->phase = phase;
+	/* The object probed is the rival: what the probe records (a disproved
+	 * object) is kept, and the task's object and phase are left as they are. */
+	ProbeVerdict verdict = probe_end(c);
+	if (verdict == PROBE_INCONSISTENT)
+		c->have_plan = false;
 	rival_end(c, verdict == PROBE_INCONSISTENT
 	                 ? "probed, its squares fit no square: it is no square, the doubt is gone"
 	                 : "probed, its squares may be a square's: the doubt stands");

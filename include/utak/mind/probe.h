@@ -233,6 +233,11 @@ bool probe_begin_object(struct Controller *c, int32_t k);
  * or when it has just ended (the claim made, c->phase DONE, or the object
  * dropped and the plan to be made again). */
 bool probe_decide(struct Controller *c, MotorCommand *cmd);
+/* probe_end(c): a probe whose release was perceived (stage PROBE_FINISH) ended: a
+ * disproved object recorded (probe_disproved), the verdict returned, and nothing
+ * claimed or dropped: probe_decide does that for the task's own claim, rival.h
+ * for a rival or for an object probed before one. */
+ProbeVerdict probe_end(struct Controller *c);
 /* probe_perceive(c, cmd, note, size): after each command of a probe: the look
  * after a push to a corner kept; what was done, for the cycle's note. False when
  * no probe is under way. */
