@@ -284,7 +284,10 @@ enum {
 	SKELETON_KEPT = 2,    /* visited, and still in the set (kept, or not yet deleted
 	                       * by a cascade): the cells a deletion tries again */
 	SKELETON_STACKED = 4, /* on the re-try stack */
-	SKELETON_RECHECK = 8  /* next to a pruned cell: to test again after pruning */
+	SKELETON_RECHECK = 8, /* next to a pruned cell: to test again after pruning */
+	SKELETON_QUEUED = 16  /* a planed level's cell marked kept before its turn, on the
+	                       * heap of such cells to visit at their turn
+	                       * (thinner_visit_level) */
 };
 
 /* The thinning works on a copy of the grid padded by one background cell on every
@@ -320,6 +323,14 @@ typedef struct Thinner {
 	int32_t doff[8];      /* unpadded index offsets of the 8 neighbours (in dist2) */
 	uint64_t row_mul;     /* pi / pw as (pi * row_mul) >> row_shift (thinner_row) */
 	unsigned row_shift;
+	int32_t pos;   /* the cell a planed level's visit is at (thinner_visit_level);
+	                * INT32_MAX at any other time */
+	int32_t level; /* that level's dist2 */
+	int32_t *heap; /* its cells marked kept early, to visit at their turn: a
+	                * binary min-heap */
+	int32_t nheap;
+	SkelLevel *track; /* while the planed levels are visited: the planes whose set
+	                   * each deletion updates (skellevel_next reads it) */
 } Thinner;
 
 /* thinner_row(t, pi): pi / pw, the padded row, with no division (Granlund and
@@ -437,17 +448,67 @@ static inline bool thinner_deletable(const Thinner *t, int32_t pi)
 	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, t->ring[r]));
 }
 
+/* thinner_heap_push(t, pi), thinner_heap_pop(t): Thinner.heap (a binary min-heap of
+ * padded indices). */
+static void thinner_heap_push(Thinner *t, int32_t pi)
+{
+	int32_t i = t->nheap++;
+	while (i > 0 && t->heap[(i - 1) / 2] > pi) {
+		t->heap[i] = t->heap[(i - 1) / 2];
+		i = (i - 1) / 2;
+	}
+	t->heap[i] = pi;
+}
+static int32_t thinner_heap_pop(Thinner *t)
+{
+	const int32_t top = t->heap[0], last = t->heap[--t->nheap];
+	int32_t i = 0;
+	for (;;) {
+		int32_t c = 2 * i + 1;
+		if (c >= t->nheap)
+			break;
+		if (c + 1 < t->nheap && t->heap[c + 1] < t->heap[c])
+			c++;
+		if (t->heap[c] >= last)
+			break;
+		t->heap[i] = t->heap[c];
+		i = c;
+	}
+	t->heap[i] = last;
+	return top;
+}
+
 /* thinner_push_again(t, pi): stacks pi's neighbours that are in the set and visited
- * (to be tried again now that pi is gone) and not stacked already. */
+ * (to be tried again now that pi is gone) and not stacked already. While a planed
+ * level is visited (thinner_visit_level), a neighbour marked kept that is of that level
+ * and past the visit's place was marked so before its turn, and is not visited yet: it
+ * goes on the heap instead, to be visited at its turn, as its neighbourhood is no
+ * longer what it was when it was found not deletable. */
 static inline void thinner_push_again(Thinner *t, int32_t pi)
 {
 	for (int i = 0; i < 8; i++) {
 		int32_t qi = pi + t->off[i];
 		uint8_t st = t->state[qi];
 		if ((st & (SKELETON_KEPT | SKELETON_STACKED)) == SKELETON_KEPT) {
+			if (qi > t->pos && t->dist2[thinner_unpadded(t, qi)] == t->level) {
+				if (!(st & SKELETON_QUEUED)) {
+					t->state[qi] = st | SKELETON_QUEUED;
+					thinner_heap_push(t, qi);
+				}
+				continue;
+			}
 			t->state[qi] = st | SKELETON_STACKED;
 			t->stack[t->top++] = qi;
 		}
+	}
+}
+
+/* thinner_untrack(t, pi): pi, just deleted, out of the tracked set (Thinner.track). */
+static inline void thinner_untrack(Thinner *t, int32_t pi)
+{
+	if (t->track) {
+		const int32_t r = thinner_row(t, pi);
+		skellevel_delete(t->track, r, pi - r * t->pw);
 	}
 }
 
@@ -457,6 +518,7 @@ static inline void thinner_push_again(Thinner *t, int32_t pi)
 static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 {
 	t->state[pi] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
+	thinner_untrack(t, pi);
 	t->top = top;
 	for (;;) {
 		thinner_push_again(t, pi);
@@ -470,6 +532,7 @@ static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 				break;
 		}
 		t->state[pi] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
+		thinner_untrack(t, pi);
 	}
 }
 
@@ -574,6 +637,50 @@ static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
 		thinner_visits(t, order, nfree, true);
 	else
 		thinner_visits(t, order, nfree, false);
+}
+
+/* thinner_visit_level(t, list, n, level): the visits of a planed level, dist2 level
+ * (skellevel.c's NEXT LEVELS), the same as visits of all its cells in index order.
+ * When the level starts, skellevel_next has marked its cells not deletable then as
+ * visited and kept (SKELETON_KEPT), and listed the others in list[0 .. n), in index
+ * order. A cell so marked, visited at its turn, would be kept, unless a neighbour was
+ * deleted since the level started: the deletion puts it on the heap
+ * (thinner_push_again), to be visited at its turn, merged with the list; one before
+ * the visit's place is one visited and kept, and a deletion next to it tries it again,
+ * as any. */
+static void thinner_visit_level(Thinner *t, const int32_t *list, int32_t n, int32_t level)
+{
+	int32_t i = 0;
+	t->nheap = 0;
+	t->level = level;
+	for (;;) {
+		int32_t pi;
+		if (t->nheap > 0 && (i == n || t->heap[0] < list[i]))
+			pi = thinner_heap_pop(t);
+		else if (i < n)
+			pi = list[i++];
+		else
+			break;
+		t->pos = pi;
+		/* as thinner_visits, but the bytes may hold SKELETON_QUEUED: masked */
+		const uint8_t *p = t->state + pi;
+		const uint64_t rows =
+		    (uint64_t)thinner_load4(p + t->pw - 1) << 32 | thinner_load4(p - t->pw - 1);
+		const unsigned r = (unsigned)((((rows & THIN_ONES) * 0x0102040810204080u) >> 56) |
+		                              (unsigned)(p[-1] & SKELETON_IN) << 8 |
+		                              (unsigned)(p[1] & SKELETON_IN) << 10);
+		const uint8_t kd = t->kind[r];
+		if (kd == THIN_KEEP || (kd == THIN_RIDGE && thinner_ridge_end(t, pi, t->ring[r]))) {
+			t->state[pi] = SKELETON_IN | SKELETON_KEPT;
+			continue;
+		}
+		t->state[pi] = 0;
+		thinner_untrack(t, pi);
+		if (((rows & (THIN_ONES * SKELETON_KEPT)) | ((p[-1] | p[1]) & SKELETON_KEPT)) != 0)
+			thinner_retry(t, pi);
+	}
+	t->pos = INT32_MAX;
+	t->level = 0;
 }
 
 /* ---------------------------------------------------------------- pruning */
@@ -835,7 +942,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	const int32_t maxd = skeleton_edt_scratch(g, s->dist2, (uint16_t *)(void *)wk->stack);
 	assert((size_t)maxd + 2 <= wk->start_cap);
 
-	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
+	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2, .pos = INT32_MAX};
 	t.state = wk->state;
 	t.stack = wk->stack;
 	t.ends = wk->ends;
@@ -853,22 +960,51 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	 * a list of the higher cells where they are at most SKELETON_LISTED of the grid,
 	 * else by a sort of the whole grid (the same order either way). */
 	SkelLevel *lv = &wk->level;
-	skellevel_thin(lv, g);
+	skellevel_thin(lv, g, (int32_t)(SKELETON_LISTED * (double)n));
 	skellevel_state(lv, t.state, SKELETON_IN);
 	memset(t.state + pn, 0, 3);
-	int32_t *visit = order;
 	int32_t nrest;
 	if ((double)lv->nhigh <= SKELETON_LISTED * (double)n) {
+		/* the rest of the lowest level; then each of the levels 2, 4 and 5, from its
+		 * plane where it is planed (the set synced with the state first when visits
+		 * since the planes were made may have deleted cells; the planed visits keep
+		 * it in step), else from the list; then the listed higher levels
+		 * (skellevel.c's NEXT LEVELS). A planed level's list of cells and its heap
+		 * in order past the listed cells: they are at most that level's cells */
 		nrest = skellevel_rest(lv, order);
-		skelsort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack);
+		int32_t upto[SKELLEVEL_PLANED];
+		const int32_t nlisted =
+		    skelsort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack, upto);
+		int32_t *scratch = order + nrest + nlisted;
+		int32_t done = nrest;
+		bool synced = nrest == 0; /* else the set is as the state was made from it */
+		thinner_visit_all(&t, order, nrest);
+		for (int j = 0; j < SKELLEVEL_PLANED; j++) {
+			if (!lv->planed[j]) {
+				thinner_visit_all(&t, order + done, upto[j] - done);
+				synced = synced && upto[j] == done;
+				done = upto[j];
+				continue;
+			}
+			if (!synced)
+				skellevel_sync(lv, t.state);
+			synced = true;
+			t.track = lv;
+			const int32_t nd =
+			    skellevel_next(lv, j, t.state, SKELETON_KEPT, t.ends, scratch);
+			t.heap = scratch + nd;
+			thinner_visit_level(&t, scratch, nd, skellevel_dist2[j]);
+			t.track = NULL;
+		}
+		thinner_visit_all(&t, order + done, nrest + nlisted - done);
 	} else {
 		skelsort_rows(s->dist2, w, h, t.pw, start, order, maxd);
 		const int32_t nblocked = (int32_t)n - lv->nlow - lv->nhigh;
 		nrest = skellevel_count_rest(lv);
-		visit = order + nblocked + lv->nlow - nrest;
+		int32_t *visit = order + nblocked + lv->nlow - nrest;
 		skellevel_rest(lv, visit);
+		thinner_visit_all(&t, visit, nrest + lv->nhigh);
 	}
-	thinner_visit_all(&t, visit, nrest + lv->nhigh);
 	s->pruned = thinner_prune(&t, order, maxd);
 
 	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */
