@@ -369,23 +369,30 @@ int32_t skellevel_count_rest(const SkelLevel *lv)
 	return count;
 }
 
-/* skellevel_list(lv, dist2, out, small, big, r, k, m, count, planed): the cells m of
- * padded row r, word k, listed and counted (skellevel_high); returns the new count.
- * planed: some level is planed (checked: none of its cells is listed). */
+/* skellevel_list(lv, dist2, out, small, big, r, k, m, count, l2, l4, l5): the cells m
+ * of padded row r, word k, listed and counted (skellevel_high); returns the new count.
+ * l2, l4, l5: the cells of m known to be of dist2 2, 4, 5 (the levels' planes, made but
+ * not planed; zero where none was made): their dist2 is not loaded (at 4096 a side
+ * each load of a sparse level's cell missed the cache). */
 static inline int32_t skellevel_list(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
                                      SkelLevelCount small, int32_t *big, int32_t r, int32_t k,
-                                     uint64_t m, int32_t count, bool planed)
+                                     uint64_t m, int32_t count, uint64_t l2, uint64_t l4,
+                                     uint64_t l5)
 {
 	const int32_t w = lv->w, pw = w + 2;
 	/* padded column x of row r is the grid's cell x - 1 of row r - 1 */
 	const int32_t *d2 = dist2 + (size_t)(r - 1) * (size_t)w - 1;
 	for (; m != 0; m &= m - 1) {
-		const int32_t x = 64 * k + skellevel_lowest(m), d = d2[x];
-		/* the planes are dist2's levels */
-		assert(!planed || d > SKELLEVEL_PLANED_MAX || d == 3 ||
-		       !lv->planed[d == 2   ? 0
-		                   : d == 4 ? 1
-		                            : 2]);
+		const uint64_t bit = m & (0 - m);
+		const int32_t x = 64 * k + skellevel_lowest(m);
+		int32_t d;
+		if (bit & (l2 | l4 | l5)) {
+			d = bit & l2 ? 2 : bit & l4 ? 4 : 5;
+		} else {
+			d = d2[x];
+			/* the planes are dist2's levels */
+			assert(d > SKELLEVEL_PLANED_MAX || d == 3 || (l2 | l4 | l5) == 0);
+		}
 		out[2 * count] = r * pw + x;
 		out[2 * count + 1] = d;
 		if (d < SKELLEVEL_SMALL)
@@ -402,7 +409,7 @@ int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
 {
 	/* the higher cells are never deleted here: they are the set's cells not low; those
 	 * of the planed levels are not listed (two loops, so that a grid with none planed
-	 * pays nothing for them) */
+	 * pays nothing for them; where one is, every level's plane was made) */
 	const bool any = lv->planed[0] || lv->planed[1] || lv->planed[2];
 	int32_t count = 0;
 	for (int32_t r = 1; r <= lv->h; r++) {
@@ -410,7 +417,7 @@ int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
 		if (!any) {
 			for (int32_t k = 0; k < lv->words; k++)
 				count = skellevel_list(lv, dist2, out, small, big, r, k,
-				                       c[k] & ~lo[k], count, false);
+				                       c[k] & ~lo[k], count, 0, 0, 0);
 			continue;
 		}
 		const uint64_t *l2 = skellevel_row(lv, lv->lev[0], r),
@@ -422,7 +429,8 @@ int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
 		for (int32_t k = 0; k < lv->words; k++) {
 			const uint64_t planed = (l2[k] & m2) | (l4[k] & m4) | (l5[k] & m5);
 			count = skellevel_list(lv, dist2, out, small, big, r, k,
-			                       c[k] & ~(lo[k] | planed), count, true);
+			                       c[k] & ~(lo[k] | planed), count, l2[k] & ~m2,
+			                       l4[k] & ~m4, l5[k] & ~m5);
 		}
 	}
 	return count;
