@@ -196,13 +196,19 @@
  *    3.1 ms. At 4096 (the same copy, loaded): transform 19, planes 9.6, listing and
  *    sort 7.1 -> 3.1 (no dist2 loads), the planed levels 6.7 and 4.0, pruning 19.5
  *    (scan and walks 6.0, removal and marking 5.2, the sort 2.9 now gone, the tests
- *    4.0). ns a cell on the maze (skelbench, best of 3, loaded): 3.9 at 256, 3.8 at
- *    512, 4.5 at 1024, 5.1 at 2048, 5.7 at 4096: linear up to 1024 (the state, 1 MB,
- *    in the core's L2), 1.3 times that at 4096 where dist2 (64 MB) and the state
- *    (17 MB) outgrow the 32 MB L3, the pruning and the planed levels' visits waiting
- *    on memory. Against scikit-image in one run (/tmp script, skeletonize's median
- *    of 3 against utak's medians of 5, the machine loaded): SKIMAGE_FIGURES. Not kept:
- *    planing level 5 too on the 1024 maze (its pass costs what its listing saves).
+ *    4.0). ns a cell on the maze (skelbench, best of 3, loaded, before the pruning's
+ *    changes): 3.9 at 256, 3.8 at 512, 4.5 at 1024, 5.1 at 2048, 5.7 at 4096: linear
+ *    up to 1024 (the state, 1 MB, in the core's L2), 1.3 times that at 4096 where
+ *    dist2 (64 MB) and the state (17 MB) outgrow the 32 MB L3, the pruning and the
+ *    planed levels' visits waiting on memory. Against scikit-image in one run (/tmp script, skeletonize's median
+ *    of 3 against utak's medians of 5, the machine loaded, the code before beside it):
+ *    maze 1024 4.66 -> 6.33 (skeletonize 22.8 ms, utak 4.88 -> 3.60), maze 4096 4.05
+ *    -> 5.44 (394 ms, utak 97.4 -> 72.5); two runs of make bench-compare SIDE=1024
+ *    (loaded): the maze 4.94 and 5.52 (skeleton 3.77 and 3.79 ms, skeletonize 18.6
+ *    and 20.9), rooms 8.85 and 9.84, rects 9.89 and 12.5, Boston_0_1024 20.1 and
+ *    27.6, den520d 18.2 and 24.8: the maze's 5 reached, with no margin on this
+ *    shared machine. Not kept: planing level 5 too on the 1024 maze (its pass costs
+ *    what its listing saves).
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
