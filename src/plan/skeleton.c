@@ -11,7 +11,13 @@
  *    lowest level, dist2 1, is first thinned by bit planes in parallel subfields
  *    (skellevel.c: each of its deletions is one a visit would make, the order within
  *    the level being the algorithm's free choice), and its cells left are then
- *    visited in index order before the next level. A visited cell is
+ *    visited in index order before the next level. The next three levels, dist2 2, 4
+ *    and 5, are each started by bit planes where they are dense (skellevel.c's NEXT
+ *    LEVELS): the level's cells not deletable when it starts are marked visited and
+ *    kept at once, the others visited one by one, and a marked cell whose neighbour
+ *    is deleted before its turn is visited at its turn (thinner_visit_level): the
+ *    same thinning, cell for cell, as visiting the level in index order. A visited
+ *    cell is
  *    deleted when it is simple (deleting it changes neither the 4-components of the
  *    set nor the 8-components of its complement: a 256-entry table over the 8
  *    neighbours, built from the definition of Bertrand's topological numbers
@@ -26,14 +32,14 @@
  *    Only the cells found ridge ends are marked (a bit plane): a cell of degree 1
  *    when the visits are over is simple, so it was last kept as a ridge end; the
  *    pruning takes its end points from the mark.
- * 3. Pruning: a small bay in a wall can still leave a branch whose tip is a ridge end,
- *    a spur. Every branch from an end point to a junction cell (degree >= 3) is
- *    removed when it has at most SKELETON_SPUR_FACTOR * clearance(junction) +
- *    SKELETON_SPUR_SLACK cells (see skeleton.h); branches are judged all at once on
- *    the thinned set, one round, and a branch joining two end points (a component
- *    that is a simple arc) is never removed. Removing a branch that hangs off a
- *    junction changes no topology. Then step 2's deletion test runs again over the
- *    skeleton, because a junction that lost a branch may now be deletable.
+ * 3. Pruning (skelprune.c, on the Thinner of skelthin.h): a small bay in a wall can
+ *    still leave a branch whose tip is a ridge end, a spur. Every branch from an end point to a
+ * junction cell (degree >= 3) is removed when it has at most SKELETON_SPUR_FACTOR *
+ * clearance(junction) + SKELETON_SPUR_SLACK cells (see skeleton.h); branches are judged all at once
+ * on the thinned set, one round, and a branch joining two end points (a component that is a simple
+ * arc) is never removed. Removing a branch that hangs off a junction changes no topology. Then step
+ * 2's deletion test runs again over the skeleton, because a junction that lost a branch may now be
+ * deletable.
  *
  * INVARIANTS (tested in tests/unit/test_skeleton.c against flood-fill oracles)
  *    skeleton cells are free; the skeleton has as many 4-components as the free
@@ -47,8 +53,10 @@
  *    histogram (4 bytes per possible dist2 value: about (shorter side / 2)^2, a
  *    quarter of the cells), and the histogram's split tables (8.7 KB, on the stack);
  *    the lowest level's four bit planes (skellevel.c, half a byte a cell) and the
- *    ridge ends' plane (an eighth of a byte a cell). The higher levels' list (two
- *    values a cell, when they are at most half the grid) is kept in the stack.
+ *    ridge ends' plane (an eighth of a byte a cell); the next levels' four planes
+ *    (half a byte a cell) and the pruning's plane of cells to test again (an eighth).
+ *    The higher levels' list (two values a cell, when they are at most half the grid)
+ *    is kept in the stack.
  *    The transform alone (skeleton_edt) keeps its column distances in dist2's first
  *    half; its other scratch is a few arrays of one row.
  *
@@ -170,12 +178,44 @@
  *    counting the listed cells by runs of one value instead of in split tables, 2
  *    million instructions fewer on the 1024 maze but the list 0.59 -> 0.80 ms (the
  *    run's branch mispredicted where keys alternate).
+ *    A seventh round, on the maze (skel9): the levels 2, 4 and 5 from planes where
+ *    dense (ALGORITHM, step 2; skellevel.c's NEXT LEVELS), the pruning's cells to
+ *    test again in a bit plane read in order instead of a list and a radix sort, its
+ *    state fetched ahead above 8 MB, and a listed cell of a made plane's level listed
+ *    without a load of dist2. The skeleton is the same cell for cell (the five 1024
+ *    grids, the three 4096 synthetic grids and 300 random grids, hashes of the old
+ *    and new library; no golden output changed). Callgrind, one warm skeleton_compute
+ *    with its transform, 1024 grids: maze 49.9 -> 39.5 million instructions (47.6 ->
+ *    37.7 a cell), rooms 99.2 -> 99.7, rects 87.1 -> 87.4, Boston_0_1024 87.5 -> 87.7,
+ *    den520d 61.0 -> 61.4 (the re-try's place test, and the next levels' planes
+ *    where the lowest level is dense). By phase on the 1024 maze (an instrumented
+ *    copy, best of 31, loaded): transform 1.01 ms, lowest level and next levels'
+ *    planes 0.57, state 0.08, listing and sort (level 5 alone) 0.18, the planed
+ *    levels' passes 0.40 and their visits 0.21 (level 2's 45 734 cells, all
+ *    deletable; level 4's 255 247 all kept, none visited), pruning 0.48, output 0.08:
+ *    3.1 ms. At 4096 (the same copy, loaded): transform 19, planes 9.6, listing and
+ *    sort 7.1 -> 3.1 (no dist2 loads), the planed levels 6.7 and 4.0, pruning 19.5
+ *    (scan and walks 6.0, removal and marking 5.2, the sort 2.9 now gone, the tests
+ *    4.0). ns a cell on the maze (skelbench, best of 3, loaded, before the pruning's
+ *    changes): 3.9 at 256, 3.8 at 512, 4.5 at 1024, 5.1 at 2048, 5.7 at 4096: linear
+ *    up to 1024 (the state, 1 MB, in the core's L2), 1.3 times that at 4096 where
+ *    dist2 (64 MB) and the state (17 MB) outgrow the 32 MB L3, the pruning and the
+ *    planed levels' visits waiting on memory. Against scikit-image in one run (/tmp script, skeletonize's median
+ *    of 3 against utak's medians of 5, the machine loaded, the code before beside it):
+ *    maze 1024 4.66 -> 6.33 (skeletonize 22.8 ms, utak 4.88 -> 3.60), maze 4096 4.05
+ *    -> 5.44 (394 ms, utak 97.4 -> 72.5); two runs of make bench-compare SIDE=1024
+ *    (loaded): the maze 4.94 and 5.52 (skeleton 3.77 and 3.79 ms, skeletonize 18.6
+ *    and 20.9), rooms 8.85 and 9.84, rects 9.89 and 12.5, Boston_0_1024 20.1 and
+ *    27.6, den520d 18.2 and 24.8: the maze's 5 reached, with no margin on this
+ *    shared machine. Not kept: planing level 5 too on the 1024 maze (its pass costs
+ *    what its listing saves).
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
 #include "edt_work.h"
-#include "skelsort.h"
 #include "skellevel.h"
+#include "skelsort.h"
+#include "skelthin.h"
 
 #include <assert.h>
 #include <math.h>
@@ -248,13 +288,6 @@ static bool skeleton_is_simple_mask(unsigned m)
 	return t4 == 1 && t8bar == 1;
 }
 
-/* What one deletion test needs from the 8-neighbourhood mask (one table load). */
-enum {
-	THIN_KEEP = 0,   /* not simple: deleting would change the topology */
-	THIN_DELETE = 1, /* simple, and not one edge neighbour: deletable */
-	THIN_RIDGE = 2   /* simple with exactly one edge neighbour: a ridge end or not */
-};
-
 /* skeleton_yokoi(m): Yokoi's connectivity number of the neighbourhood m for a
  * 4-connected set, the sum over the edge neighbours k of x_k (1 - x_{k+1} x_{k+2});
  * it is 1 exactly for the simple points (skellevel.c's test on bit planes relies on it,
@@ -278,95 +311,6 @@ static void skeleton_build_kind_table(uint8_t kind[256])
 }
 
 /* ---------------------------------------------------------------- thinning */
-
-enum {
-	SKELETON_IN = 1,      /* still in the set */
-	SKELETON_KEPT = 2,    /* visited, and still in the set (kept, or not yet deleted
-	                       * by a cascade): the cells a deletion tries again */
-	SKELETON_STACKED = 4, /* on the re-try stack */
-	SKELETON_RECHECK = 8  /* next to a pruned cell: to test again after pruning */
-};
-
-/* The thinning works on a copy of the grid padded by one background cell on every
- * side, so that a neighbourhood never needs a bounds check (and 3 bytes more at the
- * end, for the last row's 4-byte loads; see thinner_raster).
- *
- * A neighbourhood is read as its "raster mask" of THIN_RASTER bits: the rows below and
- * above as a 4-byte load each, gathered to 8 bits by one multiplication (thinner_rows;
- * the fourth cell of each, two east, is not a neighbour and the tables ignore it),
- * then the west and east cells' state, 2 bits each (only bit 0, SKELETON_IN, counts,
- * so the visits take the bytes as they are: SKELETON_IN and SKELETON_KEPT, below 4).
- * The middle row is read by bytes since the visit before this one usually stored the
- * west cell: a 4-byte load over a byte just stored waits for the store to reach the
- * cache (no store forwarding), and that stall was a third of the visits' time (perf
- * annotate). Which bit is which cell depends on the byte order, so the tables over
- * the mask are built by running thinner_raster itself on probes
- * (thinner_init_tables). */
-#define THIN_RASTER 12
-
-typedef struct Thinner {
-	int32_t w, h, pw; /* grid size, padded width w + 2 */
-	uint8_t *state;   /* (w + 2) * (h + 2) + 3 SKELETON_* bits */
-	int32_t off[8];   /* padded index offsets of the 8 neighbours */
-	int32_t *stack;   /* padded indices to try again */
-	int32_t top;
-	uint64_t *ends;   /* bit pi: pi was found a ridge end (thinner_ridge_end), at least
-	                   * once: the only cells that can be end points when the visits
-	                   * are over (thinner_prune) */
-	int32_t ends_words;
-	const int32_t *dist2;             /* w * h, unpadded */
-	uint8_t kind[1u << THIN_RASTER];  /* THIN_* of each raster mask */
-	uint8_t ring[1u << THIN_RASTER];  /* the neighbourhood mask (bit i: neighbour i) */
-	int32_t doff[8];      /* unpadded index offsets of the 8 neighbours (in dist2) */
-	uint64_t row_mul;     /* pi / pw as (pi * row_mul) >> row_shift (thinner_row) */
-	unsigned row_shift;
-} Thinner;
-
-/* thinner_row(t, pi): pi / pw, the padded row, with no division (Granlund and
- * Montgomery, "Division by invariant integers using multiplication", PLDI 1994): with
- * l = ceil(log2 pw) and row_mul = ceil(2^(31 + l) / pw), the product's top bits are
- * the quotient for every pi < 2^31, and pi < (30002)^2 < 2^31; the product < 2^63. */
-static inline int32_t thinner_row(const Thinner *t, int32_t pi)
-{
-	return (int32_t)(((uint64_t)pi * t->row_mul) >> t->row_shift);
-}
-
-/* thinner_unpadded(t, pi): the index in dist2 of the padded index pi: with pi =
- * (y + 1) pw + x + 1, that is y w + x = pi - pw - 1 - 2 y. */
-static inline int32_t thinner_unpadded(const Thinner *t, int32_t pi)
-{
-	return pi - t->pw - 1 - 2 * (thinner_row(t, pi) - 1);
-}
-
-/* thinner_load4(p): the 4 bytes at p, in the machine's byte order. */
-static inline uint32_t thinner_load4(const uint8_t *p)
-{
-	uint32_t v;
-	memcpy(&v, p, sizeof v);
-	return v;
-}
-
-/* THIN_ONES: a byte of 1 in each lane of a 64-bit word; THIN_LOW7: 0x7f in each. */
-#define THIN_ONES 0x0101010101010101u
-#define THIN_LOW7 0x7f7f7f7f7f7f7f7fu
-
-/* thinner_rows(below, above): bit 0 of each byte of the two 4-byte loads, as 8 bits.
- * The bits sit at 8 i in a 64-bit word; times 0x0102040810204080 (the terms 2^(7 j + 7))
- * puts bit 8 i at 56 + i when i + j = 7, and no two of the 64 terms fall on one bit
- * (8 i + 7 j is unique for i, j < 8), so there is no carry. */
-static inline unsigned thinner_rows(uint32_t below, uint32_t above)
-{
-	const uint64_t v = ((uint64_t)above << 32 | below) & THIN_ONES;
-	return (unsigned)((v * 0x0102040810204080u) >> 56);
-}
-
-/* thinner_raster(st, pi, pw): the raster mask of pi's neighbours in the set (see the
- * Thinner). */
-static inline unsigned thinner_raster(const uint8_t *st, int32_t pi, int32_t pw)
-{
-	return thinner_rows(thinner_load4(st + pi - pw - 1), thinner_load4(st + pi + pw - 1)) |
-	       (unsigned)(st[pi - 1] & SKELETON_IN) << 8 | (unsigned)(st[pi + 1] & SKELETON_IN) << 10;
-}
 
 /* thinner_divisor(d, mul, shift): the constants of thinner_row for the divisor d. */
 static void thinner_divisor(int32_t d, uint64_t *mul, unsigned *shift)
@@ -402,52 +346,67 @@ static void thinner_init_tables(Thinner *t)
 	}
 }
 
-/* thinner_lowest_bit(m): the index of m's lowest set bit, m a nonzero byte. */
-static inline int thinner_lowest_bit(unsigned m)
+/* thinner_heap_push(t, pi), thinner_heap_pop(t): Thinner.heap (a binary min-heap of
+ * padded indices). */
+static void thinner_heap_push(Thinner *t, int32_t pi)
 {
-	static const int8_t lowest[16] = {-1, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
-	return (m & 15u) ? lowest[m & 15u] : 4 + lowest[(m >> 4) & 15u];
+	int32_t i = t->nheap++;
+	while (i > 0 && t->heap[(i - 1) / 2] > pi) {
+		t->heap[i] = t->heap[(i - 1) / 2];
+		i = (i - 1) / 2;
+	}
+	t->heap[i] = pi;
 }
-
-/* thinner_ridge_end(t, pi, m): pi, simple with one edge neighbour (neighbourhood
- * mask m), is a ridge end. A ridge end has exactly one 4-neighbour in the set and no
- * 8-neighbour in the set farther from the obstacles: it is the tip of a branch of the
- * medial axis (the distance map has a local maximum there along the branch). Without
- * the second condition every cell of the grassfire front that happens to lose its side
- * neighbours first would be kept as an end, and grow a spur; with it, a branch whose
- * distance rises from its tip (toward a convex corner of the space) burns back to its
- * junction, as Blum's branches into corners carry no choice of route. The padded row
- * comes by a multiplication and a shift (thinner_row), the neighbours as offsets. */
-static bool thinner_ridge_end(const Thinner *t, int32_t pi, unsigned m)
+static int32_t thinner_heap_pop(Thinner *t)
 {
-	const int32_t *d2 = t->dist2 + thinner_unpadded(t, pi);
-	const int32_t d = d2[0];
-	for (; m != 0; m &= m - 1)
-		if (d2[t->doff[thinner_lowest_bit(m)]] > d)
-			return false;
-	t->ends[pi >> 6] |= (uint64_t)1 << (pi & 63); /* see Thinner.ends */
-	return true;
-}
-
-/* thinner_deletable(t, pi): pi is simple and not a ridge end. */
-static inline bool thinner_deletable(const Thinner *t, int32_t pi)
-{
-	unsigned r = thinner_raster(t->state, pi, t->pw);
-	uint8_t k = t->kind[r];
-	return k == THIN_DELETE || (k == THIN_RIDGE && !thinner_ridge_end(t, pi, t->ring[r]));
+	const int32_t top = t->heap[0], last = t->heap[--t->nheap];
+	int32_t i = 0;
+	for (;;) {
+		int32_t c = 2 * i + 1;
+		if (c >= t->nheap)
+			break;
+		if (c + 1 < t->nheap && t->heap[c + 1] < t->heap[c])
+			c++;
+		if (t->heap[c] >= last)
+			break;
+		t->heap[i] = t->heap[c];
+		i = c;
+	}
+	t->heap[i] = last;
+	return top;
 }
 
 /* thinner_push_again(t, pi): stacks pi's neighbours that are in the set and visited
- * (to be tried again now that pi is gone) and not stacked already. */
+ * (to be tried again now that pi is gone) and not stacked already. While a planed
+ * level is visited (thinner_visit_level), a neighbour marked kept that is of that level
+ * and past the visit's place was marked so before its turn, and is not visited yet: it
+ * goes on the heap instead, to be visited at its turn, as its neighbourhood is no
+ * longer what it was when it was found not deletable. */
 static inline void thinner_push_again(Thinner *t, int32_t pi)
 {
 	for (int i = 0; i < 8; i++) {
 		int32_t qi = pi + t->off[i];
 		uint8_t st = t->state[qi];
 		if ((st & (SKELETON_KEPT | SKELETON_STACKED)) == SKELETON_KEPT) {
+			if (qi > t->pos && t->dist2[thinner_unpadded(t, qi)] == t->level) {
+				if (!(st & SKELETON_QUEUED)) {
+					t->state[qi] = st | SKELETON_QUEUED;
+					thinner_heap_push(t, qi);
+				}
+				continue;
+			}
 			t->state[qi] = st | SKELETON_STACKED;
 			t->stack[t->top++] = qi;
 		}
+	}
+}
+
+/* thinner_untrack(t, pi): pi, just deleted, out of the tracked set (Thinner.track). */
+static inline void thinner_untrack(Thinner *t, int32_t pi)
+{
+	if (t->track) {
+		const int32_t r = thinner_row(t, pi);
+		skellevel_delete(t->track, r, pi - r * t->pw);
 	}
 }
 
@@ -457,6 +416,7 @@ static inline void thinner_push_again(Thinner *t, int32_t pi)
 static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 {
 	t->state[pi] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
+	thinner_untrack(t, pi);
 	t->top = top;
 	for (;;) {
 		thinner_push_again(t, pi);
@@ -470,11 +430,15 @@ static void thinner_delete_more(Thinner *t, int32_t pi, int32_t top)
 				break;
 		}
 		t->state[pi] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
+		thinner_untrack(t, pi);
 	}
 }
 
 /* thinner_delete_from(t, pi): deletes pi and whatever that makes deletable. */
-static void thinner_delete_from(Thinner *t, int32_t pi) { thinner_delete_more(t, pi, 0); }
+void thinner_delete_from(Thinner *t, int32_t pi)
+{
+	thinner_delete_more(t, pi, 0);
+}
 
 /* thinner_retry(t, pi): after pi's deletion in its visit, tries again its visited
  * neighbours in the set (none is stacked: the stack is empty between visits), and
@@ -497,14 +461,6 @@ static void thinner_retry(Thinner *t, int32_t pi)
 		}
 	}
 }
-
-/* The visits of a grid whose state outgrows THIN_PREFETCH_BYTES prefetch the rows
- * below and above the cell THIN_AHEAD visits on: each distance level sweeps the whole
- * grid, and at 4096 a side (17 MB of state) most of a sparse level's visits missed the
- * cache; there it took 10-25% off the visits of rooms and rects, at 1024 it added 10%
- * (the loads hit the cache anyway, the prefetch is instructions). */
-#define THIN_AHEAD 16
-#define THIN_PREFETCH_BYTES (8u << 20)
 
 /* thinner_visits(t, order, nfree, prefetch), for thinner_visit_all(t, order, nfree): the
  * visits of the cells order[0 .. nfree) in
@@ -576,183 +532,48 @@ static void thinner_visit_all(Thinner *t, const int32_t *order, int32_t nfree)
 		thinner_visits(t, order, nfree, false);
 }
 
-/* ---------------------------------------------------------------- pruning */
-
-/* thinner_degree(t, pi): the 4-neighbours of pi in the set. */
-static inline int thinner_degree(const Thinner *t, int32_t pi)
+/* thinner_visit_level(t, list, n, level): the visits of a planed level, dist2 level
+ * (skellevel.c's NEXT LEVELS), the same as visits of all its cells in index order.
+ * When the level starts, skellevel_next has marked its cells not deletable then as
+ * visited and kept (SKELETON_KEPT), and listed the others in list[0 .. n), in index
+ * order. A cell so marked, visited at its turn, would be kept, unless a neighbour was
+ * deleted since the level started: the deletion puts it on the heap
+ * (thinner_push_again), to be visited at its turn, merged with the list; one before
+ * the visit's place is one visited and kept, and a deletion next to it tries it again,
+ * as any. */
+static void thinner_visit_level(Thinner *t, const int32_t *list, int32_t n, int32_t level)
 {
-	const uint8_t *st = t->state;
-	return (st[pi + 1] & SKELETON_IN) + (st[pi - 1] & SKELETON_IN) + (st[pi + t->pw] & SKELETON_IN) +
-	       (st[pi - t->pw] & SKELETON_IN);
-}
-
-/* thinner_mask4(st, pi, pw): pi's 4-neighbours in the set, bit k the k-th of east,
- * north (+pw), west and south: the ring's even neighbours in its order. */
-static inline unsigned thinner_mask4(const uint8_t *st, int32_t pi, int32_t pw)
-{
-	return (unsigned)(st[pi + 1] & SKELETON_IN) | (unsigned)(st[pi + pw] & SKELETON_IN) << 1 |
-	       (unsigned)(st[pi - 1] & SKELETON_IN) << 2 | (unsigned)(st[pi - pw] & SKELETON_IN) << 3;
-}
-
-/* thinner_sort(a, n, tmp): sorts the padded indices a[0 .. n) (below 2^31) in
- * increasing order, with tmp as long as a: a radix sort, three passes of 11 bits (the
- * maze's 6 700 cells to test again after pruning took glibc's qsort a quarter of the
- * pruning's time); a short list by insertion. */
-static void thinner_sort(int32_t *a, int32_t n, int32_t *tmp)
-{
-	if (n < 64) {
-		for (int32_t i = 1; i < n; i++) {
-			int32_t v = a[i], j = i;
-			for (; j > 0 && a[j - 1] > v; j--)
-				a[j] = a[j - 1];
-			a[j] = v;
-		}
-		return;
-	}
-	int32_t count[3][2049];
-	memset(count, 0, sizeof count);
-	for (int32_t i = 0; i < n; i++)
-		for (int d = 0; d < 3; d++)
-			count[d][((uint32_t)a[i] >> (11 * d) & 2047u) + 1]++;
-	int32_t *from = a, *to = tmp;
-	for (int d = 0; d < 3; d++) {
-		for (int b = 0; b < 2048; b++)
-			count[d][b + 1] += count[d][b];
-		for (int32_t i = 0; i < n; i++)
-			to[count[d][(uint32_t)from[i] >> (11 * d) & 2047u]++] = from[i];
-		int32_t *swap = from;
-		from = to;
-		to = swap;
-	}
-	/* three passes: the sorted list is in tmp */
-	memcpy(a, from, (size_t)n * sizeof *a);
-}
-
-/* thinner_walk(t, end, remove, nremove, longest, pending): walks from the end point end
- * to a junction; when the branch is a spur (see the header comment), or may be one,
- * its cells are added to remove[0 .. nremove); returns the new count. The next cell is
- * the first 4-neighbour in the set, in the ring's order, other than the way back: found
- * by masks of the 4-neighbours, with no branch on the way the walk turns, and the next
- * cell's mask gives its degree and its way on. The cells are written after
- * remove[nremove - 1] as the walk goes, and kept when it finds a spur (a walk's cells
- * are no other walk's: a branch has one end point). longest: see thinner_prune. A
- * branch that reaches its junction within SKELETON_SPUR_FACTOR + SKELETON_SPUR_SLACK
- * cells is a spur whatever the junction (a free cell's clearance is at least 1); a
- * longer one needs the junction's dist2, and is listed in pending as three entries
- * (its first place in remove, its length, the junction) for thinner_prune to judge
- * after the scan, where the loads do not wait for one another: loaded here, that
- * dist2 was a cache miss the walk waited for (on the maze, whose branches from the
- * corners reach their junctions in 4 cells, the scan and walks took 0.94 ms at 1024
- * and 30 at 4096; now 0.91 and 25). pending has room: each listed branch has 3 cells
- * or more (thinner_prune asserts the constants allow no fewer), no cell is on two,
- * so its entries are no more than the cells. */
-static inline int32_t thinner_walk(const Thinner *t, int32_t end, int32_t *remove, int32_t nremove,
-                                   double longest, int32_t *pending, int32_t *npending)
-{
-	static const uint8_t first[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
-	static const uint8_t degree[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-	const uint8_t *st = t->state;
-	const int32_t pw = t->pw;
-	const int32_t step[4] = {1, pw, -1, -pw}; /* the 4-neighbours, as thinner_mask4 */
-	int32_t cur = end, length = 1;
-	unsigned m = thinner_mask4(st, cur, pw), back = 0;
+	int32_t i = 0;
+	t->nheap = 0;
+	t->level = level;
 	for (;;) {
-		remove[nremove + length - 1] = cur;
-		const unsigned j = first[m & ~back];
-		const int32_t next = cur + step[j];
-		const unsigned mn = thinner_mask4(st, next, pw);
-		const int d = degree[mn];
-		if (d >= 3) {
-			if (length > SKELETON_SPUR_FACTOR + SKELETON_SPUR_SLACK) {
-				int32_t *e = pending + 3 * (*npending)++;
-				e[0] = nremove;
-				e[1] = length;
-				e[2] = next;
-			}
-			return nremove + length;
-		}
-		if (d <= 1)
-			return nremove; /* the branch is all the component: no spur */
-		back = 1u << ((j + 2) & 3);
-		cur = next;
-		m = mn;
-		length++;
-		if (length > longest)
-			return nremove; /* no spur */
-	}
-}
-
-/* thinner_prune(t, scratch, maxd): removes the spurs (see the header comment), then
- * deletes what that makes deletable; returns the number of cells removed as spurs.
- * scratch is an array as long as the grid (the walks' pending branches, then the
- * cells to test again). Spurs are found on the set as thinned, then removed. The end points are found by a scan of the set in raster order, eight
- * cells a word: each lane holds a cell's bit 0, the sum of four neighbours' lanes its
- * degree (at most 4: no carry), and a lane of degree ^ 1 is zero exactly where
- * ((lane & 0x7f) + 0x7f) | lane has no top bit; most words hold no end and cost no
- * branch of their own. Each end is walked when the scan finds it, while its rows are
- * in the cache (walked after the whole scan, they were not, and the walks on the maze
- * cost as much as the scan). maxd is the largest dist2: no junction is farther from the
- * obstacles, so a branch longer than SKELETON_SPUR_FACTOR * sqrt(maxd) +
- * SKELETON_SPUR_SLACK cells is no spur whatever its junction, and its walk stops there
- * (the same test, monotone in the clearance; on the 1024 maze, whose dead ends are
- * long corridors, it saves most of the walking). */
-static int32_t thinner_prune(Thinner *t, int32_t *scratch, int32_t maxd)
-{
-	const double longest = SKELETON_SPUR_FACTOR * sqrt((double)maxd) + SKELETON_SPUR_SLACK;
-	assert(SKELETON_SPUR_FACTOR + SKELETON_SPUR_SLACK >= 2.0); /* thinner_walk's pending */
-	/* cells to remove are collected in the stack array, as long as the grid */
-	int32_t nremove = 0, npending = 0;
-	int32_t *remove = t->stack;
-	const uint8_t *st = t->state;
-	for (int32_t k = 0; k < t->ends_words; k++)
-		for (uint64_t m = t->ends[k]; m != 0; m &= m - 1) {
-			const int32_t pi = 64 * k + skellevel_lowest(m);
-			if ((st[pi] & SKELETON_IN) && thinner_degree(t, pi) == 1)
-				nremove = thinner_walk(t, pi, remove, nremove, longest, scratch, &npending);
-		}
-	/* the branches listed by the walks as pending: judged by their junctions' dist2,
-	 * the loads independent of one another; the spurs' cells stay in remove, the
-	 * others' are taken out (the list in scratch is in the order of remove) */
-	for (int32_t k = 0; k < npending; k++) {
-		int32_t *e = scratch + 3 * k;
-		const double r = sqrt((double)t->dist2[thinner_unpadded(t, e[2])]);
-		e[2] = e[1] > SKELETON_SPUR_FACTOR * r + SKELETON_SPUR_SLACK; /* no spur */
-	}
-	int32_t kept = 0, from = 0;
-	for (int32_t k = 0; k < npending; k++) {
-		const int32_t *e = scratch + 3 * k;
-		if (!e[2])
+		int32_t pi;
+		if (t->nheap > 0 && (i == n || t->heap[0] < list[i]))
+			pi = thinner_heap_pop(t);
+		else if (i < n)
+			pi = list[i++];
+		else
+			break;
+		t->pos = pi;
+		/* as thinner_visits, but the bytes may hold SKELETON_QUEUED: masked */
+		const uint8_t *p = t->state + pi;
+		const uint64_t rows =
+		    (uint64_t)thinner_load4(p + t->pw - 1) << 32 | thinner_load4(p - t->pw - 1);
+		const unsigned r = (unsigned)((((rows & THIN_ONES) * 0x0102040810204080u) >> 56) |
+		                              (unsigned)(p[-1] & SKELETON_IN) << 8 |
+		                              (unsigned)(p[1] & SKELETON_IN) << 10);
+		const uint8_t kd = t->kind[r];
+		if (kd == THIN_KEEP || (kd == THIN_RIDGE && thinner_ridge_end(t, pi, t->ring[r]))) {
+			t->state[pi] = SKELETON_IN | SKELETON_KEPT;
 			continue;
-		memmove(remove + kept, remove + from, (size_t)(e[0] - from) * sizeof *remove);
-		kept += e[0] - from;
-		from = e[0] + e[1];
-	}
-	memmove(remove + kept, remove + from, (size_t)(nremove - from) * sizeof *remove);
-	nremove = kept + (nremove - from);
-	for (int32_t k = 0; k < nremove; k++)
-		t->state[remove[k]] &= (uint8_t)~(SKELETON_IN | SKELETON_KEPT);
-	/* only a cell next to a removed one has a new neighbourhood (every other was
-	 * left not deletable by the thinning), so only those are tested again: listed in
-	 * scratch and sorted, so that they are tested in raster order as
-	 * a test of every cell in raster order would (and equals: a deletion here
-	 * retries its neighbours through the stack) */
-	int32_t nrecheck = 0;
-	for (int32_t k = 0; k < nremove; k++)
-		for (int i = 0; i < 8; i++) {
-			int32_t qi = remove[k] + t->off[i];
-			if ((t->state[qi] & (SKELETON_IN | SKELETON_RECHECK)) == SKELETON_IN) {
-				t->state[qi] |= SKELETON_RECHECK;
-				scratch[nrecheck++] = qi;
-			}
 		}
-	thinner_sort(scratch, nrecheck, remove); /* remove is no longer needed */
-	for (int32_t k = 0; k < nrecheck; k++) {
-		int32_t pi = scratch[k];
-		t->state[pi] &= (uint8_t)~SKELETON_RECHECK;
-		if ((t->state[pi] & SKELETON_IN) && thinner_deletable(t, pi))
-			thinner_delete_from(t, pi);
+		t->state[pi] = 0;
+		thinner_untrack(t, pi);
+		if (((rows & (THIN_ONES * SKELETON_KEPT)) | ((p[-1] | p[1]) & SKELETON_KEPT)) != 0)
+			thinner_retry(t, pi);
 	}
-	return nremove;
+	t->pos = INT32_MAX;
+	t->level = 0;
 }
 
 /* ---------------------------------------------------------------- the skeleton */
@@ -770,6 +591,7 @@ struct SkeletonWork {
 	uint8_t *state; /* (w + 2) * (h + 2) */
 	int32_t *stack; /* w * h */
 	uint64_t *ends; /* ceil((w + 2) (h + 2) / 64): the Thinner's */
+	uint64_t *recheck; /* as many words, all zero between calls: the Thinner's */
 	int32_t *order; /* w * h */
 	int32_t *start; /* start_cap */
 	size_t start_cap;
@@ -788,6 +610,7 @@ static void skeleton_free_work(struct SkeletonWork *wk)
 	free(wk->state);
 	free(wk->stack);
 	free(wk->ends);
+	free(wk->recheck);
 	free(wk->order);
 	free(wk->start);
 	skellevel_free(&wk->level);
@@ -816,6 +639,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		s->work->state = util_alloc(pn + 3, 1); /* + 3: thinner_raster's last load */
 		s->work->stack = util_alloc(n, sizeof *s->work->stack);
 		s->work->ends = util_alloc((pn + 63) / 64, sizeof *s->work->ends);
+		s->work->recheck = util_alloc((pn + 63) / 64, sizeof *s->work->recheck);
 		s->work->order = util_alloc(n, sizeof *s->work->order);
 	}
 	s->w = w;
@@ -835,10 +659,11 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	const int32_t maxd = skeleton_edt_scratch(g, s->dist2, (uint16_t *)(void *)wk->stack);
 	assert((size_t)maxd + 2 <= wk->start_cap);
 
-	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2};
+	Thinner t = {.w = w, .h = h, .pw = w + 2, .dist2 = s->dist2, .pos = INT32_MAX};
 	t.state = wk->state;
 	t.stack = wk->stack;
 	t.ends = wk->ends;
+	t.recheck = wk->recheck;
 	t.ends_words = (int32_t)((pn + 63) / 64);
 	memset(t.ends, 0, (size_t)t.ends_words * sizeof *t.ends);
 	for (int i = 0; i < 8; i++) {
@@ -853,22 +678,51 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	 * a list of the higher cells where they are at most SKELETON_LISTED of the grid,
 	 * else by a sort of the whole grid (the same order either way). */
 	SkelLevel *lv = &wk->level;
-	skellevel_thin(lv, g);
+	skellevel_thin(lv, g, (int32_t)(SKELETON_LISTED * (double)n));
 	skellevel_state(lv, t.state, SKELETON_IN);
 	memset(t.state + pn, 0, 3);
-	int32_t *visit = order;
 	int32_t nrest;
 	if ((double)lv->nhigh <= SKELETON_LISTED * (double)n) {
+		/* the rest of the lowest level; then each of the levels 2, 4 and 5, from its
+		 * plane where it is planed (the set synced with the state first when visits
+		 * since the planes were made may have deleted cells; the planed visits keep
+		 * it in step), else from the list; then the listed higher levels
+		 * (skellevel.c's NEXT LEVELS). A planed level's list of cells and its heap
+		 * in order past the listed cells: they are at most that level's cells */
 		nrest = skellevel_rest(lv, order);
-		skelsort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack);
+		int32_t upto[SKELLEVEL_PLANED];
+		const int32_t nlisted =
+		    skelsort_listed(lv, s->dist2, start, order, maxd, nrest, wk->stack, upto);
+		int32_t *scratch = order + nrest + nlisted;
+		int32_t done = nrest;
+		bool synced = nrest == 0; /* else the set is as the state was made from it */
+		thinner_visit_all(&t, order, nrest);
+		for (int j = 0; j < SKELLEVEL_PLANED; j++) {
+			if (!lv->planed[j]) {
+				thinner_visit_all(&t, order + done, upto[j] - done);
+				synced = synced && upto[j] == done;
+				done = upto[j];
+				continue;
+			}
+			if (!synced)
+				skellevel_sync(lv, t.state);
+			synced = true;
+			t.track = lv;
+			const int32_t nd =
+			    skellevel_next(lv, j, t.state, SKELETON_KEPT, t.ends, scratch);
+			t.heap = scratch + nd;
+			thinner_visit_level(&t, scratch, nd, skellevel_dist2[j]);
+			t.track = NULL;
+		}
+		thinner_visit_all(&t, order + done, nrest + nlisted - done);
 	} else {
 		skelsort_rows(s->dist2, w, h, t.pw, start, order, maxd);
 		const int32_t nblocked = (int32_t)n - lv->nlow - lv->nhigh;
 		nrest = skellevel_count_rest(lv);
-		visit = order + nblocked + lv->nlow - nrest;
+		int32_t *visit = order + nblocked + lv->nlow - nrest;
 		skellevel_rest(lv, visit);
+		thinner_visit_all(&t, visit, nrest + lv->nhigh);
 	}
-	thinner_visit_all(&t, visit, nrest + lv->nhigh);
 	s->pruned = thinner_prune(&t, order, maxd);
 
 	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */

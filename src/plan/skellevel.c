@@ -1,5 +1,6 @@
-/* skellevel.c - the skeleton's lowest distance level thinned by bit planes, 64 cells a
- * word (paper 4.2; skeleton.c calls it before its visits).
+/* skellevel.c - the skeleton's lowest distance levels by bit planes, 64 cells a word:
+ * the lowest thinned in subfields, the next three started a word at a time (paper 4.2;
+ * skeleton.c calls it around its visits).
  *
  * WHY  The distance-ordered thinning (skeleton.c) visits the free cells one by one in
  *    order of dist2. Its first level, dist2 1 (the free cells with a blocked 4-neighbour
@@ -43,7 +44,31 @@
  *    index, where it was all by index), and with it, where a corridor's medial axis
  *    falls between two cells of one level, which of them is kept.
  *
- * MEMORY  four planes of (h + 2) (ceil((w + 2) / 64) + 2) words: half a byte a cell.
+ * NEXT LEVELS  The levels dist2 2, 4 and 5 (the three values above 1 a squared
+ *    distance takes) each get a plane, found from the free plane alone (a free cell not
+ *    low is of level 2 when a diagonal neighbour is blocked, else 4 when a cell two
+ *    away along a row or column is, else 5 when a cell a knight's move away is; the
+ *    ring outside the grid is blocked, as in edt.c); skellevel_high lists the higher
+ *    cells but those of a planed level, so that skelsort.c sorts fewer. A level is
+ *    planed where it holds a cell a plane word or more (its word pass then costs less
+ *    than listing, sorting and visiting its cells: on the 1024 maze, 3-wide corridors,
+ *    levels 2 and 4 hold 45 734 and 255 247 cells, 5 holds 6 770 and is listed). When
+ *    a planed level's turn comes (after every lower level's visits, as in the distance
+ *    order), skellevel_next tests all its cells at once on the set as it is then (kept
+ *    in step by skeleton.c: synced from the state where unplaned visits deleted cells,
+ *    updated at each deletion while a planed level is visited): the cells deletable
+ *    now (simple, not a ridge end; the cells of higher dist2, all still in the set,
+ *    are the plane `above`) are listed for skeleton.c to visit one by one, in index
+ *    order; the others are marked visited and kept in the state at once, and those of
+ *    them that are ridge ends get their bit in skeleton.c's plane of ends. This is the
+ *    same thinning, cell for cell, as visiting the level's cells one by one in index
+ *    order: a cell not deletable when the level starts is still not deletable at its
+ *    turn unless a neighbour was deleted first, and skeleton.c puts such a cell on a
+ *    heap, to be visited at its turn (thinner_visit_level). On the 1024 maze every cell
+ *    of level 4 is kept (a corridor's middle line) and every cell of level 2 deleted.
+ *
+ * MEMORY  four planes of (h + 2) (ceil((w + 2) / 64) + 2) words: half a byte a cell;
+ *    four more for the next levels (their three and `above`).
  * COMPLEXITY  O(w h / 64) words a pass: the planes are two passes, each sub-iteration
  *    half the rows, the state a pass, the rest's list a pass.
  * MEASURED  (issue 16; skeleton.c's header has the whole) on the 1024 maze, 524 288
@@ -52,9 +77,16 @@
  *    took about 1.6 ms; the 1024 rooms, rects and Boston_0_1024, whose lowest level
  *    is a thin rim, pay about 7 million instructions for 1-2 million fewer in the
  *    visits. The second round costs 0.4 million instructions on the maze (most words
- *    have no candidate left). */
+ *    have no candidate left). The next levels on the 1024 maze (levels 2 and 4 planed, 5
+ *    listed): their planes and `above` made with the lowest's, 2.5 million
+ *    instructions more in skellevel_thin; skellevel_next 5.4 million (two levels,
+ *    about 150 a word) in about 0.40 ms, the visits of level 2 0.21 and the listing
+ *    and sort of level 5 0.18, where listing, sorting and visiting the 307 751 higher
+ *    cells took about 1.5 ms (0.57, 0.32 and 0.65); the whole skeleton 49.9 -> 39.5
+ *    million instructions (skeleton.c's MEASURED). */
 #include "skellevel.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -76,6 +108,9 @@ void skellevel_free(SkelLevel *lv)
 	free(lv->low);
 	free(lv->near);
 	free(lv->peel);
+	free(lv->above);
+	for (int j = 0; j < SKELLEVEL_PLANED; j++)
+		free(lv->lev[j]);
 	*lv = (SkelLevel){0};
 }
 
@@ -132,9 +167,10 @@ static inline int32_t skellevel_count(uint64_t v)
 	return (int32_t)((v * SKELLEVEL_ONES) >> 56);
 }
 
-/* skellevel_planes(lv, g): set (the free cells), low and near, nlow and nhigh (see
- * SkelLevel) of g. */
-static void skellevel_planes(SkelLevel *lv, const Grid *g)
+/* skellevel_planes(lv, g, max_high): set (the free cells), low and near, nlow and
+ * nhigh (see SkelLevel) of g; the next levels' planes and `planed` when nhigh is at
+ * most max_high. */
+static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
 {
 	const int32_t w = g->w, h = g->h, words = lv->words;
 	uint64_t *const set = lv->set, *const low = lv->low, *const near = lv->near;
@@ -162,17 +198,24 @@ static void skellevel_planes(SkelLevel *lv, const Grid *g)
 	for (int32_t r = 1; r <= h; r++) {
 		const uint64_t *s = skellevel_row(lv, set, r - 1), *c = skellevel_row(lv, set, r),
 		               *n = skellevel_row(lv, set, r + 1);
-		uint64_t *lo = skellevel_row(lv, low, r);
+		uint64_t *lo = skellevel_row(lv, low, r), *ab = skellevel_row(lv, lv->above, r);
 		for (int32_t k = 0; k < words; k++) {
 			const uint64_t l =
 			    c[k] & ~(skellevel_east(c, k) & skellevel_west(c, k) & n[k] & s[k]);
 			lo[k] = l;
+			ab[k] = c[k] & ~l;
 			nlow += skellevel_count(l);
 			nhigh += skellevel_count(c[k] & ~l);
 		}
 	}
 	/* near: the free cells of higher levels (set and not low) ORed over the rows
 	 * above and below, then dilated by a column either way */
+	/* the next levels' planes are made only where one of them may be planed (a cell a
+	 * word or more, below): a level's cells lie along the boundary, as the lowest
+	 * level's, and are not many more than those (not planed where they are fewer;
+	 * the result is the same either way) */
+	const bool levels = nhigh <= max_high && nlow >= h * words;
+	int32_t nlev[SKELLEVEL_PLANED] = {0, 0, 0};
 	for (int32_t r = 1; r <= h; r++) {
 		const uint64_t *s = skellevel_row(lv, set, r - 1), *c = skellevel_row(lv, set, r),
 		               *n = skellevel_row(lv, set, r + 1);
@@ -183,11 +226,36 @@ static void skellevel_planes(SkelLevel *lv, const Grid *g)
 		 * row, as it is read only where the row between is free */
 		const uint64_t *s2 = skellevel_row(lv, set, r >= 2 ? r - 2 : 0),
 		               *n2 = skellevel_row(lv, set, r + 2 <= h + 1 ? r + 2 : h + 1);
+		uint64_t *l2 = skellevel_row(lv, lv->lev[0], r),
+		         *l4 = skellevel_row(lv, lv->lev[1], r),
+		         *l5 = skellevel_row(lv, lv->lev[2], r);
 		for (int32_t k = 0; k < words; k++) {
 			const uint64_t fe = skellevel_east(c, k), fw = skellevel_west(c, k);
 			const uint64_t fee = c[k] >> 2 | c[k + 1] << 62, fww = c[k] << 2 | c[k - 1] >> 62;
 			pe[k] = lc[k] & (fe | (fw & fww)) & (fw | (fe & fee)) & (n[k] | (s[k] & s2[k])) &
 			        (s[k] | (n[k] & n2[k]));
+			/* the next levels (NEXT LEVELS): all free at the offsets of dist2 2, of
+			 * 4, of 5 (rows two away stand in as above: a cell they are read for
+			 * wrongly is low) */
+			if (!levels)
+				continue;
+			const uint64_t hi = c[k] & ~lc[k];
+			const uint64_t at2 = skellevel_east(n, k) & skellevel_west(n, k) &
+			                     skellevel_east(s, k) & skellevel_west(s, k);
+			const uint64_t at4 = fee & fww & n2[k] & s2[k];
+			const uint64_t nee = n[k] >> 2 | n[k + 1] << 62,
+			               nww = n[k] << 2 | n[k - 1] >> 62,
+			               see = s[k] >> 2 | s[k + 1] << 62,
+			               sww = s[k] << 2 | s[k - 1] >> 62;
+			const uint64_t at5 = nee & nww & see & sww & skellevel_east(n2, k) &
+			                     skellevel_west(n2, k) & skellevel_east(s2, k) &
+			                     skellevel_west(s2, k);
+			l2[k] = hi & ~at2;
+			l4[k] = hi & at2 & ~at4;
+			l5[k] = hi & at2 & at4 & ~at5;
+			nlev[0] += l2[k] ? skellevel_count(l2[k]) : 0;
+			nlev[1] += l4[k] ? skellevel_count(l4[k]) : 0;
+			nlev[2] += l5[k] ? skellevel_count(l5[k]) : 0;
 		}
 		uint64_t prev = 0, cur = (s[0] & ~ls[0]) | (c[0] & ~lc[0]) | (n[0] & ~ln[0]);
 		for (int32_t k = 0; k < words; k++) {
@@ -200,6 +268,10 @@ static void skellevel_planes(SkelLevel *lv, const Grid *g)
 	}
 	lv->nlow = nlow;
 	lv->nhigh = nhigh;
+	/* a level is planed where it holds a cell a word or more: a level's planes cost
+	 * a pass over the words (skellevel_next), listed it costs its cells */
+	for (int j = 0; j < SKELLEVEL_PLANED; j++)
+		lv->planed[j] = levels && nlev[j] > 0 && nlev[j] >= h * words;
 }
 
 /* skellevel_subfield(lv, a, b): one sub-iteration: the low cells in the set of padded
@@ -233,7 +305,7 @@ static void skellevel_subfield(SkelLevel *lv, int a, int b)
 	}
 }
 
-void skellevel_thin(SkelLevel *lv, const Grid *g)
+void skellevel_thin(SkelLevel *lv, const Grid *g, int32_t max_high)
 {
 	if (!lv->set || lv->w != g->w || lv->h != g->h) {
 		skellevel_free(lv);
@@ -246,8 +318,11 @@ void skellevel_thin(SkelLevel *lv, const Grid *g)
 		lv->low = util_alloc(n, sizeof *lv->low);
 		lv->near = util_alloc(n, sizeof *lv->near);
 		lv->peel = util_alloc(n, sizeof *lv->peel);
+		lv->above = util_alloc(n, sizeof *lv->above);
+		for (int j = 0; j < SKELLEVEL_PLANED; j++)
+			lv->lev[j] = util_alloc(n, sizeof *lv->lev[j]);
 	}
-	skellevel_planes(lv, g);
+	skellevel_planes(lv, g, max_high);
 	for (int round = 0; round < SKELLEVEL_ROUNDS; round++)
 		for (int b = 0; b < 2; b++)
 			for (int a = 0; a < 2; a++)
@@ -300,27 +375,186 @@ int32_t skellevel_count_rest(const SkelLevel *lv)
 	return count;
 }
 
+/* skellevel_list(lv, dist2, out, small, big, r, k, m, count, l2, l4, l5): the cells m
+ * of padded row r, word k, listed and counted (skellevel_high); returns the new count.
+ * l2, l4, l5: the cells of m known to be of dist2 2, 4, 5 (the levels' planes, made but
+ * not planed; zero where none was made): their dist2 is not loaded (at 4096 a side
+ * each load of a sparse level's cell missed the cache). */
+static inline int32_t skellevel_list(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
+                                     SkelLevelCount small, int32_t *big, int32_t r, int32_t k,
+                                     uint64_t m, int32_t count, uint64_t l2, uint64_t l4,
+                                     uint64_t l5)
+{
+	const int32_t w = lv->w, pw = w + 2;
+	/* padded column x of row r is the grid's cell x - 1 of row r - 1 */
+	const int32_t *d2 = dist2 + (size_t)(r - 1) * (size_t)w - 1;
+	for (; m != 0; m &= m - 1) {
+		const uint64_t bit = m & (0 - m);
+		const int32_t x = 64 * k + skellevel_lowest(m);
+		int32_t d;
+		if (bit & (l2 | l4 | l5)) {
+			d = bit & l2 ? 2 : bit & l4 ? 4 : 5;
+		} else {
+			d = d2[x];
+			/* the planes are dist2's levels */
+			assert(d > SKELLEVEL_PLANED_MAX || d == 3 || (l2 | l4 | l5) == 0);
+		}
+		out[2 * count] = r * pw + x;
+		out[2 * count + 1] = d;
+		if (d < SKELLEVEL_SMALL)
+			small[count & (SKELLEVEL_LANES - 1)][d]++;
+		else
+			big[d + 1]++;
+		count++;
+	}
+	return count;
+}
+
 int32_t skellevel_high(const SkelLevel *lv, const int32_t *dist2, int32_t *out,
                        SkelLevelCount small, int32_t *big)
 {
-	/* the higher cells are never deleted here: they are the set's cells not low */
-	const int32_t w = lv->w, pw = w + 2;
+	/* the higher cells are never deleted here: they are the set's cells not low; those
+	 * of the planed levels are not listed (two loops, so that a grid with none planed
+	 * pays nothing for them; where one is, every level's plane was made) */
+	const bool any = lv->planed[0] || lv->planed[1] || lv->planed[2];
 	int32_t count = 0;
 	for (int32_t r = 1; r <= lv->h; r++) {
 		const uint64_t *c = skellevel_row(lv, lv->set, r), *lo = skellevel_row(lv, lv->low, r);
-		/* padded column x of row r is the grid's cell x - 1 of row r - 1 */
-		const int32_t *d2 = dist2 + (size_t)(r - 1) * (size_t)w - 1;
-		for (int32_t k = 0; k < lv->words; k++)
-			for (uint64_t m = c[k] & ~lo[k]; m != 0; m &= m - 1) {
-				const int32_t x = 64 * k + skellevel_lowest(m), d = d2[x];
-				out[2 * count] = r * pw + x;
-				out[2 * count + 1] = d;
-				if (d < SKELLEVEL_SMALL)
-					small[count & (SKELLEVEL_LANES - 1)][d]++;
-				else
-					big[d + 1]++;
-				count++;
+		if (!any) {
+			for (int32_t k = 0; k < lv->words; k++)
+				count = skellevel_list(lv, dist2, out, small, big, r, k,
+				                       c[k] & ~lo[k], count, 0, 0, 0);
+			continue;
+		}
+		const uint64_t *l2 = skellevel_row(lv, lv->lev[0], r),
+		               *l4 = skellevel_row(lv, lv->lev[1], r),
+		               *l5 = skellevel_row(lv, lv->lev[2], r);
+		const uint64_t m2 = lv->planed[0] ? ~(uint64_t)0 : 0,
+		               m4 = lv->planed[1] ? ~(uint64_t)0 : 0,
+		               m5 = lv->planed[2] ? ~(uint64_t)0 : 0;
+		for (int32_t k = 0; k < lv->words; k++) {
+			const uint64_t planed = (l2[k] & m2) | (l4[k] & m4) | (l5[k] & m5);
+			count = skellevel_list(lv, dist2, out, small, big, r, k,
+			                       c[k] & ~(lo[k] | planed), count, l2[k] & ~m2,
+			                       l4[k] & ~m4, l5[k] & ~m5);
+		}
+	}
+	return count;
+}
+
+/* skellevel_spread(spread, v): spread[b] has byte i equal to v where bit i of b is set,
+ * 0 elsewhere (in memory order: byte i is the cell at the word's bit 8 k + i). */
+static void skellevel_spread(uint64_t spread[256], uint8_t v)
+{
+	for (unsigned b = 0; b < 256; b++) {
+		uint8_t bytes[8];
+		for (int i = 0; i < 8; i++)
+			bytes[i] = (b >> i) & 1 ? v : 0;
+		memcpy(&spread[b], bytes, sizeof bytes);
+	}
+}
+
+void skellevel_sync(SkelLevel *lv, const uint8_t *state)
+{
+	const int32_t pw = lv->w + 2;
+	/* the padding rows and columns are blocked and stay so */
+	for (int32_t r = 1; r <= lv->h; r++) {
+		const uint8_t *st = state + (size_t)r * (size_t)pw;
+		uint64_t *row = skellevel_row(lv, lv->set, r);
+		int32_t k = 0;
+		for (; 64 * k + 64 <= pw; k++) {
+			uint64_t v = 0;
+			for (int j = 0; j < 8; j++)
+				v |= skellevel_free8(st + 64 * k + 8 * j) << (8 * j);
+			row[k] = v;
+		}
+		for (; k < lv->words; k++) {
+			uint64_t v = 0;
+			for (int32_t x = 64 * k; x < pw && x < 64 * k + 64; x++)
+				v |= (uint64_t)(st[x] & 1) << (x - 64 * k);
+			row[k] = v;
+		}
+	}
+}
+
+int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
+                       int32_t *out)
+{
+	uint64_t spread[256];
+	skellevel_spread(spread, mark);
+	const int32_t pw = lv->w + 2, words = lv->words;
+	/* this level's cells out of `above` first, and those of the levels before it
+	 * (again, or for the first time where a level was listed, not planed) */
+	for (int32_t r = 1; r <= lv->h; r++) {
+		uint64_t *a = skellevel_row(lv, lv->above, r);
+		for (int i = 0; i <= j; i++) {
+			const uint64_t *l = skellevel_row(lv, lv->lev[i], r);
+			for (int32_t k = 0; k < words; k++)
+				a[k] &= ~l[k];
+		}
+	}
+	int32_t count = 0;
+	for (int32_t r = 1; r <= lv->h; r++) {
+		const uint64_t *c = skellevel_row(lv, lv->set, r),
+		               *lj = skellevel_row(lv, lv->lev[j], r);
+		const uint64_t *n = skellevel_row(lv, lv->set, r + 1),
+		               *s = skellevel_row(lv, lv->set, r - 1);
+		/* the cells above the level (in the set: none is deleted before its turn),
+		 * ORed over rows r - 1 .. r + 1: word k - 1 (prev), k (cur) and k + 1 (next;
+		 * the guard word past the last) */
+		const uint64_t *as = skellevel_row(lv, lv->above, r - 1),
+		               *ac = skellevel_row(lv, lv->above, r),
+		               *an = skellevel_row(lv, lv->above, r + 1);
+		uint64_t prev = 0, cur = as[0] | ac[0] | an[0];
+		for (int32_t k = 0; k < words; k++) {
+			const uint64_t next = as[k + 1] | ac[k + 1] | an[k + 1];
+			const uint64_t cand = c[k] & lj[k];
+			if (cand != 0) {
+				const uint64_t near =
+				    cur | cur << 1 | prev >> 63 | cur >> 1 | next << 63;
+				const uint64_t x0 = skellevel_east(c, k), x1 = skellevel_east(n, k),
+				               x2 = n[k], x3 = skellevel_west(n, k),
+				               x4 = skellevel_west(c, k), x5 = skellevel_west(s, k),
+				               x6 = s[k], x7 = skellevel_east(s, k);
+				const uint64_t simple =
+				    skellevel_one(x0 & ~(x1 & x2), x2 & ~(x3 & x4), x4 & ~(x5 & x6),
+				                  x6 & ~(x7 & x0));
+				const uint64_t ridge =
+				    simple & skellevel_one(x0, x2, x4, x6) & ~near;
+				const uint64_t del = cand & simple & ~ridge, keep = cand & ~del;
+				const int32_t pi0 = r * pw + 64 * k;
+				for (uint64_t m = del; m != 0; m &= m - 1)
+					out[count++] = pi0 + skellevel_lowest(m);
+				/* 8 cells a step, every step in the row: most words have cells
+				 * kept in most bytes, and a branch a byte mispredicted (a state
+				 * byte past the row gets 0 ORed in: the next row's, or the
+				 * padding's, within the state as w >= 3 where a cell is planed) */
+				uint8_t *st = state + pi0;
+				if (keep != 0 && 64 * k + 64 <= pw)
+					for (int b = 0; b < 8; b++) {
+						uint64_t v;
+						memcpy(&v, st + 8 * b, sizeof v);
+						v |= spread[(keep >> (8 * b)) & 255u];
+						memcpy(st + 8 * b, &v, sizeof v);
+					}
+				else if (keep != 0)
+					for (int b = 0; b < 8 && 64 * k + 8 * b < pw; b++) {
+						uint64_t v;
+						memcpy(&v, st + 8 * b, sizeof v);
+						v |= spread[(keep >> (8 * b)) & 255u];
+						memcpy(st + 8 * b, &v, sizeof v);
+					}
+				const uint64_t e = cand & ridge;
+				if (e != 0) {
+					const int sh = pi0 & 63;
+					ends[pi0 >> 6] |= e << sh;
+					if (sh != 0 && (e >> (64 - sh)) != 0)
+						ends[(pi0 >> 6) + 1] |= e >> (64 - sh);
+				}
 			}
+			prev = cur;
+			cur = next;
+		}
 	}
 	return count;
 }

@@ -37,7 +37,8 @@ static inline void sort_place4(int32_t *start, int32_t *order, int32_t k0, int32
 }
 
 /* skelsort_listed(lv, dist2, start, order, maxd, nrest, high): the higher
- * levels' cells (dist2 above 1) listed in index order from the planes into high
+ * levels' cells (dist2 above SKELLEVEL_PLANED_MAX; those of 2, 4 and 5 go into lv's
+ * planes, skellevel.c's NEXT LEVELS) listed in index order from the planes into high
  * (scratch of two values a listed cell: the padded index and the dist2) and counted by
  * dist2 as they are listed (skellevel_high; start[d + 1] the cells of value d), then
  * counting-sorted into order after the lowest level's rest (nrest cells): the distance
@@ -48,27 +49,33 @@ static inline void sort_place4(int32_t *start, int32_t *order, int32_t k0, int32
  * cells before it in the four with the same key; so the chain through start[], a
  * store forwarded to the next load, is one link a group rather than one a cell (it
  * was most of the sort's time). */
-void skelsort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start, int32_t *order,
-                     int32_t maxd, int32_t nrest, int32_t *high)
+int32_t skelsort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start, int32_t *order,
+                        int32_t maxd, int32_t nrest, int32_t *high, int32_t *upto)
 {
 	SkelLevelCount small;
 	memset(small, 0, sizeof small);
-	const int32_t nhigh = skellevel_high(lv, dist2, high, small, start);
-	assert(nhigh == lv->nhigh);
+	const int32_t nlisted = skellevel_high(lv, dist2, high, small, start);
+	assert(nlisted <= lv->nhigh);
 	for (int32_t d = 2; d < SKELLEVEL_SMALL && d <= maxd; d++)
 		for (int j = 0; j < SKELLEVEL_LANES; j++)
 			start[d + 1] += small[j][d];
 	start[2] = nrest;
 	for (int32_t d = 2; d <= maxd; d++)
 		start[d + 1] += start[d];
+	/* where the cells above each planed level's value begin (the end of the list
+	 * when no cell is) */
+	for (int j = 0; j < SKELLEVEL_PLANED; j++)
+		upto[j] =
+		    skellevel_dist2[j] < maxd ? start[skellevel_dist2[j] + 1] : nrest + nlisted;
 	int32_t k = 0;
-	for (; k + 4 <= nhigh; k += 4) {
+	for (; k + 4 <= nlisted; k += 4) {
 		const int32_t *e = high + 2 * k;
 		sort_place4(start, order, e[1], e[3], e[5], e[7], e[0], e[2], e[4], e[6]);
 	}
-	for (; k < nhigh; k++)
+	for (; k < nlisted; k++)
 		order[start[high[2 * k + 1]]++] = high[2 * k];
 	memset(start, 0, ((size_t)maxd + 2) * sizeof *start);
+	return nlisted;
 }
 
 /* skelsort_rows(t, start, order, maxd): every cell of the grid sorted by dist2

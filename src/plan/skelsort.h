@@ -7,12 +7,14 @@
 
 #include "skellevel.h"
 
-/* skelsort_listed(lv, dist2, start, order, maxd, nrest, high): the higher levels'
- * cells (dist2 above 1), listed from lv's planes into high (two values a cell), sorted
- * by dist2, ties by index, into order after the lowest level's rest (nrest cells
- * already there). start: maxd + 2 zeroed counters, left zeroed. */
-void skelsort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start, int32_t *order,
-                     int32_t maxd, int32_t nrest, int32_t *high);
+/* skelsort_listed(lv, dist2, start, order, maxd, nrest, high, upto): the higher levels'
+ * cells (dist2 above 1) but those of the planed levels (SkelLevel.planed), listed from
+ * lv's planes into high (two values a cell), sorted by dist2, ties by index, into
+ * order after the lowest level's rest (nrest cells already there); returns their
+ * number. upto[j]: the place in order where the cells of dist2 above planed level j's
+ * value (skellevel_dist2) begin. start: maxd + 2 zeroed counters, left zeroed. */
+int32_t skelsort_listed(const SkelLevel *lv, const int32_t *dist2, int32_t *start, int32_t *order,
+                        int32_t maxd, int32_t nrest, int32_t *high, int32_t *upto);
 /* skelsort_rows(dist2, w, h, pw, start, order, maxd): every cell of the w x h grid as
  * a padded index (rows pw wide, one blocked cell of padding), sorted by dist2, ties
  * by index, into order: the blocked cells first. start as above. */
