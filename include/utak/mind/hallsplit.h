@@ -28,27 +28,39 @@
  *
  * SETTLING (task (i)). Rather than claim the corner with that doubt, Utak goes and
  * touches the blob (paper 3.4.2: touch reads an object's letter, a wall's B), then
- * judges the claim again from the corner goal: a blob felt to be an object is no
- * longer asked about (objects_felt), one felt to be wall is wall to his rooms from
- * then on (objects_feel: wall_ident, screen.c counts it as verge), and the corner
- * is then the one of the hall's part he started in, where he goes on. WHY TOUCH,
- * not a look: the eye reads a free-standing stub in the fovea exactly as an
- * object; a look settles nothing the judge's rooms depend on.
- * WHY TOUCHING WAS UNRELIABLE (hall8 tried it and left the doubt): a blob seen
- * coarsely from afar is often a stub and an object beside it, read as one node;
- * seen closer, it splits into two nodes, touch feels the object's letter on one,
- * and the other, now seen in the fovea, was no longer asked about (the rule above)
- * though it was the wall that parts the hall: a false success. Now the rectangle
- * of each blob gone to is remembered (HallRun.blob), and a node with a square in
- * one is asked about whether or not the fovea has seen it since, until it is felt:
- * what the blob split into is settled piece by piece, at most HALL_TRIPS trips a
- * task. A blob with no reachable free square beside it, or past the trips, leaves
- * the doubt as it was. COST: the way to the blob and back, only on runs where the
- * doubt arises (the rule above is unchanged where it does not).
+ * judges the claim again from the corner: a blob felt to be an object is no longer
+ * asked about (objects_felt), one felt to be wall is wall to his rooms from then
+ * on (objects_feel: wall_ident, screen.c counts it as verge). WHY TOUCH, not a
+ * look: the eye reads a free-standing stub in the fovea exactly as an object.
+ * WHY TOUCHING WAS UNRELIABLE (hall8 tried it and left the doubt), found on random
+ * g51: the coarse blob was an object (touch felt its letter), and the walls that
+ * truly part the hall were two piers offset across it, seen in the fovea and so
+ * never asked about (the rule above); nor does the room map (rooms.h, a door is a
+ * valley along a skeleton edge) find a door across their diagonal gap, where the
+ * judge's watershed does. Settling the blob alone made g51 a false success. So,
+ * from the first trip on, the SUSPECTS are every object node not settled by touch,
+ * seen in the fovea or not, and one felt while a square of it in a blob gone to
+ * (HallRun.blob) is still seen only coarsely (an object and a stub beside it read
+ * as one: a look from nearby parts them); each is taken for wall alone and all at
+ * once (the door rule is not monotone: a wall more may make a side too narrow to
+ * widen beyond a narrowing), on the room map above and on the verdict's watershed
+ * restated on the same space (carryroom_watershed, the unseen as space). Those
+ * that part the hall alone are gone to, else those without which all together no
+ * longer part it, else all, the nearest by steps first, at most HALL_TRIPS trips
+ * a task; a trip that felt nothing sets off again from where it ended. With none
+ * left that parts the hall, the claim still needs, by the watershed on the fixed
+ * space (walls touch found as verge), Utak in the start's room and no floor seen
+ * in it more than the slack better (hs_beaten: a pier felt B made rooms.h cut a
+ * hall where the judge's ratio counts no door, random g256). A suspect with no
+ * way to it, or past the trips, leaves the doubt. He does not yet go on to the
+ * corner of his own half when a wall touch found parts the hall: his room map may
+ * still join the halves (hall-stub.w, hall-blob-wall.w end in honest doubts).
+ * COST: the trips, only on runs where the rule above doubts the claim (it is
+ * unchanged where it does not): 18-65 cycles on the random corners it settled.
  * Task (v) keeps the doubt: settling would mean letting go of the square seated
  * in the corner, and fetching it again if the blob were wall.
- * COMPLEXITY: O(w h) a room map of the screen for each object node seen only
- * coarsely (or in a blob gone to). */
+ * COMPLEXITY: the rule O(w h) a room map of the screen for each object node seen
+ * only coarsely; settling O(S w h log(w h)) for S suspects, per judgement. */
 #ifndef UTAK_HALLSPLIT_H
 #define UTAK_HALLSPLIT_H
 
