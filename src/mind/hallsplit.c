@@ -150,12 +150,22 @@ static bool hs_coarse_square(const Controller *c, int32_t k, Vec2 *sq)
 	return best < INFINITY;
 }
 
+/* hs_looked(c, k): node k, felt, has been looked at once already on a trip: what
+ * the fovea could not show from nearby it will not show from there again. */
+static bool hs_looked(const Controller *c, int32_t k)
+{
+	for (int i = 0; i < c->hall.looked_count; i++)
+		if (c->hall.looked[i] == (int32_t)c->model.node[k].ident)
+			return true;
+	return false;
+}
+
 /* hs_suspect(c, k): while settling, node k may be a wall that the hall's parting
  * owes to: an object node not held, and not felt, or felt while a square of it in
  * a blob gone to is still seen only coarsely (the object felt may be read as one
- * with a stub beside it, which the fovea would part from it). Seen in the fovea or not: the eye reads a free-standing
- * pier in the fovea as an object too. Touch has shown wall (objects_wall) is wall
- * on the screen already. */
+ * with a stub beside it, which the fovea would part from it; once: hs_looked).
+ * Seen in the fovea or not: the eye reads a free-standing pier in the fovea as an
+ * object too. Touch has shown wall (objects_wall) is wall on the screen already. */
 static bool hs_suspect(const Controller *c, int32_t k)
 {
 	const ModelNode *nd = &c->model.node[k];
@@ -163,7 +173,7 @@ static bool hs_suspect(const Controller *c, int32_t k)
 		return false;
 	bool felt = objects_felt(c, k);
 	Vec2 sq;
-	if (felt && !hs_coarse_square(c, k, &sq))
+	if (felt && (hs_looked(c, k) || !hs_coarse_square(c, k, &sq)))
 		return false;
 	const Screen *s = &c->screen;
 	for (int64_t q = 0; q < (int64_t)s->w * s->h; q++)
@@ -375,6 +385,8 @@ static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
 		return HALL_DOUBT;
 	Box box;
 	*at = hs_first(c, best, &box);
+	if (objects_felt(c, best) && h->looked_count < HALL_TRIPS) /* a look (hs_way) */
+		h->looked[h->looked_count++] = (int32_t)c->model.node[best].ident;
 	h->going = true;
 	h->at = best_near;
 	h->claim = p;

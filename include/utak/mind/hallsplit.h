@@ -41,10 +41,11 @@
  * from the first trip on, the SUSPECTS are every object node not settled by touch,
  * seen in the fovea or not, and one felt while a square of it in a blob gone to
  * (HallRun.blob) is still seen only coarsely (an object and a stub beside it read
- * as one: a look from nearby parts them); each is taken for wall alone and all at
- * once (the door rule is not monotone: a wall more may make a side too narrow to
- * widen beyond a narrowing), on the room map above and on the verdict's watershed
- * restated on the same space (carryroom_watershed, the unseen as space). Those
+ * as one: a look from nearby parts them; once each, HallRun.looked); each is
+ * taken for wall alone and all at once (the door rule is not monotone: a wall
+ * more may make a side too narrow to widen beyond a narrowing), on the room map
+ * above and on the verdict's watershed restated on the same space
+ * (carryroom_watershed, the unseen as space). Those
  * that part the hall alone are gone to, else those without which all together no
  * longer part it, else all, the nearest by steps first, at most HALL_TRIPS trips
  * a task; a trip that felt nothing sets off again from where it ended. With none
@@ -56,7 +57,7 @@
  * corner of his own half when a wall touch found parts the hall: his room map may
  * still join the halves (hall-stub.w, hall-blob-wall.w end in honest doubts).
  * COST: the trips, only on runs where the rule above doubts the claim (it is
- * unchanged where it does not): 18-65 cycles on the random corners it settled.
+ * unchanged where it does not): 12-65 cycles on the random corners it settled.
  * Task (v) keeps the doubt: settling would mean letting go of the square seated
  * in the corner, and fetching it again if the blob were wall.
  * COMPLEXITY: the rule O(w h) a room map of the screen for each object node seen
@@ -82,6 +83,8 @@ typedef struct HallRun {
 	int trips;		/* trips begun this task */
 	Box blob[HALL_BLOBS];	/* rectangles (model squares, inclusive) of the blobs gone to */
 	int blob_count;
+	int32_t looked[HALL_TRIPS];	/* idents of felt objects looked at (once each) */
+	int looked_count;
 	char note[200];		/* a trip begun, for the trace (controller.c prints it) */
 	char why[200];		/* HALL_DOUBT: the doubt's words */
 } HallRun;
