@@ -287,3 +287,118 @@ bool carryroom_bend(const CarryRooms *cr, const RoomMap *rm, int32_t room, Carry
 	b->mismatch = best;
 	return true;
 }
+
+/* ---- the verdict's rooms as a watershed (carryroom_watershed) ------------------- */
+
+static const float *ws_key;
+
+/* ws_cmp: decreasing clearance, ties by increasing index. */
+static int ws_cmp(const void *pa, const void *pb)
+{
+	int32_t a = *(const int32_t *)pa, b = *(const int32_t *)pb;
+	if (ws_key[a] != ws_key[b])
+		return ws_key[a] > ws_key[b] ? -1 : 1;
+	return (a > b) - (a < b);
+}
+
+static int32_t ws_find(int32_t *parent, int32_t i)
+{
+	while (parent[i] != i)
+		i = parent[i] = parent[parent[i]];
+	return i;
+}
+
+static bool ws_wide(float peak, float c)
+{
+	return peak >= CARRYROOM_RATIO * c && peak >= c + CARRYROOM_MARGIN;
+}
+
+void carryroom_watershed(const Grid *g, int32_t *room)
+{
+	int32_t w = g->w, h = g->h;
+	int64_t n = (int64_t)w * h;
+	float *cl = util_alloc((size_t)(n > 0 ? n : 1), sizeof *cl);
+	const float d1 = 1.0f, d2 = 1.41421356f;
+	/* Clearance: two chamfer passes; off the grid is wall, a square away from
+	 * the border cells. */
+	for (int32_t y = 0; y < h; y++)
+		for (int32_t x = 0; x < w; x++) {
+			int64_t i = (int64_t)y * w + x;
+			cl[i] = g->cells[i] != GRID_FREE ? 0 : (x == 0 || y == 0 || x == w - 1 || y == h - 1) ? d1 : 1e30f;
+		}
+	for (int32_t y = 0; y < h; y++)
+		for (int32_t x = 0; x < w; x++) {
+			float *c = &cl[(int64_t)y * w + x];
+			if (x > 0 && c[-1] + d1 < *c) *c = c[-1] + d1;
+			if (y > 0 && c[-w] + d1 < *c) *c = c[-w] + d1;
+			if (x > 0 && y > 0 && c[-w - 1] + d2 < *c) *c = c[-w - 1] + d2;
+			if (x < w - 1 && y > 0 && c[-w + 1] + d2 < *c) *c = c[-w + 1] + d2;
+		}
+	for (int32_t y = h - 1; y >= 0; y--)
+		for (int32_t x = w - 1; x >= 0; x--) {
+			float *c = &cl[(int64_t)y * w + x];
+			if (x < w - 1 && c[1] + d1 < *c) *c = c[1] + d1;
+			if (y < h - 1 && c[w] + d1 < *c) *c = c[w] + d1;
+			if (x < w - 1 && y < h - 1 && c[w + 1] + d2 < *c) *c = c[w + 1] + d2;
+			if (x > 0 && y < h - 1 && c[w - 1] + d2 < *c) *c = c[w - 1] + d2;
+		}
+	int32_t *order = util_alloc((size_t)(n > 0 ? n : 1), sizeof *order);
+	int32_t *parent = util_alloc((size_t)(n > 0 ? n : 1), sizeof *parent);
+	float *peak = util_alloc((size_t)(n > 0 ? n : 1), sizeof *peak);
+	uint8_t *state = util_alloc((size_t)(n > 0 ? n : 1), 1); /* 0 not flooded, 1 in a region, 2 door */
+	int32_t m = 0;
+	for (int32_t i = 0; i < n; i++) {
+		parent[i] = i;
+		state[i] = 0;
+		if (g->cells[i] == GRID_FREE)
+			order[m++] = i;
+	}
+	ws_key = cl;
+	qsort(order, (size_t)m, sizeof *order, ws_cmp);
+	for (int32_t k = 0; k < m; k++) {
+		int32_t i = order[k], x = i % w, y = i / w, roots[4], nr = 0;
+		float c = cl[i];
+		int32_t nb[4] = {x > 0 ? i - 1 : -1, x < w - 1 ? i + 1 : -1, y > 0 ? i - w : -1, y < h - 1 ? i + w : -1};
+		for (int u = 0; u < 4; u++) {
+			if (nb[u] < 0 || state[nb[u]] != 1)
+				continue;
+			int32_t q = ws_find(parent, nb[u]);
+			bool dup = false;
+			for (int v = 0; v < nr; v++)
+				dup |= roots[v] == q;
+			if (!dup)
+				roots[nr++] = q;
+		}
+		for (int u = 1; u < nr; u++) /* the widest first */
+			if (peak[roots[u]] > peak[roots[0]]) {
+				int32_t t = roots[0];
+				roots[0] = roots[u];
+				roots[u] = t;
+			}
+		int wide = 0;
+		for (int u = 0; u < nr; u++)
+			wide += ws_wide(peak[roots[u]], c);
+		if (wide >= 2) {
+			state[i] = 2;
+			for (int u = 1; u < nr; u++)
+				if (!ws_wide(peak[roots[u]], c))
+					parent[roots[u]] = roots[0];
+			continue;
+		}
+		state[i] = 1;
+		if (nr == 0) {
+			peak[i] = c;
+			continue;
+		}
+		parent[i] = roots[0];
+		for (int u = 1; u < nr; u++)
+			parent[roots[u]] = roots[0];
+	}
+	for (int32_t i = 0; i < n; i++)
+		room[i] = state[i] == 1 ? ws_find(parent, i) : -1;
+	free(state);
+	free(peak);
+	free(parent);
+	free(order);
+	free(cl);
+}

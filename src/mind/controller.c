@@ -263,17 +263,18 @@ static bool corner_frontier(Controller *c)
 }
 
 /* corner_hall_split(c): whether a blob seen only coarsely may be a wall that parts
- * the start's room from Utak's point (hallsplit.h); if so the task fails with his
+ * the start's room from Utak's point (hallsplit.h); if so he goes to touch it
+ * (hallsplit_settle), or, when touch cannot settle it, the task fails with his
  * doubt. */
 static bool corner_hall_split(Controller *c)
 {
 	Vec2 at;
-	if (!hallsplit_parts(c, c->model.utak, &at))
-		return false;
+	HallVerdict v = hallsplit_settle(c, c->model.utak, &at);
+	if (v != HALL_DOUBT)
+		return v == HALL_GOING; /* going: the next goal is beside the blob, to touch it */
 	c->phase = PHASE_FAILED;
-	snprintf(c->why, sizeof c->why,
-		 "Utak cannot tell he is in the %s: a blob seen only coarsely, at (%.1f, %.1f), may be a wall that parts the room he started in",
-		 task_corner_name(c->task.corner), at.x, at.y);
+	snprintf(c->why, sizeof c->why, "Utak cannot tell he is in the %s: %s", task_corner_name(c->task.corner),
+		 c->hall.why);
 	return true;
 }
 
@@ -286,6 +287,7 @@ static void arrive(Controller *c)
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
 		c->room_look = c->room_following = false;
+		hallsplit_arrive(c); /* beside a blob: touch has felt it, or not (hallsplit.h) */
 		return;
 	}
 	int64_t short_by;
@@ -637,6 +639,10 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if (!c->has_task || c->phase == PHASE_DONE || c->phase == PHASE_FAILED)
 		return;
 	n += pushclear_note(c, c->note + n, sizeof c->note - (size_t)n); /* a clearing begun: why */
+	if (c->hall.note[0]) { /* a blob gone to, to touch it (hallsplit.h) */
+		n += snprintf(c->note + n, sizeof c->note - (size_t)n, "%s", c->hall.note);
+		c->hall.note[0] = '\0';
+	}
 	if (c->rival.note[0]) { /* a rival gone to, or settled (rival.h) */
 		n += snprintf(c->note + n, sizeof c->note - (size_t)n, "%s", c->rival.note);
 		c->rival.note[0] = '\0';

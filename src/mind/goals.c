@@ -22,6 +22,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/carryroom.h"
+#include "utak/mind/hallsplit.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
@@ -796,6 +797,8 @@ void goals_choose(Controller *c, GoalResult *out)
 	int32_t ri, rj;
 	switch (c->surveying ? TASK_GO_CORNER : c->task.kind) {
 	case TASK_GO_CORNER:
+		if (!c->surveying && hallsplit_goal(c, dist, out))
+			break; /* beside a blob that may part the hall, to touch it (hallsplit.h) */
 		out->found = goals_corner(c, g, dist, &rm, start_room, &out->goal);
 		/* A corner only of a room the model can tell is the start's: else a look
 		 * first at the wall between, at fine resolution (roomdoubt.h). */

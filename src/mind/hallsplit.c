@@ -1,21 +1,36 @@
 /* hallsplit.c - whether a blob the eye has seen only coarsely may be a wall that parts
- * the hall Utak started in, before he claims its corner (paper 3.4.2; issue 13 items
- * 3 and 6; the rule is in hallsplit.h). CONTROLLER SIDE: the world model, its screen
- * and what touch has felt.
+ * the hall Utak started in, before he claims its corner, and settling it by touch
+ * (paper 3.4.2; issue 13 items 3 and 6; the rule is in hallsplit.h). CONTROLLER
+ * SIDE: the world model, its screen and what touch has felt.
  *
- * ALGORITHM. For each object node not held, not felt, and with no square seen in the
- * fovea: the room map of the screen's fixed space seen, that node taken for wall
- * (goals_roommap_find), merged by the verdict's door rule keeping every narrowing
- * that may yet be a door (carryroom_merge_maybe); the node parts the start from p
- * when their merged rooms differ. The first such node, by index, is reported.
- * MEMORY: one room map of the screen at a time, freed before the next.
- * COMPLEXITY: O(w h) for each object node seen only coarsely (a room map each). */
+ * ALGORITHM. The rule: for each object node not held, not felt, and with no square
+ * seen in the fovea, the room map of the screen's fixed space seen, that node taken
+ * for wall (goals_roommap_find), merged by the verdict's door rule keeping every
+ * narrowing that may yet be a door (carryroom_merge_maybe); the node parts the
+ * start from p when their merged rooms differ. The first such node, by index, is
+ * reported.
+ * Settling (task (i)): the SUSPECTS (hs_suspect) are taken for wall each alone and
+ * all at once, on that map and on the verdict's watershed restated on the same
+ * space (carryroom_watershed); the ones to settle are those that part the hall
+ * alone, else those without which the whole set no longer parts it, else all;
+ * the nearest by steps with a way to it (hs_way: beside it for touch, or a look)
+ * is gone to, and its rectangle remembered. With none left that parts it, the
+ * claim is still checked on the watershed (hs_beaten).
+ * MEMORY: one room map of the screen at a time, freed before the next; the
+ * watershed 17 bytes a screen cell while it works.
+ * COMPLEXITY: the rule O(w h) for each object node seen only coarsely; settling
+ * O(S w h log(w h)) for S suspects, only on the arrivals of a task whose claim the
+ * rule doubted. */
 #include "utak/mind/hallsplit.h"
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "utak/base/util.h"
 #include "utak/mind/carryroom.h"
+#include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 
@@ -40,46 +55,413 @@ static bool hs_parted(const CarryRooms *cr, const RoomMap *rm, const Screen *s, 
 	return n > 0;
 }
 
-bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
+/* hs_in_blob(c, x, y): model square (x, y) lies in the rectangle of a blob gone to. */
+static bool hs_in_blob(const Controller *c, int32_t x, int32_t y)
 {
-	const Screen *s = &c->screen;
-	const WorldModel *m = &c->model;
-	int32_t si, sj;
-	if (np <= 0 || !goals_cell_of(s, c->start, &si, &sj))
-		return false;
-	int64_t n = (int64_t)s->w * s->h;
-	for (int32_t k = 0; k < m->node_count; k++) {
-		if (m->node[k].kind != NODE_OBJECT || m->node[k].held || objects_felt(c, k))
-			continue;
-		/* The room map with k taken for wall, if no square of k has been seen in
-		 * the fovea; `first` is k's first square, for the doubt's words. */
-		RoomMap rm;
-		grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
-		int64_t first = -1;
-		bool fine = false;
-		for (int64_t q = 0; q < n && !fine; q++) {
-			int32_t x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
-			if (s->label[q] == k) {
-				first = first < 0 ? q : first;
-				fine = worldmodel_evidence(m, x, y).res >= WORLDMODEL_RES_FOVEA;
-			} else if (s->label[q] != SCREEN_UNKNOWN && s->fixed.cells[q] == GRID_FREE)
-				rm.known.cells[q] = GRID_FREE;
-		}
-		if (first < 0 || fine) {
-			grid_free(&rm.known);
-			continue;
-		}
-		goals_roommap_find(&rm);
-		CarryRooms cr;
-		carryroom_merge_maybe(&rm, s, &cr);
-		int32_t a = carryroom_at(&cr, &rm, si, sj);
-		bool parted = a >= 0 && hs_parted(&cr, &rm, s, a, p, np);
-		carryroom_free(&cr);
-		goals_roommap_free(&rm);
-		if (parted) {
-			*at = goals_centre(s->x0 + (int32_t)(first % s->w), s->y0 + (int32_t)(first / s->w));
+	for (int b = 0; b < c->hall.blob_count; b++) {
+		const Box *r = &c->hall.blob[b];
+		if (x >= r->lo.x && x <= r->hi.x && y >= r->lo.y && y <= r->hi.y)
 			return true;
-		}
 	}
 	return false;
 }
+
+/* hs_node_parts(c, k, si, sj, p, np, box, first): whether node k parts the start
+ * (screen cell si, sj) from the np points p (the rule; hallsplit.h); *box is k's
+ * rectangle of model squares, *first the centre of its first square on the screen
+ * (by row), for the doubt's words. */
+static bool hs_node_parts(const Controller *c, int32_t k, int32_t si, int32_t sj, const Vec2 *p, int32_t np,
+			  Box *box, Vec2 *first)
+{
+	const Screen *s = &c->screen;
+	const WorldModel *m = &c->model;
+	if (m->node[k].kind != NODE_OBJECT || m->node[k].held)
+		return false;
+	int64_t n = (int64_t)s->w * s->h;
+	/* The room map with k taken for wall, if it is not felt and no square of k has
+	 * been seen in the fovea; or if a square lies in a blob gone to, and it is not
+	 * felt, or felt while a square of it is still unseen in the fovea (SETTLING:
+	 * the object felt may be read as one with a stub the eye has not yet parted
+	 * from it). */
+	if (objects_felt(c, k))
+		return false;
+	RoomMap rm;
+	grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
+	int64_t count = 0;
+	bool fine = false;
+	for (int64_t q = 0; q < n; q++) {
+		int32_t x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
+		if (s->label[q] == k) {
+			if (count++ == 0) {
+				*box = (Box){{x, y}, {x, y}};
+				*first = goals_centre(x, y);
+			}
+			box->lo.x = x < box->lo.x ? x : box->lo.x;
+			box->lo.y = y < box->lo.y ? y : box->lo.y;
+			box->hi.x = x > box->hi.x ? x : box->hi.x;
+			box->hi.y = y > box->hi.y ? y : box->hi.y;
+			fine |= worldmodel_evidence(m, x, y).res >= WORLDMODEL_RES_FOVEA;
+		} else if (s->label[q] != SCREEN_UNKNOWN && s->fixed.cells[q] == GRID_FREE)
+			rm.known.cells[q] = GRID_FREE;
+	}
+	if (count == 0 || fine) {
+		grid_free(&rm.known);
+		return false;
+	}
+	goals_roommap_find(&rm);
+	CarryRooms cr;
+	carryroom_merge_maybe(&rm, s, &cr);
+	int32_t a = carryroom_at(&cr, &rm, si, sj);
+	bool parted = a >= 0 && hs_parted(&cr, &rm, s, a, p, np);
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	return parted;
+}
+
+bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
+{
+	int32_t si, sj;
+	if (np <= 0 || !goals_cell_of(&c->screen, c->start, &si, &sj))
+		return false;
+	for (int32_t k = 0; k < c->model.node_count; k++) {
+		Box box;
+		if (hs_node_parts(c, k, si, sj, p, np, &box, at))
+			return true;
+	}
+	return false;
+}
+
+/* hs_coarse_square(c, k, sq): a square of node k on the screen not seen in the fovea,
+ * the nearest Utak (*sq its centre); false when there is none. */
+static bool hs_coarse_square(const Controller *c, int32_t k, Vec2 *sq)
+{
+	const Screen *s = &c->screen;
+	double best = INFINITY;
+	for (int64_t q = 0; q < (int64_t)s->w * s->h; q++) {
+		if (s->label[q] != k)
+			continue;
+		int32_t x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
+		double d = goals_distance(goals_centre(x, y), c->model.utak);
+		if (worldmodel_evidence(&c->model, x, y).res < WORLDMODEL_RES_FOVEA && d < best) {
+			best = d;
+			*sq = goals_centre(x, y);
+		}
+	}
+	return best < INFINITY;
+}
+
+/* hs_looked(c, k): node k, felt, has been looked at once already on a trip: what
+ * the fovea could not show from nearby it will not show from there again. */
+static bool hs_looked(const Controller *c, int32_t k)
+{
+	for (int i = 0; i < c->hall.looked_count; i++)
+		if (c->hall.looked[i] == (int32_t)c->model.node[k].ident)
+			return true;
+	return false;
+}
+
+/* hs_suspect(c, k): while settling, node k may be a wall that the hall's parting
+ * owes to: an object node not held, and not felt, or felt while a square of it in
+ * a blob gone to is still seen only coarsely (the object felt may be read as one
+ * with a stub beside it, which the fovea would part from it; once: hs_looked).
+ * Seen in the fovea or not: the eye reads a free-standing pier in the fovea as an
+ * object too. Touch has shown wall (objects_wall) is wall on the screen already. */
+static bool hs_suspect(const Controller *c, int32_t k)
+{
+	const ModelNode *nd = &c->model.node[k];
+	if (nd->kind != NODE_OBJECT || nd->held || objects_wall(c, k))
+		return false;
+	bool felt = objects_felt(c, k);
+	Vec2 sq;
+	if (felt && (hs_looked(c, k) || !hs_coarse_square(c, k, &sq)))
+		return false;
+	const Screen *s = &c->screen;
+	for (int64_t q = 0; q < (int64_t)s->w * s->h; q++)
+		if (s->label[q] == k && (!felt || hs_in_blob(c, s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w))))
+			return true;
+	return false; /* (off the screen: no part of the rooms judged) */
+}
+
+/* hs_joint_parts(c, wall, si, sj, p): whether, with every node k that wall[k] marks
+ * taken for wall at once, the start (screen cell si, sj) and p lie in different
+ * merged rooms (the rule's map and merge, hallsplit.h). */
+static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, Vec2 p)
+{
+	const Screen *s = &c->screen;
+	int64_t n = (int64_t)s->w * s->h;
+	RoomMap rm;
+	grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
+	for (int64_t q = 0; q < n; q++) {
+		int32_t l = s->label[q];
+		if (l != SCREEN_UNKNOWN && !(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE)
+			rm.known.cells[q] = GRID_FREE;
+	}
+	goals_roommap_find(&rm);
+	CarryRooms cr;
+	carryroom_merge_maybe(&rm, s, &cr);
+	int32_t a = carryroom_at(&cr, &rm, si, sj);
+	bool parted = a >= 0 && hs_parted(&cr, &rm, s, a, &p, 1);
+	/* ... or by the verdict's watershed restated on the same space, the unseen
+	 * taken for floor: rooms.h finds no door across a diagonal narrowing between
+	 * two offset piers (carryroom_watershed). */
+	int32_t pi, pj;
+	if (!parted && goals_cell_of(s, p, &pi, &pj)) {
+		Grid g;
+		grid_init(&g, s->w, s->h, GRID_BLOCKED);
+		for (int64_t q = 0; q < n; q++) {
+			int32_t l = s->label[q];
+			if (!(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE)
+				g.cells[q] = GRID_FREE;
+		}
+		int32_t *room = util_alloc((size_t)n, sizeof *room);
+		carryroom_watershed(&g, room);
+		int32_t ra = room[(int64_t)sj * s->w + si], rb = room[(int64_t)pj * s->w + pi];
+		parted = ra >= 0 && rb != ra;
+		free(room);
+		grid_free(&g);
+	}
+	carryroom_free(&cr);
+	goals_roommap_free(&rm);
+	return parted;
+}
+
+/* hs_first(c, k, box): the centre of node k's first square on the screen (by row),
+ * and its rectangle of model squares. */
+static Vec2 hs_first(const Controller *c, int32_t k, Box *box)
+{
+	const Screen *s = &c->screen;
+	Vec2 first = {0, 0};
+	int64_t count = 0;
+	for (int64_t q = 0; q < (int64_t)s->w * s->h; q++) {
+		if (s->label[q] != k)
+			continue;
+		int32_t x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
+		if (count++ == 0) {
+			*box = (Box){{x, y}, {x, y}};
+			first = goals_centre(x, y);
+		}
+		box->lo.x = x < box->lo.x ? x : box->lo.x;
+		box->lo.y = y < box->lo.y ? y : box->lo.y;
+		box->hi.x = x > box->hi.x ? x : box->hi.x;
+		box->hi.y = y > box->hi.y ? y : box->hi.y;
+	}
+	return first;
+}
+
+/* hs_way(c, k, dist, near): where to go to settle node k: felt (an object with a
+ * square seen only coarsely), a look from the free square nearest that square, so
+ * that a stub read as one with it is parted from it; else beside it, where touch
+ * reaches it. */
+static bool hs_way(const Controller *c, int32_t k, const int32_t *dist, Vec2 *near)
+{
+	Vec2 sq;
+	if (objects_felt(c, k) && hs_coarse_square(c, k, &sq))
+		return goals_near(c, sq, dist, near);
+	return goals_beside(c, k, dist, near);
+}
+
+/* hs_beaten(c, p, beat): once a trip has been made, whether p is not in the start's
+ * room by the verdict's watershed restated on the screen's fixed space
+ * (carryroom_watershed: walls touch has shown are verge there, objects and the
+ * unseen space; *out set), or floor seen in that room scores more than
+ * CONTROLLER_CORNER_SLACK above p's square (*beat the best such). WHY: a wall
+ * found by touch may make rooms.h cut the hall at a narrowing the verdict's ratio
+ * counts no door, its far side not yet seen whole (random g256: a pier 4 x 6
+ * across a hall 32 wide, felt B; Utak claimed the corner of its near side, 19
+ * short); and a stub felt B may part the hall where rooms.h finds no door (made-up
+ * variants of hall-stub.w: he claimed the far half's corner). */
+static bool hs_beaten(const Controller *c, Vec2 p, Vec2 *beat, bool *out)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj, px, py;
+	if (!goals_cell_of(s, c->start, &si, &sj))
+		return false;
+	int64_t n = (int64_t)s->w * s->h;
+	int32_t *room = util_alloc((size_t)n, sizeof *room);
+	carryroom_watershed(&s->fixed, room);
+	int32_t a = room[(int64_t)sj * s->w + si];
+	px = (int32_t)floor(p.x), py = (int32_t)floor(p.y);
+	int64_t got = goals_corner_score(c->task.corner, px, py), best = INT64_MIN;
+	for (int64_t q = 0; q < n && a >= 0; q++)
+		if (room[q] == a && s->label[q] == SCREEN_SPACE) {
+			int32_t x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
+			int64_t v = goals_corner_score(c->task.corner, x, y);
+			if (v > best) {
+				best = v;
+				*beat = goals_centre(x, y);
+			}
+		}
+	int32_t pi, pj;
+	*out = !goals_cell_of(s, p, &pi, &pj) || room[(int64_t)pj * s->w + pi] != a;
+	free(room);
+	return *out || (best != INT64_MIN && best - got > CONTROLLER_CORNER_SLACK);
+}
+
+/* hs_settle(c, p, at): hallsplit_settle without the verdict's check (hs_beaten);
+ * also asked on reaching a trip's goal (hallsplit_arrive). */
+static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
+{
+	const Screen *s = &c->screen;
+	HallRun *h = &c->hall;
+	int32_t si, sj, ui, uj;
+	if (!goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, c->model.utak, &ui, &uj))
+		return HALL_CLEAR;
+	/* Not yet settling: the rule itself (a blob seen only coarsely), as for the
+	 * doubt; where it finds none, nothing changes. */
+	if (h->trips == 0 && !hallsplit_parts(c, p, at))
+		return HALL_CLEAR;
+	/* Settling: every suspect taken for wall at once (a pier and a stub may part
+	 * the hall only together); those without which it is no longer parted are
+	 * the ones to settle, the nearest first (all of them, when no one alone
+	 * undoes the parting). */
+	int32_t nn = c->model.node_count;
+	bool *wall = util_alloc((size_t)(nn > 0 ? nn : 1), sizeof *wall);
+	int32_t suspects = 0;
+	for (int32_t k = 0; k < nn; k++)
+		suspects += wall[k] = hs_suspect(c, k);
+	if (suspects == 0) {
+		free(wall);
+		return HALL_CLEAR;
+	}
+	/* The rule's measure is not monotone (a wall more may narrow a side so that
+	 * a narrowing is no door): each suspect alone is asked too. Those that part
+	 * it alone are the ones to settle; else those without which the whole set
+	 * no longer parts it; else all. */
+	bool *one = util_alloc((size_t)nn, sizeof *one), *key = util_alloc((size_t)nn, sizeof *key);
+	bool *alone = util_alloc((size_t)nn, sizeof *alone);
+	int32_t ones = 0, keys = 0;
+	for (int32_t k = 0; k < nn; k++) {
+		if (!wall[k])
+			continue;
+		one[k] = true;
+		ones += alone[k] = hs_joint_parts(c, one, si, sj, p);
+		one[k] = false;
+	}
+	bool joint = hs_joint_parts(c, wall, si, sj, p);
+	if (ones == 0 && !joint) {
+		free(alone);
+		free(key);
+		free(one);
+		free(wall);
+		return HALL_CLEAR;
+	}
+	for (int32_t k = 0; k < nn && ones == 0; k++) {
+		if (!wall[k])
+			continue;
+		wall[k] = false;
+		keys += key[k] = !hs_joint_parts(c, wall, si, sj, p);
+		wall[k] = true;
+	}
+	for (int32_t k = 0; k < nn; k++)
+		key[k] = ones > 0 ? alone[k] : keys > 0 ? key[k] : wall[k];
+	free(alone);
+	free(one);
+	int32_t *dist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *dist);
+	goals_reach(&c->screen.free, ui, uj, dist);
+	int32_t best = -1, best_d = INT32_MAX;
+	Vec2 best_near = {0, 0};
+	bool named = h->trips == 0; /* at first, the doubt's words are the rule's (hallsplit_parts) */
+	for (int32_t k = 0; k < nn; k++) {
+		Vec2 near;
+		int32_t ni, nj;
+		if (!key[k])
+			continue;
+		if (!named) { /* else the first to settle's */
+			Box box;
+			*at = hs_first(c, k, &box);
+			named = true;
+		}
+		if (h->trips >= HALL_TRIPS || !hs_way(c, k, dist, &near) || !goals_cell_of(s, near, &ni, &nj) ||
+		    dist[nj * s->w + ni] >= best_d)
+			continue;
+		best = k;
+		best_d = dist[nj * s->w + ni];
+		best_near = near;
+	}
+	free(dist);
+	free(key);
+	free(wall);
+	if (best < 0)
+		return HALL_DOUBT;
+	Box box;
+	*at = hs_first(c, best, &box);
+	if (objects_felt(c, best) && h->looked_count < HALL_TRIPS) /* a look (hs_way) */
+		h->looked[h->looked_count++] = (int32_t)c->model.node[best].ident;
+	h->going = true;
+	h->at = best_near;
+	h->claim = p;
+	h->trips++;
+	h->blob[h->blob_count < HALL_BLOBS ? h->blob_count++ : HALL_BLOBS - 1] = box;
+	c->have_plan = false;
+	size_t n = strlen(h->note);
+	snprintf(h->note + n, sizeof h->note - n,
+		 "; an object not felt at (%.1f, %.1f) may be a wall that parts the room: going to settle it (hallsplit.h)",
+		 at->x, at->y);
+	return HALL_GOING;
+}
+
+bool hallsplit_goal(Controller *c, const int32_t *dist, GoalResult *out)
+{
+	HallRun *h = &c->hall;
+	int32_t i, j;
+	if (!h->going)
+		return false;
+	if (c->space.w != c->screen.w || c->space.h != c->screen.h) {
+		h->going = false;
+		return false;
+	}
+	if (!goals_cell_of(&c->screen, h->at, &i, &j) || dist[j * c->screen.w + i] < 0) {
+		/* The square beside it, seen closer, is no longer free or reachable:
+		 * another way to what is in the blob's rectangle, if any (else the
+		 * corner judged again says what is left). */
+		const Screen *s = &c->screen;
+		const Box *b = &h->blob[h->blob_count - 1];
+		int32_t k = -1;
+		for (int64_t q = 0; q < (int64_t)s->w * s->h && k < 0; q++) {
+			int32_t l = s->label[q], x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
+			if (l >= 0 && x >= b->lo.x && x <= b->hi.x && y >= b->lo.y && y <= b->hi.y && hs_suspect(c, l))
+				k = l;
+		}
+		if (k < 0 || !hs_way(c, k, dist, &h->at)) {
+			h->going = false;
+			return false;
+		}
+	}
+	out->goal = h->at;
+	out->found = out->exploring = true;
+	return true;
+}
+
+void hallsplit_arrive(Controller *c)
+{
+	/* Still unsettled (touch felt nothing here: the blob was seen coarsely, a
+	 * square or two off), the next trip sets off from here, not from the
+	 * corner. */
+	Vec2 at;
+	if (c->hall.going) {
+		c->hall.going = false;
+		hs_settle(c, c->hall.claim, &at);
+	}
+}
+
+HallVerdict hallsplit_settle(Controller *c, Vec2 p, Vec2 *at)
+{
+	HallRun *h = &c->hall;
+	HallVerdict v = hs_settle(c, p, at);
+	if (v == HALL_DOUBT)
+		snprintf(h->why, sizeof h->why, "%s, at (%.1f, %.1f), may be a wall that parts the room he started in",
+			 h->trips == 0 ? "a blob seen only coarsely" : "an object touch has not settled", at->x, at->y);
+	bool out = false;
+	if (v == HALL_CLEAR && h->trips > 0 && hs_beaten(c, p, at, &out)) {
+		v = HALL_DOUBT;
+		if (out)
+			snprintf(h->why, sizeof h->why,
+				 "by the verdict's rule, with the walls touch found, he is not in the room he started in");
+		else
+			snprintf(h->why, sizeof h->why,
+				 "floor that would beat it, at (%.1f, %.1f), is of the room he started in by the verdict's rule, with the walls touch found",
+				 at->x, at->y);
+	}
+	return v;
+}
+

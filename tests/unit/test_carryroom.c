@@ -9,7 +9,9 @@
  * bend, or none where the judge finds none (legs too wide, too short, a straight
  * corridor, a plain room). Seen in part (the far side of a room never seen), the
  * narrowings carryroom_merge_maybe keeps are the ones that may yet be doors: a
- * pocket seen whole is no door whatever lies beyond. */
+ * pocket seen whole is no door whatever lies beyond. And the verdict's watershed
+ * restated whole (carryroom_watershed, for hallsplit.h) parts halls with piers as
+ * the judge does. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -231,11 +233,72 @@ TEST_CASE(merge_maybe_keeps_only_what_may_be_a_door)
 	}
 }
 
+TEST_CASE(watershed_agrees_with_the_judge)
+{
+	/* carryroom_watershed (hallsplit.h's check) on the TABLE's own grid: halls
+	 * with 1 to 4 free-standing piers at random (offset pairs across the hall
+	 * among them, whose narrowing lies across a diagonal), every square the
+	 * judge puts in a room is in one of Utak's, squares of one judge room in one
+	 * of his, of two in two (his door cells are the judge's door squares; the
+	 * judge's doorways, which belong to no room, are not compared). */
+	oracle_seed = 13;
+	int parted = 0;
+	for (int t = 0; t < 80; t++) {
+		int W = 20 + oracle_rand_below(40), H = 20 + oracle_rand_below(40), piers = 1 + oracle_rand_below(4);
+		char text[1024];
+		int n = snprintf(text, sizeof text, "table %d %d\n", W, H);
+		for (int k = 0; k < piers; k++) {
+			int pw = 1 + oracle_rand_below(W / 2), ph = 1 + oracle_rand_below(H / 2);
+			int x = 3 + oracle_rand_below(W - pw - 4), y = 3 + oracle_rand_below(H - ph - 4);
+			n += snprintf(text + n, sizeof text - (size_t)n, "wall %d %d %d %d %d %d %d %d\n", x, y, x + pw, y,
+				      x + pw, y + ph, x, y + ph);
+		}
+		snprintf(text + n, sizeof text - (size_t)n, "utak 1.5 1.5 north\n"); /* (no pier reaches it) */
+		load(text);
+		JudgeRooms jr;
+		judge_rooms_find(&jr, &table);
+		Grid g;
+		grid_init(&g, table.w, table.h, GRID_BLOCKED);
+		for (int32_t y = 0; y < table.h; y++)
+			for (int32_t x = 0; x < table.w; x++)
+				if (table_owner(&table, x, y) != TABLE_VERGE)
+					g.cells[y * table.w + x] = GRID_FREE;
+		int64_t cells = (int64_t)table.w * table.h;
+		int32_t *mine = malloc((size_t)cells * sizeof *mine), *of = malloc((size_t)(jr.count + 1) * sizeof *of);
+		carryroom_watershed(&g, mine);
+		for (int32_t r = 0; r < jr.count; r++)
+			of[r] = -2;
+		bool same = true;
+		for (int64_t i = 0; i < cells && same; i++) {
+			int32_t r = jr.room[i];
+			if (r < 0)
+				continue;
+			same = mine[i] >= 0 && (of[r] == -2 || of[r] == mine[i]);
+			of[r] = mine[i];
+		}
+		for (int32_t a = 0; a < jr.count && same; a++)
+			for (int32_t b = a + 1; b < jr.count && same; b++)
+				same = of[a] != of[b] || of[a] == -2;
+		if (!same)
+			fprintf(stderr, "  world %d:\n%s", t, text);
+		TEST_CHECK(same);
+		parted += jr.count > 1;
+		free(of);
+		free(mine);
+		grid_free(&g);
+		judge_rooms_free(&jr);
+		unload();
+	}
+	fprintf(stderr, "  %d halls of 80 parted into rooms by their piers\n", parted);
+	TEST_CHECK(parted >= 10);
+}
+
 int main(void)
 {
 	(void)act; /* the fixture's motor helper: not needed here */
 	TEST_RUN(rooms_agree_with_the_judge);
 	TEST_RUN(l_shaped_corridors_agree_with_the_judge);
 	TEST_RUN(merge_maybe_keeps_only_what_may_be_a_door);
+	TEST_RUN(watershed_agrees_with_the_judge);
 	return TEST_EXIT();
 }

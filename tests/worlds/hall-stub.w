@@ -8,8 +8,10 @@
 # walks to his north-east corner (the table's south-west) along the west wall and
 # sees the stub only with the outer zones of the retina, as an object: space to his
 # rooms, so his model holds one room. Before hallsplit.h he claimed the corner of
-# the south room (a false success); now, the stub taken for wall parting his start
-# from that corner, he doubts it.
+# the south room (a false success); then, the stub taken for wall parting his start
+# from that corner, he doubted it; now he goes and touches the stub, feels B, and by
+# the verdict's rule restated on his model (the stub wall) doubts the corner again,
+# floor of his own half beating it: an honest failure (he does not yet go on).
 table 43 110
 wall 23 57 15 57 15 55 23 55
 utak 38.5 92.5 south

@@ -93,4 +93,20 @@ typedef struct CarryBend {
  * rule above); its legs and bend in b if so. COMPLEXITY: O(w h). */
 bool carryroom_bend(const CarryRooms *cr, const RoomMap *rm, int32_t room, CarryBend *b);
 
+/* carryroom_watershed(g, room): the verdict's rooms restated whole on grid g (free
+ * cells space, the rest and off the grid wall), not through rooms.h's doors: the
+ * clearance of each free cell (its distance to the nearest blocked centre, 8-
+ * neighbour chamfer, steps 1 and sqrt 2), the cells flooded by decreasing
+ * clearance (ties by index), each joining the regions of its flooded 4-neighbours
+ * unless two of them have a peak p >= CARRYROOM_RATIO c and p >= c +
+ * CARRYROOM_MARGIN (c its clearance): then it is a door cell and joins none (the
+ * narrow regions merge into the widest). room[i] names the region (one of its
+ * cells' indices), -1 for a blocked or door cell. WHY: rooms.h finds a door as a valley along the
+ * skeleton's pathgraph; where two piers stand offset across a hall, the narrowing
+ * lies across a diagonal that no skeleton edge runs along, and rooms.h finds no
+ * door where the judge's watershed does (random g51: hallsplit.h's settling).
+ * Doorways are not marked. COMPLEXITY: O(w h log(w h)). MEMORY: 17 bytes a cell
+ * while it works. */
+void carryroom_watershed(const Grid *g, int32_t *room);
+
 #endif

@@ -19,6 +19,7 @@
 #include "utak/impression.h"
 #include "utak/plan/path.h"
 #include "utak/mind/planner.h"
+#include "utak/mind/hallsplit.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/regions.h"
@@ -213,6 +214,8 @@ typedef struct Controller {
 	ProbeRun probe;
 	/* Settling a doubt about another object by going to it (rival.h). */
 	RivalRun rival;
+	/* Settling a hall doubt by touching the blob (hallsplit.h). */
+	HallRun hall;
 	ShapeMemo memo[CONTROLLER_MEMOS];
 	int memo_next;		/* the entry to write next (the oldest) */
 	char note[2048];	/* what this cycle's perception and planning did (and the plan) */

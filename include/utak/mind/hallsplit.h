@@ -24,28 +24,103 @@
  * with a doubt (controller.c). For a push (task (v)) the points are the held
  * object's squares that reach the corner, not Utak's: the judge counts the
  * object's squares in the start's room; the doubt stands when the node parts the
- * start from every one of them (push.c held_room_split). He does not go and touch the blob: a touch visit
- * (tried) cost 14-29% more cycles on the random corner runs, and the coarse blob,
- * seen closer, splits into other nodes (a stub beside an object reads as one blob
- * from afar), so the touch often felt the object and left the wall unsettled. A
- * node once seen in the fovea is not asked about: the model's reading of it as an
- * object stands (the cost of asking about every object not felt is a doubt on a
- * quarter of the corner runs). COMPLEXITY: O(w h) a room map of the screen for each
- * object node seen only coarsely. */
+ * start from every one of them (push.c held_room_split).
+ *
+ * SETTLING (task (i)). Rather than claim the corner with that doubt, Utak goes and
+ * touches the blob (paper 3.4.2: touch reads an object's letter, a wall's B), then
+ * judges the claim again from the corner: a blob felt to be an object is no longer
+ * asked about (objects_felt), one felt to be wall is wall to his rooms from then
+ * on (objects_feel: wall_ident, screen.c counts it as verge). WHY TOUCH, not a
+ * look: the eye reads a free-standing stub in the fovea exactly as an object.
+ * WHY TOUCHING WAS UNRELIABLE (hall8 tried it and left the doubt), found on random
+ * g51: the coarse blob was an object (touch felt its letter), and the walls that
+ * truly part the hall were two piers offset across it, seen in the fovea and so
+ * never asked about (the rule above); nor does the room map (rooms.h, a door is a
+ * valley along a skeleton edge) find a door across their diagonal gap, where the
+ * judge's watershed does. Settling the blob alone made g51 a false success. So,
+ * from the first trip on, the SUSPECTS are every object node not settled by touch,
+ * seen in the fovea or not, and one felt while a square of it in a blob gone to
+ * (HallRun.blob) is still seen only coarsely (an object and a stub beside it read
+ * as one: a look from nearby parts them; once each, HallRun.looked); each is
+ * taken for wall alone and all at once (the door rule is not monotone: a wall
+ * more may make a side too narrow to widen beyond a narrowing), on the room map
+ * above and on the verdict's watershed restated on the same space
+ * (carryroom_watershed, the unseen as space). Those
+ * that part the hall alone are gone to, else those without which all together no
+ * longer part it, else all, the nearest by steps first, at most HALL_TRIPS trips
+ * a task; a trip that felt nothing sets off again from where it ended. With none
+ * left that parts the hall, the claim still needs, by the watershed on the fixed
+ * space (walls touch found as verge), Utak in the start's room and no floor seen
+ * in it more than the slack better (hs_beaten: a pier felt B made rooms.h cut a
+ * hall where the judge's ratio counts no door, random g256). A suspect with no
+ * way to it, or past the trips, leaves the doubt. He does not yet go on to the
+ * corner of his own half when a wall touch found parts the hall: his room map may
+ * still join the halves (hall-stub.w, hall-blob-wall.w end in honest doubts).
+ * COST: the trips, only on runs where the rule above doubts the claim (it is
+ * unchanged where it does not): 12-65 cycles on the random corners it settled.
+ * Task (v) keeps the doubt: settling would mean letting go of the square seated
+ * in the corner, and fetching it again if the blob were wall.
+ * COMPLEXITY: the rule O(w h) a room map of the screen for each object node seen
+ * only coarsely; settling O(S w h log(w h)) for S suspects, per judgement. */
 #ifndef UTAK_HALLSPLIT_H
 #define UTAK_HALLSPLIT_H
 
 #include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
 
-#include "utak/mind/controller.h"
+#include "utak/base/geom.h"
+
+/* Trips to touch a blob a task, at most, and blobs remembered (their rectangles). */
+#define HALL_TRIPS 4
+#define HALL_BLOBS HALL_TRIPS
+
+/* A hall doubt being settled by touch (SETTLING above); in the Controller. */
+typedef struct HallRun {
+	bool going;		/* the goal is the free square beside a blob, kept until reached */
+	Vec2 at;		/* ... that square's centre, model frame */
+	Vec2 claim;		/* the point whose claim is in doubt */
+	int trips;		/* trips begun this task */
+	Box blob[HALL_BLOBS];	/* rectangles (model squares, inclusive) of the blobs gone to */
+	int blob_count;
+	int32_t looked[HALL_TRIPS];	/* idents of felt objects looked at (once each) */
+	int looked_count;
+	char note[200];		/* a trip begun, for the trace (controller.c prints it) */
+	char why[200];		/* HALL_DOUBT: the doubt's words */
+} HallRun;
+
+typedef enum HallVerdict {
+	HALL_CLEAR,	/* no blob parts the hall: the claim stands */
+	HALL_GOING,	/* one may: Utak goes to touch it (c->hall.at the goal) */
+	HALL_DOUBT,	/* one may, and touch cannot settle it: the claim is doubted */
+} HallVerdict;
+
+struct Controller;
+struct GoalResult;
 
 /* hallsplit_parts(c, p, at): whether a node parts the start from p on c->screen (the
  * rule above); *at is a square of the first such node, by node index. */
-bool hallsplit_parts(const Controller *c, Vec2 p, Vec2 *at);
+bool hallsplit_parts(const struct Controller *c, Vec2 p, Vec2 *at);
 /* hallsplit_parts_all(c, p, n, at): the same for n points: whether one node parts
  * the start from every one of them (false when n is 0, or when a point lies on no
  * room of the map). Task (v): the held object's squares that reach the corner, for
  * the judge counts the object's squares in the start's room, not Utak's (push.c). */
-bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
+bool hallsplit_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
+
+/* hallsplit_settle(c, p, at): task (i), Utak at p, arrived at the corner: HALL_CLEAR
+ * when no blob parts the start from p; else a trip to touch the nearest such blob
+ * (by steps) that has a reachable free square beside it not yet reached, begun
+ * (HALL_GOING, c->hall set, c->have_plan cleared), or, none such or no trip left,
+ * HALL_DOUBT, its words in c->hall.why. Once a trip has been made, a claim left
+ * clear is still doubted when floor seen in the start's room by the verdict's
+ * rule restated whole (carryroom_watershed) beats p by more than the slack. */
+HallVerdict hallsplit_settle(struct Controller *c, Vec2 p, Vec2 *at);
+/* hallsplit_goal(c, dist, out): while a trip is on, its goal (exploring: arriving
+ * is a look, then the corner is chosen and judged again); false when none is, or
+ * its square can no longer be reached (the trip is then over). */
+bool hallsplit_goal(struct Controller *c, const int32_t *dist, struct GoalResult *out);
+/* hallsplit_arrive(c): a goal reached: the trip, if one was on, is over; if what
+ * it went to is still unsettled, the next trip sets off from here. */
+void hallsplit_arrive(struct Controller *c);
 
 #endif
