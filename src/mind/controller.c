@@ -214,6 +214,44 @@ static void shun(Controller *c, Vec2 goal)
 	c->shunned[c->shunned_count++] = goal;
 }
 
+/* round_trips(c, cmd, seen): after a move while travelling, whether Utak goes to and
+ * fro: he stands on a square for the CONTROLLER_ROUND_TRIP_VISITS-th time within
+ * his last CONTROLLER_ROUND_TRIP_WINDOW moves, none of which showed anything new
+ * (seen: squares seen for the first time this cycle). WHY: the goal and the route
+ * are chosen afresh from each place he stands (paper 3.1 steps 12-13), and where
+ * the choice from one place leads to another from which it leads back (two
+ * unseen squares of a hypothesis each the nearer from the way to the other, a
+ * route free from one square and blocked from the next, an exploring goal and the
+ * task's in turn), he walked to and fro until the cycles ran out, whatever their
+ * number (random g238, tests/worlds/to-and-fro.w; g185 and g188 too). Going to and
+ * fro shows him nothing new, so the goal is given up as one reached (remember):
+ * goals_near and the frontier do not choose it again, and the next is planned.
+ * Not while going round an object, whose loop comes back to its start by design. */
+static bool round_trips(Controller *c, const MotorCommand *cmd, int32_t seen)
+{
+	if (cmd->kind != MOTOR_MOVE || c->phase != PHASE_TRAVEL || seen > 0 ||
+	    (c->task.kind == TASK_GO_ROUND && c->round_count > 0)) {
+		c->trip_count = 0;
+		return false;
+	}
+	int32_t x, y;
+	worldmodel_utak_square(&c->model, &x, &y);
+	int visits = 1;
+	for (int k = 0; k < c->trip_count; k++)
+		visits += c->trip_x[k] == x && c->trip_y[k] == y;
+	if (c->trip_count == CONTROLLER_ROUND_TRIP_WINDOW) {
+		memmove(c->trip_x, c->trip_x + 1, (CONTROLLER_ROUND_TRIP_WINDOW - 1) * sizeof *c->trip_x);
+		memmove(c->trip_y, c->trip_y + 1, (CONTROLLER_ROUND_TRIP_WINDOW - 1) * sizeof *c->trip_y);
+		c->trip_count--;
+	}
+	c->trip_x[c->trip_count] = x;
+	c->trip_y[c->trip_count++] = y;
+	if (visits < CONTROLLER_ROUND_TRIP_VISITS)
+		return false;
+	c->trip_count = 0;
+	return true;
+}
+
 /* utak_reach(c): breadth-first steps from Utak's cell over this cycle's screen
  * (goals_reach), for roomdoubt.h's checks; the caller frees. */
 static int32_t *utak_reach(const Controller *c)
@@ -632,6 +670,7 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	objects_feel(c);
 	int32_t seen = worldmodel_known_squares(&c->model);
 	int n = snprintf(c->note, sizeof c->note, "model: %+d squares seen", (int)(seen - c->seen_before));
+	bool to_and_fro = c->has_task && round_trips(c, cmd, seen - c->seen_before);
 	c->seen_before = seen;
 	if (c->model.report.corrected)
 		n += snprintf(c->note + n, sizeof c->note - (size_t)n, ", position corrected to (%.1f, %.1f)",
@@ -698,7 +737,10 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	GoalResult gr;
 	if (c->model.report.corrected)
 		reason = "Utak is not where he expected";
-	else if (round_stale(c)) {
+	else if (to_and_fro) {
+		reason = "Utak goes to and fro, seeing nothing new: the goal given up";
+		remember(c, old_goal);
+	} else if (round_stale(c)) {
 		reason = "the object to go round is not what it seemed";
 		c->round_count = 0;
 	} else if (!route_viable(c)) {

@@ -76,6 +76,11 @@
  * the object is then seated from there; otherwise the task fails). */
 #define CONTROLLER_MAX_PUSHES 512
 #define CONTROLLER_CIRCLES 6
+/* Travelling, a goal is given up as if reached when Utak stands on one square for
+ * the CONTROLLER_ROUND_TRIP_VISITS-th time within his last CONTROLLER_ROUND_TRIP_WINDOW
+ * moves and those moves showed nothing new (controller.c, round_trips). */
+#define CONTROLLER_ROUND_TRIP_WINDOW 8
+#define CONTROLLER_ROUND_TRIP_VISITS 3
 /* Seating an object in a corner: at most this many one-square pushes along each
  * axis, each until one makes no headway (the eye places walls seen from afar a
  * square or two off; the object pressed against them is where they really are). */
@@ -177,6 +182,10 @@ typedef struct Controller {
 	int32_t round_ident;	/* the object they go round (its model ident) */
 	int round_homed;	/* positions corrected by the first impression, going home */
 	Path trail;		/* where Utak believed he stood, the start and after each cycle */
+	/* Travelling: the squares stood on after the last moves that showed nothing
+	 * new (controller.c, round_trips), the oldest first. */
+	int32_t trip_x[CONTROLLER_ROUND_TRIP_WINDOW], trip_y[CONTROLLER_ROUND_TRIP_WINDOW];
+	int trip_count;
 	Box round_rect;		/* and its rectangle when they were laid out */
 	/* Bookkeeping for the trace. */
 	int cycle, replans, stuck;
