@@ -114,7 +114,9 @@ double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const
 		kept += any;
 	}
 	nplaces = kept; /* none: what was seen agrees with no place (the bound says nothing) */
-	double least = INFINITY;
+	double least = INFINITY, *vals = util_alloc(PROBE_WIDTH_DIRECTIONS, sizeof *vals);
+	for (int t = 0; t < PROBE_WIDTH_DIRECTIONS; t++)
+		vals[t] = -INFINITY;
 	for (int t = 0; t < PROBE_WIDTH_DIRECTIONS && nplaces > 0; t++) {
 		double a = PROBE_QUARTER * 2 * t / PROBE_WIDTH_DIRECTIONS;
 		double ux = cos(a), uy = sin(a), l1 = fabs(ux) + fabs(uy);
@@ -156,33 +158,27 @@ double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const
 					break;
 			}
 		}
-		least = fmin(least, worst);
-	}
-	/* Between two directions tried. Within a quadrant of u (the axes are
-	 * tried) |ux| + |uy| is linear in u, so for each place and choice of grids
-	 * the bound is the most of u.v over a fixed set of vectors v (pairs of
-	 * regions): where the v that gives it is within a quarter turn of u all
-	 * over the step, u.v is concave there and no less than at the step's ends,
-	 * so neither is the bound. Else u.v < |v| sin(step) there; and the bound
-	 * changes by at most max |v| times the angle, so once the least tried is
-	 * twice that or more, no v can be so near a quarter turn from u: the least
-	 * tried is the least. Under that, half a step's worth is taken off. */
-	double cx0 = INFINITY, cx1 = -INFINITY, cy0 = INFINITY, cy1 = -INFINITY, most_d = 0, most_slack = 0;
-	for (int32_t i = 0; i < n; i++) {
-		cx0 = fmin(cx0, reg[i].cx), cx1 = fmax(cx1, reg[i].cx);
-		cy0 = fmin(cy0, reg[i].cy), cy1 = fmax(cy1, reg[i].cy);
-	}
-	for (int32_t l = 0; l < nlooks; l++) {
-		most_d = fmax(most_d, hypot(looks[l].d.x, looks[l].d.y));
-		most_slack = fmax(most_slack, looks[l].slack);
+		vals[t] = worst;
 	}
 	free(reg);
-	/* |v|: centres apart, two pushes, two grids moved a square each way, two
-	 * cells' halves (2 x 2 at most), two slacks. */
-	double most_v = hypot(cx1 - cx0, cy1 - cy0) + 2 * most_d + 6 * sqrt(2.0) + 2 * sqrt(2.0) * most_slack;
-	double step = 2 * PROBE_QUARTER / PROBE_WIDTH_DIRECTIONS;
-	if (least < 2 * most_v * step)
-		least -= 0.5 * most_v * step;
+	/* Between two directions tried: the object's extent across u changes by at
+	 * most its diameter (no more than B's box's diagonal: it lay within B's
+	 * squares) times the angle, so between directions a and b, each bounded
+	 * (vals), it is at least the larger of the two bounds so lessened: the least
+	 * of that over the step lies where they meet, or at a direction tried when
+	 * the other bound is higher by the diameter times the step or more. (The
+	 * bound itself, the most of u.v over pairs of regions, may dip between two
+	 * directions as deep as its vectors are long: the extent's own diameter is
+	 * what limits the dip.) */
+	double diam = hypot(x1 - x0 + 1, y1 - y0 + 1), step = 2 * PROBE_QUARTER / PROBE_WIDTH_DIRECTIONS;
+	least = INFINITY;
+	for (int t = 0; t < PROBE_WIDTH_DIRECTIONS; t++) {
+		double fa = vals[t], fb = vals[(t + 1) % PROBE_WIDTH_DIRECTIONS]; /* the extent across u and -u alike */
+		double at = (fa - fb + diam * step) / (2 * diam); /* from a, where the two meet */
+		at = at < 0 ? 0 : at > step ? step : at;
+		least = fmin(least, fmax(fa - diam * at, fb - diam * (step - at)));
+	}
+	free(vals);
 	return nplaces > 0 && least > 0 ? least : 0;
 }
 

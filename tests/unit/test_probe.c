@@ -379,7 +379,7 @@ TEST_CASE(least_width_is_sound)
 /* How often three quarter-square looks show a true square of side 2.05 to 2.45
  * two wide or more (the slack of motion Utak assumes, PROBE_SLACK_RATE; exact
  * motion; the fovea's cells; Utak's point anywhere): printed, for the record
- * (probe.h, probe_least_width). Measured: 0, 0, 13, 22 and 36 of 40: the slack
+ * (probe.h, probe_least_width). Measured: 0, 0, 6, 20 and 34 of 40: the slack
  * and the quarter square's step, not the bound, leave a square under 2.3 in
  * doubt. */
 TEST_CASE(least_width_of_small_squares)

@@ -149,14 +149,14 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
  * the most over the pairs, and the least over every place of Utak's point and
  * every place of each look's grid it allows (a place of a look's grid that puts
  * a region beyond where the object, within B's closed squares before, can
- * reach is none). Within a quadrant of u the bound is the most of u.v over fixed
- * vectors, concave between two directions where it is well above 0: the least
- * over PROBE_WIDTH_DIRECTIONS directions (the axes among them) is the least
- * (probe.c says when a margin is taken off). Sound: no polygon that gave these
+ * reach is none). The bound is taken across PROBE_WIDTH_DIRECTIONS directions
+ * (the axes among them); between two of them the extent changes by at most the
+ * object's diameter (B's box's diagonal) times the angle, and the least that
+ * allows is the bound (probewidth.c). Sound: no polygon that gave these
  * looks is narrower (tests/unit/test_probe.c, least_width_is_sound, against the
  * exact width of 600 polygons projected as the TABLE does). With three quarter-
- * square looks it shows a square 2.25 on a side two wide 13 times in 40, 2.45 36
- * times, 2.15 never: the step and the slack of motion leave the rest in doubt. */
+ * square looks it shows a square 2.25 on a side two wide 6 times in 40, 2.35 20,
+ * 2.45 34, 2.15 never: the step and the slack of motion leave the rest in doubt. */
 #define PROBE_WIDTH_DIRECTIONS 720
 double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks, int32_t nlooks,
 			 const ProbeCell *cells, int32_t ncells, bool unplaced);
