@@ -10,6 +10,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/probe.h"
+#include "utak/mind/rival.h"
 #include "utak/mind/shapefit.h"
 
 static const char *doubt_own(const ObjectReading *o);
@@ -26,7 +27,7 @@ ObjectReading objects_read(Controller *c, int32_t k)
 {
 	const WorldModel *m = &c->model;
 	const ModelNode *n = &m->node[k];
-	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false, false};
+	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false, false, 0};
 	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
 	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
 	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
@@ -97,6 +98,7 @@ ObjectReading objects_read(Controller *c, int32_t k)
 	if (!known && o.squares > 0 && o.foveal == o.squares && c->examined_count < CONTROLLER_EXAMINED)
 		c->examined[c->examined_count++] = (int32_t)n->ident, known = true;
 	o.examined = known;
+	o.shown_width = probe_width(c, (int32_t)n->ident, o.centroid);
 	if (o.shape == SHAPE_SQUARE && probe_disproved(c, (int32_t)n->ident, o.centroid)) {
 		o.shape = SHAPE_NONE;
 		o.disproved = true;
@@ -260,9 +262,18 @@ static bool in_gap(const ObjectReading *o)
 }
 
 /* doubt_own(o, shape): objects_doubt's measures on one reading (NULL: none). */
+/* narrow(o): o's squares may be those of a polygon under OBJECTS_NAMED_WIDTH, by
+ * their spread standing still (shape.h, min_width) and by what a probe's looks
+ * showed (probe_least_width): both bound the width of every polygon that agrees
+ * with what was seen, and the larger holds. */
+static bool narrow(const ObjectReading *o)
+{
+	return fmax(o->reading.min_width, o->shown_width) < OBJECTS_NAMED_WIDTH - 1e-9;
+}
+
 static const char *doubt_own(const ObjectReading *o)
 {
-	if (o->reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
+	if (narrow(o))
 		return "crumb";
 	if (in_gap(o))
 		return "gap";
@@ -276,6 +287,12 @@ bool objects_misread(Controller *c, int32_t k)
 	ObjectReading o = objects_read(c, k);
 	/* doubt_own's measures but the crumb's (a crumb may yet be a small square). */
 	return o.confirmed && (in_gap(&o) || inexact(&o));
+}
+
+bool objects_narrow(Controller *c, int32_t k)
+{
+	ObjectReading o = objects_read(c, k);
+	return o.confirmed && narrow(&o);
 }
 
 bool objects_doubtful(Controller *c, int32_t k)
@@ -365,6 +382,22 @@ bool objects_rival_open(Controller *c, int32_t j)
 	return !q.examined || q.shape == c->task.shape || unnamed_crumb(c, j, &q);
 }
 
+/* pieces_shown(c, k): a probe in this task has shown an object Utak read the task's
+ * shape (a square: the probe's hypothesis) to be none, and node k has not been
+ * probed (rival.h, OWN FIRST): this world holds pieces the eye takes for squares,
+ * and k may be one (random g145: a piece disproved, the next piece read a square
+ * was pushed to the corner unprobed, a false success). */
+static bool pieces_shown(const Controller *c, int32_t k)
+{
+	return c->task.shape == SHAPE_SQUARE && c->probe.disproved_count > 0 && !rival_own_probed(c, k) &&
+	       !probe_disproved(c, (int32_t)c->model.node[k].ident, vec2(INFINITY, INFINITY));
+}
+
+bool objects_pieces_shown(Controller *c, int32_t k)
+{
+	return objects_read(c, k).confirmed && pieces_shown(c, k);
+}
+
 /* doubt_of(c, k, why, size, &rival): objects_doubt, and the node of the other
  * object the doubt names (-1 when it names none). */
 static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *rival)
@@ -392,7 +425,10 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 	}
 	if (goals_unseen_within(c, c->start, d))
 		snprintf(why, size, "space nearer the start than the %s is unseen, where another may lie", shape);
-	else if (o.reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9)
+	else if (narrow(&o) && o.shown_width > 0)
+		snprintf(why, size, "the %s's %d squares may be those of a polygon under %.0f wide (from %.2f; moved, at least %.2f), too narrow to name",
+			 shape, (int)o.squares, OBJECTS_NAMED_WIDTH, o.reading.min_width, o.shown_width);
+	else if (narrow(&o))
 		snprintf(why, size, "the %s's %d squares may be those of a polygon under %.0f wide (from %.2f), too narrow to name",
 			 shape, (int)o.squares, OBJECTS_NAMED_WIDTH, o.reading.min_width);
 	else if (o.shape == SHAPE_SQUARE && o.reading.aspect > SHAPE_SQUARE_ASPECT)
@@ -407,6 +443,9 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 	else if (o.confirmed && o.shape == c->task.shape && other_frame(c, k, &aspect))
 		snprintf(why, size, "a rectangle %.2f times as long as wide covers the %s's %d squares exactly too", aspect,
 			 shape, (int)o.squares);
+	else if (pieces_shown(c, k))
+		snprintf(why, size, "a probe showed an object here that read a %s to be none: this one, not probed, may be such a piece too",
+			 shape);
 	else if ((*rival = another_of_shape(c, k, &other)) >= 0)
 		snprintf(why, size, "another object, at (%.1f, %.1f), reads a %s too: this one may be a polygon of more corners over the same squares, and that one the %s",
 			 other.x, other.y, shape, shape);

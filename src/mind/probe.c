@@ -24,7 +24,7 @@
  * a place may put a look's grid on one of a few squares (its error of motion
  * within the slack of a cut), each weighed once a box whatever the places that
  * share it; the squares before the push, the same for every place, are weighed
- * once a box. */
+ * once a box. The least width the looks show is probewidth.c's. */
 #include "utak/mind/probe.h"
 
 #include <math.h>
@@ -37,6 +37,7 @@
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
+#include "probe_work.h"
 
 /* A rectangle to test squares against: centre, axis, half sides. */
 typedef struct ProbeRect {
@@ -63,11 +64,6 @@ static bool rect_meets(const ProbeRect *q, int32_t x, int32_t y)
 
 enum { P_A, P_W, P_H, P_X, P_Y, P_COUNT };
 
-/* A quarter turn, radians: a rectangle turned by it is one with its sides swapped. */
-#define PROBE_QUARTER 1.57079632679489661923
-
-/* The most places of the eye's grid tried: (PROBE_LOOKS + 1) pieces an axis. */
-#define PROBE_SHIFTS ((PROBE_LOOKS + 1) * (PROBE_LOOKS + 1))
 
 typedef struct ProbeBox {
 	double lo[P_COUNT], hi[P_COUNT];
@@ -217,8 +213,9 @@ static bool look_errors(ProbeSearch *s, int32_t sx, int32_t sy, int32_t l, const
  * seen; 0 when every one contradicts it. */
 static uint32_t box_alive(ProbeSearch *s, ProbeBox *b, double r)
 {
-	/* No rectangle in the box is square enough. */
-	if (b->lo[P_W] > PROBE_ASPECT * b->hi[P_H] || b->lo[P_H] > PROBE_ASPECT * b->hi[P_W])
+	/* No rectangle in the box is square enough, or wide enough. */
+	if (b->lo[P_W] > PROBE_ASPECT * b->hi[P_H] || b->lo[P_H] > PROBE_ASPECT * b->hi[P_W] ||
+	    b->hi[P_W] < PROBE_MIN_SIDE || b->hi[P_H] < PROBE_MIN_SIDE)
 		return 0;
 	double a = 0.5 * (b->lo[P_A] + b->hi[P_A]);
 	double w = 0.5 * (b->lo[P_W] + b->hi[P_W]), h = 0.5 * (b->lo[P_H] + b->hi[P_H]);
@@ -285,6 +282,73 @@ static uint32_t box_alive(ProbeSearch *s, ProbeBox *b, double r)
 
 static ProbeVerdict search(ProbeSearch *s, int32_t x0, int32_t y0, int32_t x1, int32_t y1, int64_t budget);
 
+/* probe_grid_places(looks, nlooks, unplaced, place) (probe_work.h): the places of Utak's point in his
+ * square that the looks tell apart, each with the places of the eye's grid it
+ * allows at each look (probe.h, probe_square_consistent: `unplaced`); their
+ * number. Placed (not unplaced): one, the grid where it was at every look. */
+int probe_grid_places(const ProbeLook *looks, int32_t nlooks, bool unplaced, uint16_t place[][PROBE_LOOKS])
+{
+	int n = 1;
+	for (int32_t l = 0; l < nlooks; l++) /* placed: the grid where it was */
+		place[0][l] = 1u << 4;
+	if (unplaced) {
+		/* Utak's point is somewhere in his square, (f, g) from its lower-left
+		 * corner; after look l's push it is in the square floor(f + d.x),
+		 * floor(g + d.y) from his first, and the eye's grid with it. Each axis
+		 * is cut where one of those changes; a place of the grid for each piece
+		 * of the one axis with each of the other. */
+		double cut[2][PROBE_LOOKS + 2];
+		int ncut[2];
+		for (int a = 0; a < 2; a++) {
+			ncut[a] = 0;
+			cut[a][ncut[a]++] = 0;
+			for (int32_t l = 0; l < nlooks; l++) {
+				double d = a == 0 ? looks[l].d.x : looks[l].d.y;
+				double t = -d - floor(-d); /* floor(f + d) changes at f = t */
+				if (t > 0)
+					cut[a][ncut[a]++] = t;
+			}
+			cut[a][ncut[a]++] = 1;
+			for (int i = 1; i < ncut[a]; i++) /* insertion sort: a few cuts */
+				for (int j = i; j > 0 && cut[a][j - 1] > cut[a][j]; j--) {
+					double t = cut[a][j];
+					cut[a][j] = cut[a][j - 1];
+					cut[a][j - 1] = t;
+				}
+		}
+		n = 0;
+		for (int i = 0; i + 1 < ncut[0]; i++)
+			for (int j = 0; j + 1 < ncut[1]; j++) {
+				if (cut[0][i + 1] - cut[0][i] <= 0 || cut[1][j + 1] - cut[1][j] <= 0)
+					continue; /* two cuts at one place */
+				/* The point in this piece, and motion's error within the
+				 * look's slack, put the grid at floor(f + d + e) on each axis:
+				 * within the slack of a cut, on either side of it. */
+				bool allowed = true;
+				for (int32_t l = 0; l < nlooks; l++) {
+					double sl = looks[l].slack;
+					int32_t lo[2], hi[2];
+					for (int a = 0; a < 2; a++) {
+						const double *piece = a == 0 ? &cut[0][i] : &cut[1][j];
+						double d = a == 0 ? looks[l].d.x : looks[l].d.y;
+						lo[a] = (int32_t)floor(piece[0] + d - sl);
+						hi[a] = (int32_t)ceil(piece[1] + d + sl) - 1;
+						lo[a] = lo[a] < -1 ? -1 : lo[a]; /* a slack under 3/4 of a square: */
+						hi[a] = hi[a] > 1 ? 1 : hi[a];	 /* never beyond */
+					}
+					uint16_t mask = 0;
+					for (int32_t sy = lo[1]; sy <= hi[1]; sy++)
+						for (int32_t sx = lo[0]; sx <= hi[0]; sx++)
+							mask |= (uint16_t)(1u << ((sy + 1) * 3 + sx + 1));
+					place[n][l] = mask & looks[l].shifts;
+					allowed &= place[n][l] != 0;
+				}
+				n += allowed;
+			}
+	}
+	return n;
+}
+
 ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks,
 				     int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
 				     int64_t budget)
@@ -335,63 +399,7 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 				grouped[placed++] = cells[i];
 	}
 	s->first[nlooks] = placed;
-	for (int32_t l = 0; l < nlooks; l++) /* placed: the grid where it was */
-		s->place[0][l] = 1u << 4;
-	if (unplaced) {
-		/* Utak's point is somewhere in his square, (f, g) from its lower-left
-		 * corner; after look l's push it is in the square floor(f + d.x),
-		 * floor(g + d.y) from his first, and the eye's grid with it. Each axis
-		 * is cut where one of those changes; a place of the grid for each piece
-		 * of the one axis with each of the other. */
-		double cut[2][PROBE_LOOKS + 2];
-		int ncut[2];
-		for (int a = 0; a < 2; a++) {
-			ncut[a] = 0;
-			cut[a][ncut[a]++] = 0;
-			for (int32_t l = 0; l < nlooks; l++) {
-				double d = a == 0 ? looks[l].d.x : looks[l].d.y;
-				double t = -d - floor(-d); /* floor(f + d) changes at f = t */
-				if (t > 0)
-					cut[a][ncut[a]++] = t;
-			}
-			cut[a][ncut[a]++] = 1;
-			for (int i = 1; i < ncut[a]; i++) /* insertion sort: a few cuts */
-				for (int j = i; j > 0 && cut[a][j - 1] > cut[a][j]; j--) {
-					double t = cut[a][j];
-					cut[a][j] = cut[a][j - 1];
-					cut[a][j - 1] = t;
-				}
-		}
-		s->nshifts = 0;
-		for (int i = 0; i + 1 < ncut[0]; i++)
-			for (int j = 0; j + 1 < ncut[1]; j++) {
-				if (cut[0][i + 1] - cut[0][i] <= 0 || cut[1][j + 1] - cut[1][j] <= 0)
-					continue; /* two cuts at one place */
-				/* The point in this piece, and motion's error within the
-				 * look's slack, put the grid at floor(f + d + e) on each axis:
-				 * within the slack of a cut, on either side of it. */
-				bool allowed = true;
-				for (int32_t l = 0; l < nlooks; l++) {
-					double sl = looks[l].slack;
-					int32_t lo[2], hi[2];
-					for (int a = 0; a < 2; a++) {
-						const double *piece = a == 0 ? &cut[0][i] : &cut[1][j];
-						double d = a == 0 ? looks[l].d.x : looks[l].d.y;
-						lo[a] = (int32_t)floor(piece[0] + d - sl);
-						hi[a] = (int32_t)ceil(piece[1] + d + sl) - 1;
-						lo[a] = lo[a] < -1 ? -1 : lo[a]; /* a slack under 3/4 of a square: */
-						hi[a] = hi[a] > 1 ? 1 : hi[a];	 /* never beyond */
-					}
-					uint16_t mask = 0;
-					for (int32_t sy = lo[1]; sy <= hi[1]; sy++)
-						for (int32_t sx = lo[0]; sx <= hi[0]; sx++)
-							mask |= (uint16_t)(1u << ((sy + 1) * 3 + sx + 1));
-					s->place[s->nshifts][l] = mask & looks[l].shifts;
-					allowed &= s->place[s->nshifts][l] != 0;
-				}
-				s->nshifts += allowed;
-			}
-	}
+	s->nshifts = probe_grid_places(looks, nlooks, unplaced, s->place);
 	ProbeVerdict verdict = search(s, x0, y0, x1, y1, budget);
 	free(grouped);
 	free(s);
@@ -413,7 +421,7 @@ static ProbeVerdict search(ProbeSearch *s, int32_t x0, int32_t y0, int32_t x1, i
 	int top = 0;
 	ProbeVerdict verdict = PROBE_INCONSISTENT;
 	if (most_side >= PROBE_MIN_SIDE) {
-		ProbeBox b = {.lo = {0, PROBE_MIN_SIDE, PROBE_MIN_SIDE, x0, y0},
+		ProbeBox b = {.lo = {0, PROBE_LATTICE_SIDE, PROBE_LATTICE_SIDE, x0, y0},
 			      .hi = {PROBE_QUARTER, most_side, most_side, x1 + 1, y1 + 1},
 			      .alive = (uint32_t)((1ull << s->nshifts) - 1)};
 		for (int32_t l = 0; l < s->nlooks; l++) /* each look's error: its slack either way */
@@ -576,6 +584,7 @@ bool probe_begin_object(Controller *c, int32_t k)
 		}
 	p->ident = m->node[k].ident;
 	p->at = o.centroid;
+	p->narrow = o.reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9;
 	p->look = 0;
 	p->ncells = 0;
 	p->changed = false;
@@ -591,6 +600,7 @@ bool probe_begin_object(Controller *c, int32_t k)
 static void judge(Controller *c, ProbeRun *p)
 {
 	p->verdict = PROBE_UNDECIDED;
+	p->width = 0;
 	int looks = p->look;
 	if (!p->changed || looks <= 0)
 		return; /* no look to judge, or none that showed anything either way */
@@ -604,6 +614,7 @@ static void judge(Controller *c, ProbeRun *p)
 		p->looks[l] = (ProbeLook){p->corner[l], rate * sqrt(pushed_sq), p->shifts[l]};
 	}
 	p->verdict = probe_square_consistent(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true, PROBE_BUDGET);
+	p->width = probe_least_width(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true);
 }
 
 bool probe_decide(Controller *c, MotorCommand *cmd)
@@ -649,6 +660,11 @@ ProbeVerdict probe_end(Controller *c)
 	if (p->verdict == PROBE_INCONSISTENT && p->disproved_count < PROBE_DISPROVED) {
 		p->disproved_ident[p->disproved_count] = p->ident;
 		p->disproved_at[p->disproved_count++] = p->at;
+	}
+	if (p->width > 0 && p->measured_count < PROBE_DISPROVED) {
+		p->measured_ident[p->measured_count] = p->ident;
+		p->measured_at[p->measured_count] = p->at;
+		p->measured_width[p->measured_count++] = p->width;
 	}
 	return p->verdict;
 }
@@ -717,12 +733,15 @@ static void keep_look(Controller *c, ProbeRun *p)
 		int32_t x = p->ux + e.ox, y = p->uy + e.oy;
 		if (x + e.size <= bx0 - 2 || x > bx1 + 2 || y + e.size <= by0 - 2 || y > by1 + 2)
 			continue;
-		bool usable = true;
+		/* The eye's own square (its offset 0, 0) is Utak's, seen occupied
+		 * wherever his point went: the cell of it is not kept. Every other
+		 * cell's squares are his square before the probe only when he has
+		 * left it (the grid moves with him): floor then, or the object's. */
+		bool usable = !(e.ox == 0 && e.oy == 0);
 		for (int32_t j = -1; j <= e.size && usable; j++)
 			for (int32_t k = -1; k <= e.size && usable; k++) {
 				int32_t sx = x + k, sy = y + j;
-				usable = (abs(sx - p->ux) > 1 || abs(sy - p->uy) > 1) &&
-					 (owned_before(p, sx, sy) || window_floor(p, sx, sy));
+				usable = (sx == p->ux && sy == p->uy) || owned_before(p, sx, sy) || window_floor(p, sx, sy);
 			}
 		int32_t before = 0;
 		for (int32_t j = 0; j < e.size; j++)
@@ -736,6 +755,14 @@ static void keep_look(Controller *c, ProbeRun *p)
 	}
 	p->shifts[p->look] = grid_shifts(c, p, bx0, by0, bx1, by1);
 	p->look++;
+}
+
+void probe_width_note(const ProbeRun *p, char *note, size_t size)
+{
+	size_t n = strlen(note);
+	if (p->narrow && n < size)
+		snprintf(note + n, size - n, "; the looks show it at least %.2f wide (a name needs %.0f)", p->width,
+			 OBJECTS_NAMED_WIDTH);
 }
 
 bool probe_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t size)
@@ -762,6 +789,7 @@ bool probe_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		static const char *const said[3] = {"fit a square: the claim stands", "fit no square: it is not the square",
 						    "do not decide: the claim stands"};
 		snprintf(note, size, "; probe: released; its squares %s", said[p->verdict]);
+		probe_width_note(p, note, size);
 		break;
 	}
 	c->have_plan = false;
@@ -774,4 +802,14 @@ bool probe_disproved(const Controller *c, int32_t ident, Vec2 at)
 		if (p->disproved_ident[i] == ident || goals_distance(p->disproved_at[i], at) < OBJECTS_SAME)
 			return true;
 	return false;
+}
+
+double probe_width(const Controller *c, int32_t ident, Vec2 at)
+{
+	const ProbeRun *p = &c->probe;
+	double most = 0;
+	for (int i = 0; i < p->measured_count; i++)
+		if (p->measured_ident[i] == ident || goals_distance(p->measured_at[i], at) < OBJECTS_SAME)
+			most = fmax(most, p->measured_width[i]);
+	return most;
 }

@@ -183,6 +183,15 @@ bool rival_own_probed(const Controller *c, int32_t k)
 	return false;
 }
 
+/* own_doubt_told(c): the task's verdict line tells Utak's doubt of the object he
+ * claims ("go square", "go round square", "push square CORNER"): only there is a
+ * probe made for a doubt on the object's own squares (NARROW, PIECES SHOWN); the
+ * carrying tasks push it on as before. */
+static bool own_doubt_told(const Controller *c)
+{
+	return c->task.kind == TASK_GO_SHAPE || c->task.kind == TASK_GO_ROUND || c->task.kind == TASK_PUSH_CORNER;
+}
+
 /* begin(c, k, own_trip): rival_begin; with own_trip, Utak is where the loop round
  * node k closed, and may go back beside it to probe it first (a short way: from
  * home the way back and out again would cost a loop's approach twice). */
@@ -192,7 +201,10 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	if (k < 0 || r->stage != RIVAL_IDLE)
 		return false;
 	int32_t j = objects_rival(c, k);
-	if (j < 0 || !objects_rival_open(c, j))
+	bool rival = j >= 0 && objects_rival_open(c, j);
+	/* NARROW: its own squares may be a polygon's under 2 wide; a probe tells
+	 * more (probe.h): no square, or wide enough. */
+	if (!rival && !(own_doubt_told(c) && (objects_narrow(c, k) || objects_pieces_shown(c, k))))
 		return false;
 	/* OWN FIRST: beside the object he would claim, that one first, whatever the
 	 * rival (going round, only from where the loop closed: own_trip). Going
@@ -207,6 +219,7 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 		r->own_ident[r->own_count] = (int32_t)c->model.node[k].ident;
 		r->own_at[r->own_count++] = node_centre(c, k);
 		r->stage = RIVAL_OWN;
+		r->own_alone = !rival;
 		c->have_plan = false;
 		return true;
 	}
@@ -216,14 +229,16 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	if (own && own_trip && !rival_own_probed(c, k) && r->own_count < PROBE_RUNS &&
 	    r->own_trips < RIVAL_MAX && own_may_probe(c, k) && rival_set_off(c, k, RIVAL_OWN_GO)) {
 		r->own_trips++;
+		r->own_alone = !rival;
 		size_t n = strlen(r->note);
 		snprintf(r->note + n, sizeof r->note - n,
-		         "; back to the %s gone round, at (%.1f, %.1f), to probe it before a rival "
+		         "; back to the %s gone round, at (%.1f, %.1f), to probe it %s "
 		         "(rival.h)",
-		         task_shape_name(c->task.shape), r->at.x, r->at.y);
+		         task_shape_name(c->task.shape), r->at.x, r->at.y,
+		         rival ? "before a rival" : "for a doubt on its own squares");
 		return true;
 	}
-	if (r->count >= RIVAL_MAX)
+	if (!rival || r->count >= RIVAL_MAX)
 		return false;
 	/* A rival seen whole that still reads a square (or a crumb that may be one)
 	 * shows that this world holds pieces the eye takes for squares: then the
@@ -373,7 +388,7 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 			c->rival.own_count--; /* no claim on it is left to spare a probe of */
 		size_t n = strlen(c->rival.note);
 		snprintf(c->rival.note + n, sizeof c->rival.note - n,
-		         "; probed first, before a rival: %s",
+		         c->rival.own_alone ? "; probed, for a doubt on its own squares: %s" : "; probed first, before a rival: %s",
 		         verdict == PROBE_INCONSISTENT ? "it is no square, dropped"
 		                                       : "it may be a square");
 		if (c->task.kind == TASK_GO_ROUND) {
@@ -408,7 +423,9 @@ bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		snprintf(note, size, "; probe: released the object he would claim; its squares %s",
 		         c->probe.verdict == PROBE_INCONSISTENT
 		             ? "fit no square: it is not the square"
-		             : "may be a square's: the claim waits on the rival");
+		             : c->rival.own_alone ? "may be a square's: the claim is judged again"
+		                                  : "may be a square's: the claim waits on the rival");
+		probe_width_note(&c->probe, note, size);
 		return true;
 	}
 	if (c->rival.stage != RIVAL_PROBE)
@@ -419,10 +436,12 @@ bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		         "quarter square and back (rival.h)",
 		         c->rival.at.x, c->rival.at.y, c->probe.corners,
 		         c->probe.corners > 1 ? "s" : "");
-	else if (cmd->kind == MOTOR_RELEASE)
+	else if (cmd->kind == MOTOR_RELEASE) {
 		snprintf(note, size, "; probe: released the rival; its squares %s",
 		         c->probe.verdict == PROBE_INCONSISTENT ? "fit no square"
 		                                                : "may be a square's");
+		probe_width_note(&c->probe, note, size);
+	}
 	return true;
 }
 

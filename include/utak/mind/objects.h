@@ -59,6 +59,8 @@ typedef struct ObjectReading {
 	bool examined;     /* every square once seen in the fovea (now or before) */
 	bool disproved;    /* read the square, but a probe showed it is none (probe.h):
 			      its shape is then SHAPE_NONE */
+	double shown_width; /* the least width a probe's looks showed (probe_width), 0
+			       when none was probed */
 } ObjectReading;
 
 /* objects_read(c, k): what object node k is, by shape (cached). */
@@ -110,7 +112,12 @@ bool objects_touching_target(Controller *c);
  *   block (min_width 1) is a crumb, a 4 x 4 block (2) is not. It replaced a
  *   count (at most OBJECTS_CRUMB squares), which doubted every 4 x 4 square
  *   that happened to cover 14 squares or fewer and no 15-square set, whatever
- *   its spread.
+ *   its spread. A probe's looks bound the width too, for any polygon, and
+ *   often higher (probe_least_width, ObjectReading.shown_width): the larger
+ *   bound holds, and the doubt names both ("from 1.00; moved, at least 1.27").
+ *   Utak probes the object in this doubt before he gives up (rival.h, NARROW).
+ *   PIECES SHOWN: a probe this task showed an object read a square to be none,
+ *   and this one was never probed: it may be such a piece (rival.h).
  *   NEARER THE START: the task's object is the one of its shape nearest the
  *   start; another object nearer may be it when its squares were never all seen
  *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
@@ -192,6 +199,14 @@ bool objects_rival_open(Controller *c, int32_t j);
  * task's object (objects_find_target), and after a loop round it Utak looks once
  * more for one (controller.c). */
 bool objects_doubtful(Controller *c, int32_t k);
+/* objects_narrow(c, k): node k is seen whole and its squares may be those of a
+ * polygon under OBJECTS_NAMED_WIDTH (a crumb, objects_doubt), by their spread
+ * and by what a probe of it showed: a probe may tell more (rival.h, NARROW). */
+bool objects_narrow(Controller *c, int32_t k);
+/* objects_pieces_shown(c, k): node k is seen whole, a probe this task showed an
+ * object read a square to be none, and k was not probed: a doubt a probe of k
+ * settles (objects_doubt, rival.h). */
+bool objects_pieces_shown(Controller *c, int32_t k);
 /* objects_misread(c, k): node k is seen whole and its own reading puts its name in
  * doubt (in the gap, or inexact), not only its width (a crumb read squarely the
  * task's shape, most often a small one of it). Before going to such a one Utak

@@ -67,8 +67,25 @@
 
 /* The verdicts' square: long side / short side at most this (JUDGE_SHAPE_SQUARE). */
 #define PROBE_ASPECT 1.2
-/* Sides under this are not searched (a polygon under 2 wide is unnamed). */
-#define PROBE_MIN_SIDE 1.5
+/* Sides under this are not searched: a polygon under 2 wide is unnamed (the
+ * verdicts' JUDGE_SHAPE_MIN_WIDTH), less a margin for the quadrilaterals the
+ * judge names square that a rectangle only stands for (THE HYPOTHESIS): a corner
+ * 10 degrees off a right angle leans a side by tan 10 = 0.18 of the side across
+ * it, and the rectangle that owns their squares best runs about half way, so a
+ * quadrilateral 2 wide may be stood for by a rectangle 2 - 0.18 wide (measured,
+ * tests/unit/test_probe.c judge_quadrilaterals_kept: at 2 the probe rejected 3 of
+ * 60 such quadrilaterals 2 to 2.15 wide, at 1.86 2 of 150, at 1.82 1 of 150, the
+ * one it rejects at 1.5 as well). A polygon the probe rejects is no square of
+ * sides 1.82 or more: 1.55 squares are rejected 17 times in 30, 1.65 ones 6,
+ * 1.75 ones never (three looks, the slack Utak assumes, every cell seen). */
+#define PROBE_MIN_SIDE 1.82
+/* The search splits boxes of sides from here, as it did when that was the least
+ * side searched: the boxes are the same, and a box whose sides all lie under
+ * PROBE_MIN_SIDE is dropped, so no verdict but one on such a rectangle changes
+ * (a box is taken as consistent within PROBE_EPS, and other boxes would take
+ * other rectangles within it: a 2.8 square cut 0.4 deep read consistent from
+ * boxes split from 1.82). */
+#define PROBE_LATTICE_SIDE 1.5
 /* A box of parameters whose rectangles all lie within this of its middle one, and
  * that nothing seen contradicts, is taken as consistent (squares). */
 #define PROBE_EPS 0.01
@@ -116,6 +133,34 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 				     int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
 				     int64_t budget);
 
+/* probe_least_width(bx, by, nb, looks, nlooks, cells, ncells, unplaced): a lower
+ * bound on the width (least extent across any direction, doc/verdicts.md) of
+ * EVERY polygon P, of any shape, that owned the squares B before the pushes and
+ * gave each look's counts (the same input as probe_square_consistent; 0 when it
+ * can say nothing). WHY: a set of squares standing still bounds P's width only
+ * by how far the squares' centres spread less a square's own extent
+ * (shape.h, min_width): a 2.2 square covering a 3 x 3 block may be a 1.1 sliver
+ * for all the eye can tell, and no such polygon has a name. Motion narrows it:
+ * P + d_k + e_k meets every open region (square, or cell of which it owns some)
+ * look k shows, so across a direction u, for a region A of look j and B of look
+ * k (look "0" is B before the pushes, d 0, e 0, the grid where it was),
+ *   extent_u(P) > u.(cB - d_k) - u.(cA - d_j) - (sA + sB)/2 (|ux| + |uy|)
+ *                 - (slack_j + slack_k) (|ux| + |uy|)   (none when j = k),
+ * the most over the pairs, and the least over every place of Utak's point and
+ * every place of each look's grid it allows (a place of a look's grid that puts
+ * a region beyond where the object, within B's closed squares before, can
+ * reach is none). The bound is taken across PROBE_WIDTH_DIRECTIONS directions
+ * (the axes among them); between two of them the extent changes by at most the
+ * object's diameter (B's box's diagonal) times the angle, and the least that
+ * allows is the bound (probewidth.c). Sound: no polygon that gave these
+ * looks is narrower (tests/unit/test_probe.c, least_width_is_sound, against the
+ * exact width of 600 polygons projected as the TABLE does). With three quarter-
+ * square looks it shows a square 2.25 on a side two wide 6 times in 40, 2.35 20,
+ * 2.45 34, 2.15 never: the step and the slack of motion leave the rest in doubt. */
+#define PROBE_WIDTH_DIRECTIONS 720
+double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks, int32_t nlooks,
+			 const ProbeCell *cells, int32_t ncells, bool unplaced);
+
 /* ---- the probe in the action cycle ------------------------------------------------
  *
  * WHEN. Utak probes the object he is about to claim as "the square" of task "go
@@ -126,6 +171,10 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
  * poses of measure zero. So "could be another polygon" is every such claim; the
  * probe is made when it can be made safely, and the claim stands as before
  * otherwise (no claim is worse for a probe that could not be made):
+ *   (probe_begin is "go square"'s own claim; rival.h probes, through
+ *   probe_begin_object, the object claimed when its own squares may be a
+ *   polygon's under 2 wide or a probe in the task has shown pieces the eye
+ *   takes for squares, and a rival)
  *   the object is seen whole in the fovea, its squares number at most
  *   PROBE_MAX_SQUARES within a box that leaves 3 squares of margin in
  *   PROBE_WINDOW, and every square 8-adjacent to them is believed floor, seen in
@@ -144,16 +193,22 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
  * to begin with (a move halted against the object leaves it on the square's
  * edge), so the eye's grid may move by a square with him or stay: the test tries
  * both (unplaced). After each push, the cells of the fovea and the intermediate
- * zone that hold only the object's squares and floor (keep_look, probe.c) are
- * kept; then the object is pushed back to where it was, and let go, and
+ * zone that hold only the object's squares and floor (keep_look, probe.c; the
+ * eye's own square excepted, always Utak's: the cells beside it, which show the
+ * object's near side, are kept; left out, as every cell within a square of his
+ * first square once was, that side was never seen after a push, and a 1.6 bit
+ * was never disproved nor a 2.5 square shown two wide in 32 poses each) are kept; then the object is pushed back to where it was, and let go, and
  * probe_square_consistent judges all the looks at once. Motion's error adds up
  * from push to push: look l's slack is PROBE_SLACK_RATE (or four times the motion
  * error the disparity has shown, if more) times the root of the sum of the
  * squared lengths of the pushes up to it (a Gaussian error per push, motion.h).
  * Cycles: a grasp, a push per look, the push back and the release: with three
  * looks, six more than the claim alone.
- * THEN. Consistent, or undecided (the search did not finish; the looks showed no
- * change at all: the grasp may have failed): the claim stands. Inconsistent: the
+ * THEN. The looks' least width (probe_least_width) is kept for the object
+ * (probe_width): two or more, its squares are no narrow polygon's, and that doubt
+ * is gone (objects.h, A CRUMB). Consistent, or undecided (the search did not
+ * finish; the looks showed no change at all: the grasp may have failed): the
+ * claim stands. Inconsistent: the
  * object is not the square (probe_disproved: objects.c names it nothing), and
  * the task goes on: another object, a look further, or an honest failure. */
 #define PROBE_STEP 0.25
@@ -219,6 +274,15 @@ typedef struct ProbeRun {
 	int32_t disproved_ident[PROBE_DISPROVED];
 	Vec2 disproved_at[PROBE_DISPROVED];
 	int disproved_count;
+	/* The least width the looks show (probe_least_width; 0 when they show
+	 * none), and the widths shown of the objects probed in the task, by ident
+	 * and by where they were (probe_width). */
+	double width;
+	bool narrow; /* its squares standing still may be a polygon's under 2 wide */
+	int32_t measured_ident[PROBE_DISPROVED];
+	Vec2 measured_at[PROBE_DISPROVED];
+	double measured_width[PROBE_DISPROVED];
+	int measured_count;
 } ProbeRun;
 
 struct Controller;
@@ -242,8 +306,16 @@ ProbeVerdict probe_end(struct Controller *c);
  * after a push to a corner kept; what was done, for the cycle's note. False when
  * no probe is under way. */
 bool probe_perceive(struct Controller *c, const MotorCommand *cmd, char *note, size_t size);
+/* probe_width_note(p, note, size): after a release, the width the looks showed,
+ * appended to the cycle's note when the object's squares standing still left it
+ * in doubt (p->narrow). */
+void probe_width_note(const ProbeRun *p, char *note, size_t size);
 /* probe_disproved(c, ident, at): an object (ident, or centroid at within
  * OBJECTS_SAME of one) that a probe showed is not the square. */
 bool probe_disproved(const struct Controller *c, int32_t ident, Vec2 at);
+/* probe_width(c, ident, at): the least width a probe's looks showed of an object
+ * (ident, or centroid at within OBJECTS_SAME of one): every polygon that gave
+ * them is at least so wide (probe_least_width); 0 when none was probed. */
+double probe_width(const struct Controller *c, int32_t ident, Vec2 at);
 
 #endif

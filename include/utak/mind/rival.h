@@ -60,6 +60,14 @@
  * Not from home (rival_begin there is rival8's: a rival seen whole is left): the
  * way back to the object and out again would cost the approach twice (random
  * g114, 290 cycles, ran out of the 300 so).
+ * NARROW, AND PIECES SHOWN. The same OWN FIRST probe is made of the object Utak
+ * would claim when no rival is named but its own squares may be those of a
+ * polygon under 2 wide (objects_narrow: the probe may show it no square of sides
+ * PROBE_MIN_SIDE or more, or at least 2 wide: probe.h), or when a probe in the
+ * task has shown an object read a square to be none and this one was never
+ * probed (objects_pieces_shown: "push square" makes no probe of its own, and
+ * random g145 pushed a second piece to the corner, a false success, once the
+ * first was disproved). Then arrive judges the claim again.
  * COST: a probe's 6 cycles, the way there and back, and a probe's 6 cycles, only
  * where a rival doubt arises (going round, and the short way back beside the
  * object gone round). */
@@ -106,6 +114,7 @@ typedef struct RivalRun {
 	int32_t own_ident[PROBE_RUNS];
 	Vec2 own_at[PROBE_RUNS];
 	int own_count;
+	bool own_alone; /* the probe under way (OWN FIRST) is for a doubt that names no rival */
 	/* "go round": trips back to the object gone round begun this task (OWN
 	 * FIRST ON A LOOP), at most RIVAL_MAX. */
 	int own_trips;
