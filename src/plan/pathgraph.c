@@ -129,7 +129,6 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->toward);
 	free(sc->built_vcells.v);
 	free(sc->vstart.v);
-	free(sc->mask);
 	free(sc);
 }
 
@@ -155,43 +154,61 @@ typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
 	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
-	uint8_t *toward;    /* junction-set cells: 1 + direction to the parent, 0 at the root */
-	uint8_t *mask;      /* skeleton cells: their skeleton 4-neighbours, bit d for direction d
-	                     * (east north west south); other cells: stale */
-	IntList vcells;     /* cells of every vertex, vertex after vertex */
-	IntList vstart;     /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
-	int32_t count;      /* edge cells so far, in pg->cells and pg->cell_edge */
-	int32_t max_set;    /* the largest vertex (cells): a bound on a walk to its root */
-	int32_t chain_left; /* skeleton cells not yet in a vertex or an edge: a bound */
-	int32_t ref_base;   /* vertices found by step (1): chain cells' cell_ref base */
+	uint8_t *toward;      /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	const uint8_t *plane; /* the skeleton's bits (Skeleton.plane) */
+	int32_t row_bits;     /* bits a row of the plane: the step north there */
+	IntList vcells;       /* cells of every vertex, vertex after vertex */
+	IntList vstart;       /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
+	int32_t count;        /* edge cells so far, in pg->cells and pg->cell_edge */
+	int32_t max_set;      /* the largest vertex (cells): a bound on a walk to its root */
+	int32_t chain_left;   /* skeleton cells not yet in a vertex or an edge: a bound */
+	int32_t ref_base;     /* vertices found by step (1): chain cells' cell_ref base */
 } Builder;
 
-/* builder_neighbour(b, i, x, d): the skeleton cell next to cell i (in column x) in
- * direction d, or -1. The column is passed in, tracked by the callers, because a
- * division per step (i % w) would cost more than the rest of the walk. */
-static int32_t builder_neighbour(const Builder *b, int32_t i, int32_t x, int d)
+/* pathgraph_load64(p): the 64 bits at p, bit k of the word bit k & 7 of byte p[k >> 3]
+ * (the plane's order: one load where bytes are stored little-end first). */
+static inline uint64_t pathgraph_load64(const uint8_t *p)
 {
-	const int32_t w = b->pg->w;
-	const uint8_t *on = b->s->on;
-	switch (d) {
-	case 0:
-		return x + 1 < w && on[i + 1] ? i + 1 : -1;
-	case 1:
-		return i + w < w * b->pg->h && on[i + w] ? i + w : -1;
-	case 2:
-		return x > 0 && on[i - 1] ? i - 1 : -1;
-	default:
-		return i >= w && on[i - w] ? i - w : -1;
-	}
+	uint64_t v;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	memcpy(&v, p, sizeof v);
+#else
+	v = 0;
+	for (int k = 7; k >= 0; k--)
+		v = v << 8 | p[k];
+#endif
+	return v;
 }
 
-/* builder_degree(b, i, x): skeleton 4-neighbours of cell i in column x. */
-static int builder_degree(const Builder *b, int32_t i, int32_t x)
+/* pathgraph_plane_mask(plane, cb, row_bits): the skeleton 4-neighbours of the cell of
+ * plane bit cb, as bits west 0, north 1, east 2, south 3 (the order that the west, own
+ * and east bits of one load give: PATHGRAPH_MASK_BIT). The plane's zero border spares
+ * every test of the grid's edges. */
+static inline unsigned pathgraph_plane_mask(const uint8_t *plane, int32_t cb, int32_t row_bits)
 {
-	const int32_t w = b->pg->w;
-	const uint8_t *on = b->s->on;
-	return (x + 1 < w && on[i + 1]) + (x > 0 && on[i - 1]) +
-	       (i + w < w * b->pg->h && on[i + w]) + (i >= w && on[i - w]);
+	const uint64_t t = pathgraph_load64(plane + ((cb - 1) >> 3)) >> ((cb - 1) & 7);
+	const int32_t n = cb + row_bits, s = cb - row_bits;
+	return ((unsigned)t & 5) | (unsigned)(plane[n >> 3] >> (n & 7) & 1) << 1 |
+	       (unsigned)(plane[s >> 3] >> (s & 7) & 1) << 3;
+}
+
+/* The bit of direction d (east north west south) in a pathgraph_plane_mask, and the
+ * number of bits set in a mask: a cell's skeleton degree. */
+static const uint8_t PATHGRAPH_MASK_BIT[4] = {2, 1, 0, 3};
+static const uint8_t PATHGRAPH_POP4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+
+/* builder_bit(b, i): the plane bit of grid cell i (a division: for vertex cells, not
+ * for every step of a walk, which carries its bit along). */
+static inline int32_t builder_bit(const Builder *b, int32_t i)
+{
+	const int32_t w = b->pg->w, y = i / w;
+	return (int32_t)skeleton_plane_bit(w, i - y * w, y);
+}
+
+/* builder_mask(b, i): pathgraph_plane_mask of grid cell i. */
+static inline unsigned builder_mask(const Builder *b, int32_t i)
+{
+	return pathgraph_plane_mask(b->plane, builder_bit(b, i), b->row_bits);
 }
 
 static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
@@ -211,15 +228,21 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 static void builder_junction_set(Builder *b, int32_t seed)
 {
 	Pathgraph *pg = b->pg;
+	const int32_t step[4] = {1, pg->w, -1, -pg->w};
+	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
 	int32_t v = builder_add_vertex(b, seed, PATHGRAPH_JUNCTION);
 	int first = b->vcells.count;
 	intlist_push(&b->vcells, seed);
 	for (int k = first; k < b->vcells.count; k++) {
-		int32_t c = b->vcells.v[k], x = c % pg->w;
+		const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+		const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 		for (int d = 0; d < 4; d++) {
-			int32_t nb = builder_neighbour(b, c, x, d);
-			if (nb >= 0 && pg->cell_ref[nb] == PATHGRAPH_REF_NONE &&
-			    builder_degree(b, nb, x + PATHGRAPH_DX[d]) >= 3) {
+			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
+				continue;
+			const int32_t nb = c + step[d];
+			if (pg->cell_ref[nb] == PATHGRAPH_REF_NONE &&
+			    PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb + bstep[d],
+			                                                    b->row_bits)] >= 3) {
 				pg->cell_ref[nb] = v;
 				intlist_push(&b->vcells, nb);
 			}
@@ -235,10 +258,13 @@ static void builder_junction_set(Builder *b, int32_t seed)
 	intlist_push(&b->vcells, root);
 	b->toward[root] = 0;
 	for (int k = first; k < b->vcells.count; k++) {
-		int32_t c = b->vcells.v[k], x = c % pg->w;
+		const int32_t c = b->vcells.v[k];
+		const unsigned m = builder_mask(b, c);
 		for (int d = 0; d < 4; d++) {
-			int32_t nb = builder_neighbour(b, c, x, d);
-			if (nb >= 0 && nb != root && pg->cell_ref[nb] == v && b->toward[nb] == 0) {
+			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
+				continue;
+			const int32_t nb = c + step[d];
+			if (nb != root && pg->cell_ref[nb] == v && b->toward[nb] == 0) {
 				b->toward[nb] = (uint8_t)(1 + (d + 2) % 4);
 				intlist_push(&b->vcells, nb);
 			}
@@ -358,35 +384,35 @@ static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, 
 		cell_edge[k] = e;
 }
 
-/* PATHGRAPH_NEXT[back][m]: for a cell whose skeleton 4-neighbours are the bits of m (bit
- * d for direction d, east north west south) and that was entered from direction back:
- * the direction on, when the cell is a chain cell (two neighbours, back one of them);
- * else -1, a vertex cell (or a loop vertex's, its mask zeroed). */
+/* PATHGRAPH_NEXT[back][m]: for a cell whose skeleton 4-neighbours are the bits of m (a
+ * pathgraph_plane_mask: west 0, north 1, east 2, south 3) and that was entered from
+ * direction back (east north west south): the direction on, when the cell is a chain
+ * cell (two neighbours, back one of them); else -1, a vertex cell. */
 static const int8_t PATHGRAPH_NEXT[4][16] = {
-    {-1, -1, -1, 1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
-    {-1, -1, -1, 0, -1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1},
-    {-1, -1, -1, -1, -1, 0, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
-    {-1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, -1, 2, -1, -1, -1},
+    {-1, -1, -1, -1, -1, 2, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
+    {-1, -1, -1, 2, -1, -1, 0, -1, -1, -1, 3, -1, -1, -1, -1, -1},
+    {-1, -1, -1, 1, -1, 0, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
+    {-1, -1, -1, -1, -1, -1, -1, -1, -1, 2, 1, -1, 0, -1, -1, -1},
 };
 
-/* builder_edge_from(b, v, c, d): the edge leaving vertex v's cell c in direction d,
- * into a chain cell not yet walked: along the chain to the next cell that is not a
- * chain cell (of degree other than 2, so a vertex cell, step 1; or a loop vertex's
- * cell, its mask zeroed by builder_loops), measuring it on the way. Each chain cell's
+/* builder_edge_from(b, v, c, d, stop): the edge leaving vertex v's cell c in direction
+ * d, into a chain cell not yet walked: along the chain to the next cell that is not a
+ * chain cell (of degree other than 2, so a vertex cell, step 1) or is stop (a loop
+ * vertex's cell, builder_loops; else -1), measuring it on the way. Each chain cell's
  * cell_ref is set to ref_base + its place in cells[]. */
-static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
+static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d, int32_t stop)
 {
 	Pathgraph *pg = b->pg;
 	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
 	const int32_t first = b->count;
 	EdgeRun r;
 	builder_root_path(b, c, &r, false); /* from v's own cell to c */
-	const int32_t w = pg->w, ref_base = b->ref_base;
+	const int32_t w = pg->w, ref_base = b->ref_base, rb = b->row_bits;
 	const int32_t step[4] = {1, w, -1, -w};
-	const uint8_t *mask = b->mask;
+	const uint8_t *plane = b->plane;
 	const int32_t *dist2 = b->s->dist2;
 	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
-	int32_t k = b->count, cur;
+	int32_t k = b->count, cur, cb;
 	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
 	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
@@ -397,18 +423,21 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	int32_t md = r.min_dist2;
 	double length = r.length;
 	cur = c;
-	/* A state for each direction of the step into cur, each adding its constant
-	 * to cur, and a branch on the direction on (the switch) rather than cur +=
-	 * step[next]: the branch predictor runs ahead along a corridor, and the loads
-	 * of the cells ahead overlap where the data dependence of the index on each
-	 * mask load made them wait in turn (10-15% off the maze's build, see MEASURED).
-	 * Straight on is tested first: one predictable branch down a corridor. */
-#define PATHGRAPH_WALK_STEP(D, STEP)                                                               \
+	cb = builder_bit(b, c);
+	/* A state for each direction of the step into cur, each adding its constants to
+	 * cur and its plane bit cb, and a branch on the direction on (the switch) rather
+	 * than cur += step[next]: the branch predictor runs ahead along a corridor, and
+	 * the loads of the cells ahead overlap where the data dependence of the index on
+	 * each mask would make them wait in turn (see MEASURED). Straight on is tested
+	 * first: one predictable branch down a corridor. The neighbours come from the
+	 * plane (three loads, all near: the plane is an eighth of a byte a cell). */
+#define PATHGRAPH_WALK_STEP(D, STEP, BSTEP)                                                        \
 	walk_##D:                                                                                  \
 	{                                                                                          \
 		cur += (STEP);                                                                     \
-		const int next = PATHGRAPH_NEXT[(D) ^ 2][mask[cur]];                               \
-		if (next < 0)                                                                      \
+		cb += (BSTEP);                                                                     \
+		const int next = PATHGRAPH_NEXT[(D) ^ 2][pathgraph_plane_mask(plane, cb, rb)];     \
+		if (next < 0 || cur == stop)                                                       \
 			goto walk_end;                                                             \
 		cell_ref[cur] = ref_base + k;                                                      \
 		cells[k++] = cur;                                                                  \
@@ -444,10 +473,10 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	default:
 		goto walk_3;
 	}
-	PATHGRAPH_WALK_STEP(0, 1)
-	PATHGRAPH_WALK_STEP(1, w)
-	PATHGRAPH_WALK_STEP(2, -1)
-	PATHGRAPH_WALK_STEP(3, -w)
+	PATHGRAPH_WALK_STEP(0, 1, 1)
+	PATHGRAPH_WALK_STEP(1, w, rb)
+	PATHGRAPH_WALK_STEP(2, -1, -1)
+	PATHGRAPH_WALK_STEP(3, -w, -rb)
 #undef PATHGRAPH_WALK_STEP
 walk_end:
 	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
@@ -472,86 +501,56 @@ static void builder_vertex_at(Builder *b, int32_t i, int d)
 	}
 }
 
-/* Eight cells a word in the vertex scan where the compiler has bit-scan builtins
- * and stores bytes little-end first (as gridpath.c); elsewhere cell by cell. */
-#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-#define PATHGRAPH_SCAN_WORDS 1
-static inline uint64_t pathgraph_load8(const uint8_t *p)
+/* pathgraph_ctz64(v): the index of the lowest bit set in v != 0. */
+static inline int pathgraph_ctz64(uint64_t v)
 {
-	uint64_t v;
-	memcpy(&v, p, sizeof v);
-	return v;
-}
+#if defined(__GNUC__)
+	return __builtin_ctzll(v);
 #else
-#define PATHGRAPH_SCAN_WORDS 0
+	int k = 0;
+	while (!(v & 1)) {
+		v >>= 1;
+		k++;
+	}
+	return k;
 #endif
-
-/* builder_scan_cell(b, y, x, on, below, above, mask): the vertex scan at one cell of
- * row y (on, and the rows below and above it or NULL; mask, row y's masks). */
-static inline void builder_scan_cell(Builder *b, int32_t y, int32_t x, const uint8_t *on,
-                                     const uint8_t *below, const uint8_t *above, uint8_t *mask)
-{
-	if (!on[x])
-		return;
-	const int32_t w = b->pg->w;
-	const int e = x + 1 < w && on[x + 1], nth = above && above[x], wst = x > 0 && on[x - 1],
-	          sth = below && below[x];
-	mask[x] = (uint8_t)(e | nth << 1 | wst << 2 | sth << 3);
-	const int d = e + nth + wst + sth;
-	const int32_t i = y * w + x;
-	if (d != 2 && b->pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-		builder_vertex_at(b, i, d);
 }
 
-/* builder_vertices(b): step (1), the vertices in row-major order of their first cell,
- * and every skeleton cell's mask. Most cells are off the skeleton: the scan skips
- * eight at a time where they are all zero; and most skeleton cells are chain cells,
- * told by their degree from the rows around. */
+/* builder_vertices(b): step (1), the vertices in row-major order of their first cell.
+ * It reads the skeleton's plane, 64 cells a word, and skips the empty words: a word's
+ * cells of degree other than 2 come from the four words around it by bit arithmetic,
+ * and only they are visited one by one. The grid itself is not read. */
 static void builder_vertices(Builder *b)
 {
 	Pathgraph *pg = b->pg;
-	const Skeleton *s = b->s;
-	const int32_t w = pg->w, h = pg->h;
+	const int32_t w = pg->w, h = pg->h, words = skeleton_plane_words(w);
+	const int32_t last = 1 + (w - 1) / 64; /* the last word of a row holding cells */
 	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *on = s->on + (size_t)y * w;
-		const uint8_t *below = y > 0 ? on - w : NULL;
-		const uint8_t *above = y + 1 < h ? on + w : NULL;
-		uint8_t *mask = b->mask + (size_t)y * w;
-		int32_t x = 0;
-#if PATHGRAPH_SCAN_WORDS
-		/* inside rows and columns, eight cells a word: their degrees as byte sums
-		 * (each at most 4, so no carries) and their masks (each byte's bits apart),
-		 * and only the cells of degree other than 2 visited one by one */
-		if (below && above && w >= 10) {
-			builder_scan_cell(b, y, 0, on, below, above, mask);
-			const uint64_t ones = 0x0101010101010101ULL;
-			for (x = 1; x + 9 <= w; x += 8) {
-				const uint64_t here = pathgraph_load8(on + x);
-				if (here == 0)
-					continue;
-				const uint64_t e = pathgraph_load8(on + x + 1),
-				               wst = pathgraph_load8(on + x - 1),
-				               nth = pathgraph_load8(above + x),
-				               sth = pathgraph_load8(below + x);
-				const uint64_t m8 = e | nth << 1 | wst << 2 | sth << 3;
-				memcpy(mask + x, &m8, sizeof m8);
-				const uint64_t t =
-				    (e + nth + wst + sth) ^ (2 * ones); /* degree not 2 */
-				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
-				while (cand) {
-					const int32_t cx = x + __builtin_ctzll(cand) / 8;
-					cand &= cand - 1;
-					const int32_t i = y * w + cx;
-					if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-						builder_vertex_at(b, i,
-						                  on[cx - 1] + on[cx + 1] +
-						                      below[cx] + above[cx]);
-				}
+		const uint8_t *row = b->plane + (size_t)(y + 1) * (size_t)words * 8;
+		const uint8_t *above = row + (size_t)words * 8, *below = row - (size_t)words * 8;
+		for (int32_t j = 1; j <= last; j++) {
+			const uint64_t here = pathgraph_load64(row + 8 * j);
+			if (here == 0)
+				continue;
+			const uint64_t e = here >> 1 | pathgraph_load64(row + 8 * (j + 1)) << 63,
+			               wst = here << 1 | pathgraph_load64(row + 8 * (j - 1)) >> 63,
+			               nth = pathgraph_load64(above + 8 * j),
+			               sth = pathgraph_load64(below + 8 * j);
+			/* degree exactly 2: e + wst = s1 + 2 c1, nth + sth = s2 + 2 c2 */
+			const uint64_t s1 = e ^ wst, c1 = e & wst, s2 = nth ^ sth, c2 = nth & sth;
+			const uint64_t two = (s1 & s2 & ~(c1 | c2)) | (~(s1 | s2) & (c1 ^ c2));
+			uint64_t cand = here & ~two;
+			while (cand) {
+				const int k = pathgraph_ctz64(cand);
+				cand &= cand - 1;
+				const int32_t i = y * w + (j - 1) * 64 + k;
+				if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
+					builder_vertex_at(
+					    b, i,
+					    (int)((e >> k & 1) + (wst >> k & 1) + (nth >> k & 1) +
+					          (sth >> k & 1)));
 			}
 		}
-#endif
-		for (; x < w; x++)
-			builder_scan_cell(b, y, x, on, below, above, mask);
 	}
 	intlist_push(&b->vstart, b->vcells.count);
 }
@@ -565,14 +564,14 @@ static void builder_edges(Builder *b)
 	for (int32_t v = 0; v < nv; v++)
 		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
 			const int32_t c = b->vcells.v[k];
-			const unsigned m = b->mask[c]; /* its skeleton neighbours, from the scan */
+			const unsigned m = builder_mask(b, c);
 			for (int d = 0; d < 4; d++) {
-				if (!(m >> d & 1))
+				if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 					continue;
 				const int32_t nb = c + step[d];
 				int32_t ref = pg->cell_ref[nb];
 				if (ref == PATHGRAPH_REF_NONE) {
-					builder_edge_from(b, v, c, d);
+					builder_edge_from(b, v, c, d, -1);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
 					/* two vertices' cells touching: an edge without chain cells
 					 */
@@ -588,28 +587,37 @@ static void builder_edges(Builder *b)
 }
 
 /* builder_loops(b): step (3), loops without a junction, only when some skeleton cell
- * is still unwalked: the first cell of each, row-major, a loop vertex, the loop an
- * edge from it to itself. Then the chain cells' cell_ref, written as ref_base + k,
- * move up past the loop vertices (vertices number below edge cells in cell_ref). */
+ * is still unwalked: the first cell of each, row-major (from the plane, its empty
+ * words skipped), a loop vertex, the loop an edge from it to itself. Then the chain
+ * cells' cell_ref, written as ref_base + k, move up past the loop vertices (vertices
+ * number below edge cells in cell_ref). */
 static void builder_loops(Builder *b)
 {
 	if (b->chain_left == 0)
 		return;
 	Pathgraph *pg = b->pg;
-	const Skeleton *s = b->s;
-	const size_t n = (size_t)pg->w * (size_t)pg->h;
+	const int32_t w = pg->w, h = pg->h, words = skeleton_plane_words(w);
+	const int32_t last = 1 + (w - 1) / 64;
 	const int32_t nv = pg->vertex_count;
-	for (size_t i = 0; i < n && b->chain_left > 0; i++) {
-		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
-			continue;
-		int32_t v = builder_add_vertex(b, (int32_t)i, PATHGRAPH_LOOP);
-		b->chain_left--;
-		int32_t x = (int32_t)(i % (size_t)pg->w);
-		int d = 0;
-		while (builder_neighbour(b, (int32_t)i, x, d) < 0)
-			d++;
-		b->mask[i] = 0; /* where the walk round the loop ends */
-		builder_edge_from(b, v, (int32_t)i, d);
+	for (int32_t y = 0; y < h && b->chain_left > 0; y++) {
+		const uint8_t *row = b->plane + (size_t)(y + 1) * (size_t)words * 8;
+		for (int32_t j = 1; j <= last && b->chain_left > 0; j++) {
+			uint64_t here = pathgraph_load64(row + 8 * j);
+			while (here && b->chain_left > 0) {
+				const int k = pathgraph_ctz64(here);
+				here &= here - 1;
+				const int32_t i = y * w + (j - 1) * 64 + k;
+				if (pg->cell_ref[i] != PATHGRAPH_REF_NONE)
+					continue;
+				int32_t v = builder_add_vertex(b, i, PATHGRAPH_LOOP);
+				b->chain_left--;
+				const unsigned m = builder_mask(b, i);
+				int d = 0;
+				while (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
+					d++;
+				builder_edge_from(b, v, i, d, i);
+			}
+		}
 	}
 	/* inner cells of edges at or past nv are chain cells: junction-set cells number
 	 * below nv, and loop vertices' cells end their edges */
@@ -660,19 +668,20 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 			memset(sc->toward, 0, n);
 		}
 	}
-	if (sc->mask_cells != n || !sc->mask) {
-		free(sc->mask);
-		sc->mask = util_alloc(n, 1);
-		sc->mask_cells = n;
-	}
 	sc->built_valid = false;
 	pg->w = s->w;
 	pg->h = s->h;
 	pg->grid = g;
 	pg->skeleton = s;
 	pg->vertex_count = pg->edge_count = pg->cell_count = 0;
-	Builder b = {
-	    .pg = pg, .s = s, .sc = sc, .toward = sc->toward, .mask = sc->mask, .max_set = 1};
+	assert(s->plane); /* made by skeleton_compute */
+	Builder b = {.pg = pg,
+	             .s = s,
+	             .sc = sc,
+	             .toward = sc->toward,
+	             .plane = s->plane,
+	             .row_bits = 64 * skeleton_plane_words(s->w),
+	             .max_set = 1};
 	b.vcells = sc->built_vcells; /* its memory, reused */
 	b.vcells.count = 0;
 	b.vstart = sc->vstart;

@@ -90,10 +90,6 @@ struct PathgraphScratch {
 	 * again, and the builder's list of where each vertex's cells start. */
 	int vertex_cap, edge_cap, cells_cap, incident_start_cap, incident_cap;
 	IntList vstart;
-	/* The build's skeleton-neighbour masks (pathgraph.c, Builder.mask): w h bytes,
-	 * written by each build where it needs them, so never cleared. */
-	uint8_t *mask;
-	size_t mask_cells;
 };
 
 /* ---------------------------------------------------------------- lengths */
