@@ -129,6 +129,9 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->toward);
 	free(sc->built_vcells.v);
 	free(sc->vstart.v);
+	free(sc->cell_of);
+	free(sc->cand.v);
+	free(sc->rank_base);
 	free(sc);
 }
 
@@ -139,7 +142,6 @@ void pathgraph_free(Pathgraph *pg)
 	free(pg->cells);
 	free(pg->incident_start);
 	free(pg->incident);
-	free(pg->cell_ref);
 	free(pg->cell_edge);
 	pathgraph_free_scratch(pg->scratch);
 	*pg = (Pathgraph){0};
@@ -157,6 +159,8 @@ typedef struct Builder {
 	uint8_t *toward;      /* junction-set cells: 1 + direction to the parent, 0 at the root */
 	const uint8_t *plane; /* the skeleton's bits (Skeleton.plane) */
 	int32_t row_bits;     /* bits a row of the plane: the step north there */
+	const int32_t *base;  /* the rank of each plane word's first bit */
+	PathgraphCell *cell;  /* the skeleton cells' records, by rank */
 	IntList vcells;       /* cells of every vertex, vertex after vertex */
 	IntList vstart;       /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
 	int32_t count;        /* edge cells so far, in pg->cells and pg->cell_edge */
@@ -165,31 +169,24 @@ typedef struct Builder {
 	int32_t ref_base;     /* vertices found by step (1): chain cells' cell_ref base */
 } Builder;
 
-/* pathgraph_load64(p): the 64 bits at p, bit k of the word bit k & 7 of byte p[k >> 3]
- * (the plane's order: one load where bytes are stored little-end first). */
-static inline uint64_t pathgraph_load64(const uint8_t *p)
+/* pathgraph_load16(p): the 16 bits at p, in the plane's order. */
+static inline unsigned pathgraph_load16(const uint8_t *p)
 {
-	uint64_t v;
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-	memcpy(&v, p, sizeof v);
-#else
-	v = 0;
-	for (int k = 7; k >= 0; k--)
-		v = v << 8 | p[k];
-#endif
-	return v;
+	return (unsigned)p[0] | (unsigned)p[1] << 8;
 }
 
 /* pathgraph_plane_mask(plane, cb, row_bits): the skeleton 4-neighbours of the cell of
- * plane bit cb, as bits west 0, north 1, east 2, south 3 (the order that the west, own
- * and east bits of one load give: PATHGRAPH_MASK_BIT). The plane's zero border spares
- * every test of the grid's edges. */
+ * plane bit cb, as bits west 0, north 1, east 2, south 3: the west, own and east bits
+ * of the cell's row and of the rows north and south (row_bits away, a multiple of 64:
+ * the same shift) by three 16-bit loads. The plane's zero border spares every test of
+ * the grid's edges. */
 static inline unsigned pathgraph_plane_mask(const uint8_t *plane, int32_t cb, int32_t row_bits)
 {
-	const uint64_t t = pathgraph_load64(plane + ((cb - 1) >> 3)) >> ((cb - 1) & 7);
-	const int32_t n = cb + row_bits, s = cb - row_bits;
-	return ((unsigned)t & 5) | (unsigned)(plane[n >> 3] >> (n & 7) & 1) << 1 |
-	       (unsigned)(plane[s >> 3] >> (s & 7) & 1) << 3;
+	const uint8_t *p = plane + ((cb - 1) >> 3);
+	const unsigned sh = (unsigned)(cb - 1) & 7;
+	const size_t rowb = (size_t)row_bits / 8;
+	return (pathgraph_load16(p) >> sh & 5) | (pathgraph_load16(p + rowb) >> sh & 2) |
+	       (pathgraph_load16(p - rowb) >> sh & 2) << 2;
 }
 
 /* The bit of direction d (east north west south) in a pathgraph_plane_mask, and the
@@ -205,6 +202,12 @@ static inline int32_t builder_bit(const Builder *b, int32_t i)
 	return (int32_t)skeleton_plane_bit(w, i - y * w, y);
 }
 
+/* builder_cell(b, cb): the record of the skeleton cell of plane bit cb. */
+static inline PathgraphCell *builder_cell(const Builder *b, int32_t cb)
+{
+	return &b->cell[pathgraph_rank(b->plane, b->base, cb)];
+}
+
 /* builder_mask(b, i): pathgraph_plane_mask of grid cell i. */
 static inline unsigned builder_mask(const Builder *b, int32_t i)
 {
@@ -218,7 +221,7 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 	    util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
-	pg->cell_ref[cell] = v;
+	builder_cell(b, builder_bit(b, cell))->ref = v;
 	return v;
 }
 
@@ -240,10 +243,11 @@ static void builder_junction_set(Builder *b, int32_t seed)
 			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 				continue;
 			const int32_t nb = c + step[d];
-			if (pg->cell_ref[nb] == PATHGRAPH_REF_NONE &&
+			PathgraphCell *nc = builder_cell(b, cb + bstep[d]);
+			if (nc->ref == PATHGRAPH_REF_NONE &&
 			    PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb + bstep[d],
-			                                                    b->row_bits)] >= 3) {
-				pg->cell_ref[nb] = v;
+			                                        b->row_bits)] >= 3) {
+				nc->ref = v;
 				intlist_push(&b->vcells, nb);
 			}
 		}
@@ -258,13 +262,14 @@ static void builder_junction_set(Builder *b, int32_t seed)
 	intlist_push(&b->vcells, root);
 	b->toward[root] = 0;
 	for (int k = first; k < b->vcells.count; k++) {
-		const int32_t c = b->vcells.v[k];
-		const unsigned m = builder_mask(b, c);
+		const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+		const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 		for (int d = 0; d < 4; d++) {
 			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 				continue;
 			const int32_t nb = c + step[d];
-			if (nb != root && pg->cell_ref[nb] == v && b->toward[nb] == 0) {
+			if (nb != root && b->toward[nb] == 0 &&
+			    builder_cell(b, cb + bstep[d])->ref == v) {
 				b->toward[nb] = (uint8_t)(1 + (d + 2) % 4);
 				intlist_push(&b->vcells, nb);
 			}
@@ -395,12 +400,27 @@ static const int8_t PATHGRAPH_NEXT[4][16] = {
     {-1, -1, -1, -1, -1, -1, -1, -1, -1, 2, 1, -1, 0, -1, -1, -1},
 };
 
+/* On x86-64 Linux the walk is also compiled with the popcnt instruction, chosen at
+ * load time: a step north or south counts bits for its rank (pathgraph_rank), twelve
+ * instructions without it. */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define PATHGRAPH_CLONES __attribute__((target_clones("popcnt", "default")))
+#define PATHGRAPH_WALK_RANK(cb)                                                                    \
+	(base[(cb) >> 6] +                                                                         \
+	 (int32_t)__builtin_popcountll(pathgraph_load64(plane + 8 * (size_t)((cb) >> 6)) &         \
+	                               ((UINT64_C(1) << ((cb) & 63)) - 1)))
+#else
+#define PATHGRAPH_CLONES
+#define PATHGRAPH_WALK_RANK(cb) pathgraph_rank(plane, base, cb)
+#endif
+
 /* builder_edge_from(b, v, c, d, stop): the edge leaving vertex v's cell c in direction
  * d, into a chain cell not yet walked: along the chain to the next cell that is not a
  * chain cell (of degree other than 2, so a vertex cell, step 1) or is stop (a loop
  * vertex's cell, builder_loops; else -1), measuring it on the way. Each chain cell's
- * cell_ref is set to ref_base + its place in cells[]. */
-static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d, int32_t stop)
+ * record takes ref_base + its place in cells[] as its ref. */
+PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d,
+                                               int32_t stop)
 {
 	Pathgraph *pg = b->pg;
 	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
@@ -410,10 +430,12 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d, int32_t s
 	const int32_t w = pg->w, ref_base = b->ref_base, rb = b->row_bits;
 	const int32_t step[4] = {1, w, -1, -w};
 	const uint8_t *plane = b->plane;
+	const int32_t *base = b->base;
 	const int32_t *dist2 = b->s->dist2;
-	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
-	int32_t k = b->count, cur, cb;
-	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
+	PathgraphCell *cell = b->cell;
+	int32_t *cells = pg->cells;
+	int32_t k = b->count, cur, cb, rk;
+	/* r in locals (the stores to the records and cells could alias it); pend is the
 	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
 	if (r.ready) {
@@ -424,25 +446,32 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d, int32_t s
 	double length = r.length;
 	cur = c;
 	cb = builder_bit(b, c);
+	rk = pathgraph_rank(plane, base, cb);
 	/* A state for each direction of the step into cur, each adding its constants to
-	 * cur and its plane bit cb, and a branch on the direction on (the switch) rather
-	 * than cur += step[next]: the branch predictor runs ahead along a corridor, and
-	 * the loads of the cells ahead overlap where the data dependence of the index on
-	 * each mask would make them wait in turn (see MEASURED). Straight on is tested
-	 * first: one predictable branch down a corridor. The neighbours come from the
-	 * plane (three loads, all near: the plane is an eighth of a byte a cell). */
-#define PATHGRAPH_WALK_STEP(D, STEP, BSTEP)                                                        \
+	 * cur, its plane bit cb and (east and west) its rank rk, and a branch on the
+	 * direction on (the switch) rather than cur += step[next]: the branch predictor
+	 * runs ahead along a corridor, and the loads of the cells ahead overlap where the
+	 * data dependence of the index on each mask would make them wait in turn (see
+	 * MEASURED). Straight on is tested first: one predictable branch down a corridor.
+	 * The neighbours come from the plane (three loads, all near: an eighth of a byte
+	 * a cell), the dist2 and the ref from the cell's record, found by its rank: a
+	 * step north or south counts the bits before it in its word. The cut corner's
+	 * fourth cell is free by the grid's byte (only at turns). */
+#define PATHGRAPH_WALK_STEP(D, STEP, BSTEP, RANK)                                                  \
 	walk_##D:                                                                                  \
 	{                                                                                          \
 		cur += (STEP);                                                                     \
 		cb += (BSTEP);                                                                     \
+		rk = (RANK);                                                                       \
 		const int next = PATHGRAPH_NEXT[(D) ^ 2][pathgraph_plane_mask(plane, cb, rb)];     \
 		if (next < 0 || cur == stop)                                                       \
 			goto walk_end;                                                             \
-		cell_ref[cur] = ref_base + k;                                                      \
+		PathgraphCell *const rec = &cell[rk];                                              \
+		rec->ref = ref_base + k;                                                           \
 		cells[k++] = cur;                                                                  \
 		if (pend >= 0) {                                                                   \
-			const bool cut = ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;        \
+			const bool cut =                                                           \
+			    ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;                     \
 			length += cut ? PATHGRAPH_SQRT2 : 1.0;                                     \
 			pend = cut ? -1 : (D);                                                     \
 		} else {                                                                           \
@@ -473,17 +502,17 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d, int32_t s
 	default:
 		goto walk_3;
 	}
-	PATHGRAPH_WALK_STEP(0, 1, 1)
-	PATHGRAPH_WALK_STEP(1, w, rb)
-	PATHGRAPH_WALK_STEP(2, -1, -1)
-	PATHGRAPH_WALK_STEP(3, -w, -rb)
+	PATHGRAPH_WALK_STEP(0, 1, 1, rk + 1)
+	PATHGRAPH_WALK_STEP(1, w, rb, PATHGRAPH_WALK_RANK(cb))
+	PATHGRAPH_WALK_STEP(2, -1, -1, rk - 1)
+	PATHGRAPH_WALK_STEP(3, -w, -rb, PATHGRAPH_WALK_RANK(cb))
 #undef PATHGRAPH_WALK_STEP
 walk_end:
 	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
 	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
 	b->chain_left -= k - b->count;
 	b->count = k;
-	const int32_t u = cell_ref[cur];
+	const int32_t u = cell[rk].ref;
 	assert(u >= 0 && u < pg->vertex_count);
 	builder_root_path(b, cur, &r, true);
 	builder_end_edge(b, v, u, first, &r);
@@ -516,22 +545,33 @@ static inline int pathgraph_ctz64(uint64_t v)
 #endif
 }
 
-/* builder_vertices(b): step (1), the vertices in row-major order of their first cell.
- * It reads the skeleton's plane, 64 cells a word, and skips the empty words: a word's
- * cells of degree other than 2 come from the four words around it by bit arithmetic,
- * and only they are visited one by one. The grid itself is not read. */
-static void builder_vertices(Builder *b)
+/* builder_vertices(b): step (1). First, one pass over the skeleton's plane, 64 cells
+ * a word, the empty words skipped: the rank of each word's first bit, each skeleton
+ * cell's record in rank order (its dist2, from the grid-sized dist2 in row-major
+ * order, the one read of it for the chain cells; no ref yet), and the cells of
+ * degree other than 2, found from the four words around by bit arithmetic. Then the
+ * vertices, in row-major order of their first cell: a junction set's flood reaches
+ * cells past the one it starts at, so it waits for every record. The grid itself is
+ * not read. */
+static void builder_vertices(Builder *b, IntList *cand)
 {
 	Pathgraph *pg = b->pg;
 	const int32_t w = pg->w, h = pg->h, words = skeleton_plane_words(w);
 	const int32_t last = 1 + (w - 1) / 64; /* the last word of a row holding cells */
+	int32_t *base = b->sc->rank_base;
+	PathgraphCell *cell = b->cell;
+	int32_t rank = 0;
+	cand->count = 0;
 	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *row = b->plane + (size_t)(y + 1) * (size_t)words * 8;
+		const size_t wi = (size_t)(y + 1) * (size_t)words;
+		const uint8_t *row = b->plane + wi * 8;
 		const uint8_t *above = row + (size_t)words * 8, *below = row - (size_t)words * 8;
 		for (int32_t j = 1; j <= last; j++) {
+			base[wi + (size_t)j] = rank;
 			const uint64_t here = pathgraph_load64(row + 8 * j);
 			if (here == 0)
 				continue;
+			rank += pathgraph_pop64(here);
 			const uint64_t e = here >> 1 | pathgraph_load64(row + 8 * (j + 1)) << 63,
 			               wst = here << 1 | pathgraph_load64(row + 8 * (j - 1)) >> 63,
 			               nth = pathgraph_load64(above + 8 * j),
@@ -539,18 +579,17 @@ static void builder_vertices(Builder *b)
 			/* degree exactly 2: e + wst = s1 + 2 c1, nth + sth = s2 + 2 c2 */
 			const uint64_t s1 = e ^ wst, c1 = e & wst, s2 = nth ^ sth, c2 = nth & sth;
 			const uint64_t two = (s1 & s2 & ~(c1 | c2)) | (~(s1 | s2) & (c1 ^ c2));
-			uint64_t cand = here & ~two;
-			while (cand) {
-				const int k = pathgraph_ctz64(cand);
-				cand &= cand - 1;
-				const int32_t i = y * w + (j - 1) * 64 + k;
-				if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-					builder_vertex_at(
-					    b, i,
-					    (int)((e >> k & 1) + (wst >> k & 1) + (nth >> k & 1) +
-					          (sth >> k & 1)));
-			}
+			for (uint64_t t = here & ~two; t; t &= t - 1)
+				intlist_push(cand, y * w + (j - 1) * 64 + pathgraph_ctz64(t));
 		}
+	}
+	assert(rank == b->s->count);
+	memset(cell, 0xff, (size_t)rank * sizeof *cell); /* all PATHGRAPH_REF_NONE */
+	for (int k = 0; k < cand->count; k++) {
+		const int32_t i = cand->v[k], cb = builder_bit(b, i);
+		if (b->cell[pathgraph_rank(b->plane, base, cb)].ref == PATHGRAPH_REF_NONE)
+			builder_vertex_at(
+			    b, i, PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb, b->row_bits)]);
 	}
 	intlist_push(&b->vstart, b->vcells.count);
 }
@@ -561,15 +600,16 @@ static void builder_edges(Builder *b)
 	Pathgraph *pg = b->pg;
 	const int32_t nv = pg->vertex_count;
 	const int32_t step[4] = {1, pg->w, -1, -pg->w};
+	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
 	for (int32_t v = 0; v < nv; v++)
 		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
-			const int32_t c = b->vcells.v[k];
-			const unsigned m = builder_mask(b, c);
+			const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+			const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 			for (int d = 0; d < 4; d++) {
 				if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 					continue;
 				const int32_t nb = c + step[d];
-				int32_t ref = pg->cell_ref[nb];
+				int32_t ref = builder_cell(b, cb + bstep[d])->ref;
 				if (ref == PATHGRAPH_REF_NONE) {
 					builder_edge_from(b, v, c, d, -1);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
@@ -588,9 +628,10 @@ static void builder_edges(Builder *b)
 
 /* builder_loops(b): step (3), loops without a junction, only when some skeleton cell
  * is still unwalked: the first cell of each, row-major (from the plane, its empty
- * words skipped), a loop vertex, the loop an edge from it to itself. Then the chain
- * cells' cell_ref, written as ref_base + k, move up past the loop vertices (vertices
- * number below edge cells in cell_ref). */
+ * words skipped, the ranks counted along), a loop vertex, the loop an edge from it to
+ * itself. Then the chain cells' refs, written as ref_base + k, move up past the loop
+ * vertices (vertices number below edge cells): every ref at or past ref_base, in one
+ * pass over the records, and the loop vertices' own cells set back. */
 static void builder_loops(Builder *b)
 {
 	if (b->chain_left == 0)
@@ -600,15 +641,15 @@ static void builder_loops(Builder *b)
 	const int32_t last = 1 + (w - 1) / 64;
 	const int32_t nv = pg->vertex_count;
 	for (int32_t y = 0; y < h && b->chain_left > 0; y++) {
-		const uint8_t *row = b->plane + (size_t)(y + 1) * (size_t)words * 8;
+		const size_t wi = (size_t)(y + 1) * (size_t)words;
+		const uint8_t *row = b->plane + wi * 8;
 		for (int32_t j = 1; j <= last && b->chain_left > 0; j++) {
 			uint64_t here = pathgraph_load64(row + 8 * j);
-			while (here && b->chain_left > 0) {
-				const int k = pathgraph_ctz64(here);
-				here &= here - 1;
-				const int32_t i = y * w + (j - 1) * 64 + k;
-				if (pg->cell_ref[i] != PATHGRAPH_REF_NONE)
+			int32_t rank = b->base[wi + (size_t)j];
+			for (; here && b->chain_left > 0; here &= here - 1, rank++) {
+				if (b->cell[rank].ref != PATHGRAPH_REF_NONE)
 					continue;
+				const int32_t i = y * w + (j - 1) * 64 + pathgraph_ctz64(here);
 				int32_t v = builder_add_vertex(b, i, PATHGRAPH_LOOP);
 				b->chain_left--;
 				const unsigned m = builder_mask(b, i);
@@ -619,56 +660,40 @@ static void builder_loops(Builder *b)
 			}
 		}
 	}
-	/* inner cells of edges at or past nv are chain cells: junction-set cells number
-	 * below nv, and loop vertices' cells end their edges */
 	const int32_t loops = pg->vertex_count - nv;
-	for (int32_t e = 0; e < pg->edge_count; e++) {
-		const PathgraphEdge *ed = &pg->edges[e];
-		for (int32_t k = ed->first + 1; k < ed->first + ed->count - 1; k++)
-			if (pg->cell_ref[pg->cells[k]] >= nv)
-				pg->cell_ref[pg->cells[k]] += loops;
+	for (int32_t k = 0; k < b->s->count; k++)
+		if (b->cell[k].ref >= nv)
+			b->cell[k].ref += loops;
+	for (int32_t v = nv; v < pg->vertex_count; v++) {
+		const PathgraphVertex *p = &pg->vertices[v];
+		builder_cell(b, builder_bit(b, p->y * w + p->x))->ref = v;
 	}
 }
 
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 {
-	/* keep the query scratch, the arrays and the cell map of a grid of the same size */
+	/* keep the query scratch and the arrays of the last build; toward, over the grid,
+	 * zero but on the last build's vertex cells (built_vcells), cleared there */
 	const size_t n = (size_t)s->w * (size_t)s->h;
 	if (!pg->scratch)
 		pg->scratch = util_alloc(1, sizeof *pg->scratch);
 	struct PathgraphScratch *sc = pg->scratch;
-	if (pg->cell_ref && (pg->w != s->w || pg->h != s->h)) {
-		free(pg->cell_ref);
-		pg->cell_ref = NULL;
+	if (sc->toward_cells != n || !sc->toward) {
+		free(sc->toward);
+		sc->toward = util_alloc(n, 1);
+		sc->toward_cells = n;
+		sc->built_vcells.count = 0;
 	}
-	if (pg->cell_ref && sc->built_valid && sc->toward_cells == n) {
-		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
-		int32_t *cell_ref = pg->cell_ref;
-		const int32_t *cells = pg->cells, count = pg->cell_count;
-		/* one cell in 8 or more: every line of cell_ref holds some, and one
-		 * stream over it costs less than a store a cell in chain order */
-		if ((size_t)count * 8 > n)
-			memset(cell_ref, 0xff, n * sizeof *cell_ref);
-		else
-			for (int32_t k = 0; k < count; k++)
-				cell_ref[cells[k]] = PATHGRAPH_REF_NONE;
-		for (int k = 0; k < sc->built_vcells.count; k++) {
-			pg->cell_ref[sc->built_vcells.v[k]] = PATHGRAPH_REF_NONE;
-			sc->toward[sc->built_vcells.v[k]] = 0;
-		}
-	} else {
-		if (!pg->cell_ref)
-			pg->cell_ref = util_alloc(n + 1, sizeof *pg->cell_ref);
-		memset(pg->cell_ref, 0xff, n * sizeof *pg->cell_ref); /* all PATHGRAPH_REF_NONE */
-		if (sc->toward_cells != n || !sc->toward) {
-			free(sc->toward);
-			sc->toward = util_alloc(n, 1);
-			sc->toward_cells = n;
-		} else {
-			memset(sc->toward, 0, n);
-		}
+	for (int k = 0; k < sc->built_vcells.count; k++)
+		sc->toward[sc->built_vcells.v[k]] = 0;
+	sc->built_vcells.count = 0;
+	const size_t words = (size_t)(s->h + 2) * (size_t)skeleton_plane_words(s->w);
+	if (sc->rank_words != words || !sc->rank_base) {
+		free(sc->rank_base);
+		sc->rank_base = util_alloc(words, sizeof *sc->rank_base);
+		sc->rank_words = words;
 	}
-	sc->built_valid = false;
+	sc->cell_of = util_grow(sc->cell_of, &sc->cell_cap, s->count + 1, sizeof *sc->cell_of);
 	pg->w = s->w;
 	pg->h = s->h;
 	pg->grid = g;
@@ -681,13 +706,15 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	             .toward = sc->toward,
 	             .plane = s->plane,
 	             .row_bits = 64 * skeleton_plane_words(s->w),
+	             .base = sc->rank_base,
+	             .cell = sc->cell_of,
 	             .max_set = 1};
 	b.vcells = sc->built_vcells; /* its memory, reused */
 	b.vcells.count = 0;
 	b.vstart = sc->vstart;
 	b.vstart.count = 0;
 
-	builder_vertices(&b);
+	builder_vertices(&b, &sc->cand);
 	b.chain_left = s->count - b.vcells.count;
 	b.ref_base = pg->vertex_count;
 	builder_edges(&b);
@@ -720,7 +747,17 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	start[0] = 0;
 	sc->built_vcells = b.vcells;
 	sc->vstart = b.vstart;
-	sc->built_valid = true;
+}
+
+int32_t pathgraph_cell_ref(const Pathgraph *pg, int32_t i)
+{
+	if (!pg->scratch || !pg->skeleton)
+		return PATHGRAPH_REF_NONE;
+	const int32_t y = i / pg->w, cb = (int32_t)skeleton_plane_bit(pg->w, i - y * pg->w, y);
+	const uint8_t *plane = pg->skeleton->plane;
+	if (!(plane[cb >> 3] >> (cb & 7) & 1))
+		return PATHGRAPH_REF_NONE;
+	return pg->scratch->cell_of[pathgraph_rank(plane, pg->scratch->rank_base, cb)].ref;
 }
 
 /* ---------------------------------------------------------------- validation */
@@ -752,7 +789,7 @@ bool pathgraph_validate(const Pathgraph *pg)
 				return false;
 			if (s->dist2[c[k]] < mind)
 				mind = s->dist2[c[k]];
-			int32_t ref = pg->cell_ref[c[k]];
+			int32_t ref = pathgraph_cell_ref(pg, c[k]);
 			bool inner_ok = ref == pg->vertex_count + ed->first + k ||
 			                (ref >= 0 && ref < pg->vertex_count);
 			if (!inner_ok)
@@ -762,9 +799,20 @@ bool pathgraph_validate(const Pathgraph *pg)
 		    fabs(ed->length - pathgraph_run_length(pg, c, ed->count, 1)) > 1e-9)
 			return false;
 	}
-	for (size_t i = 0; i < (size_t)pg->w * pg->h; i++)
-		if ((pg->cell_ref[i] >= 0) != (s->on[i] != 0))
-			return false;
+	/* the plane the build read is the skeleton, and every skeleton cell is a vertex
+	 * cell or the edge cell its ref names */
+	for (int32_t y = 0; y < pg->h; y++)
+		for (int32_t x = 0; x < pg->w; x++) {
+			const int32_t i = y * pg->w + x;
+			const int64_t cb = skeleton_plane_bit(pg->w, x, y);
+			if ((s->plane[cb >> 3] >> (cb & 7) & 1) != (s->on[i] != 0))
+				return false;
+			const int32_t ref = pathgraph_cell_ref(pg, i);
+			if ((ref >= 0) != (s->on[i] != 0) ||
+			    ref >= pg->vertex_count + pg->cell_count ||
+			    (ref >= pg->vertex_count && pg->cells[ref - pg->vertex_count] != i))
+				return false;
+		}
 	for (int32_t v = 0; v < pg->vertex_count; v++)
 		for (int32_t k = pg->incident_start[v]; k < pg->incident_start[v + 1]; k++) {
 			const PathgraphEdge *ed = &pg->edges[pg->incident[k]];
