@@ -2,22 +2,30 @@
  * pathfind.c. See pathgraph.h for what the vertices, edges and paths are.
  *
  * ALGORITHM
- * Build: (1) every skeleton cell of degree other than 2 is a vertex cell; 4-adjacent
- *    junction cells are merged into a junction set by flood fill, placed at its cell of
- *    largest dist2, and a breadth-first tree inside the set leads from any of its cells
- *    to that one. The same row-major scan records each skeleton cell's 4-neighbours as
- *    a mask of four bits. (2) From every vertex cell, every skeleton neighbour that is
- *    an unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
- *    cell: that chain is an edge. The walk steps by the masks (one load and a table a
- *    step) and measures the edge as it goes (length, clearance, cell_ref), so each
- *    chain cell is touched once. Two vertex cells of different vertices that touch are
- *    joined by an edge without chain cells. (3) Chain cells still unvisited lie on loops
- *    without a junction: the first of each in row-major order becomes a loop vertex
- *    and the loop an edge from it to itself. Vertices are numbered by their first cell
- *    in row-major order (loop vertices after the others), edges as found: the result
- *    depends on nothing else. A rebuild on a grid of the same size keeps every array
- *    and clears only the cells the last build set (all of cell_ref by one memset when
- *    they were one in 8 or more).
+ * Build, from the skeleton's bit plane (Skeleton.plane, 64 cells a word, made by
+ *    skeleton_compute as it writes its output): the grid and the skeleton's bytes are
+ *    not scanned, and every array the build writes is sized by the skeleton's cells,
+ *    not the grid's (but toward, below, touched on junction-set cells alone). A
+ *    skeleton cell's record (its cell_ref, pathgraph_cell_ref) is found by its rank,
+ *    the skeleton cells before it in row-major order: a table holds the rank of each
+ *    plane word's first bit, and a popcount of the word does the rest.
+ *    (0) One pass over the plane's words, the empty ones skipped: the table of ranks,
+ *    and the cells of degree other than 2, by bit arithmetic on the word and the four
+ *    around it. (1) Those cells are the vertex cells; 4-adjacent junction cells are
+ *    merged into a junction set by flood fill, placed at its cell of largest dist2, and
+ *    a breadth-first tree inside the set (toward: a byte a grid cell, zero but on the
+ *    last build's vertex cells) leads from any of its cells to that one. (2) From every
+ *    vertex cell, every skeleton neighbour that is an unvisited chain cell (degree 2)
+ *    starts a walk along the chain to the next vertex cell: that chain is an edge. The
+ *    walk reads each cell's neighbours from the plane (three 16-bit loads) and a table,
+ *    keeps the cell's rank (a step east or west is one rank on; north or south a
+ *    popcount) and measures the edge as it goes (length, clearance, the record's ref),
+ *    so each chain cell is touched once. Two vertex cells of different vertices that
+ *    touch are joined by an edge without chain cells. (3) Chain cells still unvisited
+ *    lie on loops without a junction: the first of each in row-major order becomes a
+ *    loop vertex and the loop an edge from it to itself. Vertices are numbered by
+ *    their first cell in row-major order (loop vertices after the others), edges as
+ *    found: the result depends on nothing else. A rebuild keeps every array.
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
@@ -30,15 +38,16 @@
  *    inner cell of exactly one edge; incident[] lists each edge under both its vertices
  *    (once for a loop).
  *
- * MEMORY  cell_ref (4 bytes a grid cell); the edges' cells (4 + 4 bytes each); vertices
- *    and edges; for the build, 2 bytes a grid cell kept between builds (the masks,
- *    and the junction sets' parent directions); and, for the queries, 12 bytes a grid
- *    cell of search scratch (a visit stamp, a parent and a queue entry: stamps spare
- *    clearing between queries).
+ * MEMORY  a record (4 bytes) a skeleton cell, and the table of ranks (4 bytes a
+ *    plane word: half a bit a grid cell); the edges' cells (4 + 4 bytes each);
+ *    vertices and edges; for the build, the junction sets' parent directions (a byte
+ *    a grid cell, kept between builds, touched on their cells alone); and, for the
+ *    queries, 12 bytes a grid cell of search scratch (a visit stamp, a parent and a
+ *    queue entry: stamps spare clearing between queries).
  *
- * COMPLEXITY  build O(w h) for the scan plus O(skeleton cells); a query O(cells searched
- *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
- *    path); k paths O(k L) such searches for routes of L arcs.
+ * COMPLEXITY  build O(w h / 64) for the pass over the plane plus O(skeleton cells); a
+ *    query O(cells searched for S' and D' + V log V + length of the edges holding S'
+ *    and D' + cells of the path); k paths O(k L) such searches for routes of L arcs.
  *
  * MEASURED  on the bench-compare grids at 1024 x 1024 (issue 16), a rebuild on a grid of
  *    the same size. Instructions (callgrind --toggle-collect=pathgraph_build, exact;

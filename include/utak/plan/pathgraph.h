@@ -98,7 +98,9 @@ static inline PathgraphQuery pathgraph_query_default(void)
 
 void pathgraph_init(Pathgraph *pg);
 void pathgraph_free(Pathgraph *pg);
-/* pathgraph_build(pg, s, g): the pathgraph of skeleton s of grid g (see above). */
+/* pathgraph_build(pg, s, g): the pathgraph of skeleton s of grid g (see above); s made
+ * by skeleton_compute, whose bit plane (Skeleton.plane) the build reads instead of the
+ * grid. */
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g);
 
 /* pathgraph_cell_ref(pg, i): what grid cell i (y * w + x, inside the grid) is in the

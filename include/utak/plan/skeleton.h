@@ -76,10 +76,11 @@ void skeleton_free(Skeleton *s);
 void skeleton_compute(Skeleton *s, const Grid *g);
 
 /* skeleton_plane_words(w): 64-bit words a row of Skeleton.plane takes: one zero word,
- * then w bits, then at least one zero bit. The plane has h + 2 such rows. */
+ * then w bits, zero bits up to the next word and one more zero word (so that a load of
+ * a few bytes about any cell stays in its row). The plane has h + 2 such rows. */
 static inline int32_t skeleton_plane_words(int32_t w)
 {
-	return (w + 128) / 64;
+	return (w + 63) / 64 + 2;
 }
 /* skeleton_plane_bit(w, x, y): the bit of Skeleton.plane that holds cell (x, y); x and
  * y may be -1, w or h, an outside cell, whose bit is 0. */
