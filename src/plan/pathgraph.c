@@ -98,7 +98,41 @@
  *    its line) with a corner bit in place of the corner's dist2 load: step (2) no
  *    faster, step (1) 2.5 times slower (its scattered stores); a walk reading only
  *    the masks, then measuring the chain in a loop of its own: slower; prefetching 2
- *    or 4 cells ahead in the walk's direction: slower. */
+ *    or 4 cells ahead in the walk's direction: slower.
+ *    Then the build from the skeleton's bit plane and records by rank (ALGORITHM above;
+ *    issue 16's goal, 2 ms on every grid at 1024 and 4096, cannot be met by a build
+ *    that reads the grid: one read pass over a 4096 grid's bytes costs 5.6 ms here).
+ *    The same graph, array for array and cell_ref for cell_ref, on the ten bench grids
+ *    (1024 and 4096), and against a brute-force build in the tests. Instructions of a
+ *    rebuild (callgrind as above, 1024): rooms 3.55 -> 4.33 million (115 a skeleton
+ *    cell), rects 4.17 -> 5.11 (114), maze 20.8 -> 24.8 (100), Boston_0_1024 2.78 ->
+ *    3.05 (114), den520d 1.89 -> 1.59 (119): more instructions (the walk's neighbours
+ *    from the plane, about 21 a step by bits and bytes, 13 by three 16-bit loads; a
+ *    popcount a step north or south, 12 without the popcnt instruction, hence the
+ *    target clone), far fewer lines: no grid-sized mask, cell_ref or clearing (the
+ *    maze's rebuild, callgrind --cache-sim: first-level read misses 257 000 -> 202 000,
+ *    write misses 249 000 -> 116 000). Time, a driver timing pathgraph_build alone
+ *    after writing 64 MB to flush the caches (thread CPU, min of 7 builds, the median
+ *    of 3 rounds alternating with the former build, the machine loaded, load 5-9 on 2
+ *    cores): 1024 rooms 0.73 -> 0.62 ms, rects 1.17 -> 0.76, maze 3.45 -> 3.34,
+ *    Boston_0_1024 0.61 -> 0.44, den520d 0.43 -> 0.22; 4096 rooms 19.1 -> 14.9, rects
+ *    25.1 -> 20.4, maze 74.9 -> 59.0, Boston_0_1024 5.45 -> 2.86, den520d 2.69 -> 1.31;
+ *    skelbench --compare in one session (the pg column, medians of 5, load 9 on 2
+ *    cores): 1024 rooms 0.65 ms, rects 1.00, maze 3.06, Boston_0_1024 0.51, den520d
+ *    0.32; 4096 13.9, 22.6, 62.0, 3.14, 1.73. What is left is 13-15 ns a skeleton cell
+ *    on the maze (3.34 ms for 248 714 cells at 1024, 59.0 for 3 975 639 at 4096), 24-28
+ *    on rooms, rects and Boston_0_1024 at 4096 (staircases, a turn a step): the walk's
+ *    70-80 instructions a cell and its loads of dist2, a grid-sized array read in chain
+ *    order (perf, Boston_0_1024 at 4096: 60% of the walk waits on the load of dist2 and
+ *    the cut corner's). So 2 ms holds 80 000 to 140 000 skeleton cells: met on every
+ *    1024 grid but the maze and on den520d at 4096 (55 134 cells); not on Boston_0_1024
+ *    at 4096 (119 016), rooms and rects there (631 557, 725 098) or the maze (248 714,
+ *    3 975 639). Tried and dropped: each skeleton cell's dist2 copied into its record
+ *    in the first pass (so that the walk reads only skeleton-sized arrays): the copy,
+ *    made in row-major order, waits on a page walk for each cell of a north-south run
+ *    (rows 16 KB apart at 4096), and Boston_0_1024 at 4096 took 10.5 ms instead of 5.5;
+ *    the corner's free test by the grid's byte instead of dist2 (a line of its own at
+ *    every turn): the maze slower. */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
@@ -417,7 +451,7 @@ static const int8_t PATHGRAPH_NEXT[4][16] = {
 #define PATHGRAPH_WALK_RANK(cb)                                                                    \
 	(base[(cb) >> 6] +                                                                         \
 	 (int32_t)__builtin_popcountll(pathgraph_load64(plane + 8 * (size_t)((cb) >> 6)) &         \
-	                               ((UINT64_C(1) << ((cb) & 63)) - 1)))
+	                               ((UINT64_C(1) << ((cb)&63)) - 1)))
 #else
 #define PATHGRAPH_CLONES
 #define PATHGRAPH_WALK_RANK(cb) pathgraph_rank(plane, base, cb)
@@ -479,8 +513,7 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 		rec->ref = ref_base + k;                                                           \
 		cells[k++] = cur;                                                                  \
 		if (pend >= 0) {                                                                   \
-			const bool cut =                                                           \
-			    ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;                     \
+			const bool cut = ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;        \
 			length += cut ? PATHGRAPH_SQRT2 : 1.0;                                     \
 			pend = cut ? -1 : (D);                                                     \
 		} else {                                                                           \

@@ -411,7 +411,8 @@ static void brute_build(Brute *b, const Skeleton *s, const Grid *g)
 		for (int k = first; k < b->nvcells; k++)
 			for (int d = 0; d < 4; d++) {
 				int32_t nb = brute_nb(b, b->vcells[k], d);
-				if (nb >= 0 && nb != root && b->ref[nb] == id && b->parent_dir[nb] < 0) {
+				if (nb >= 0 && nb != root && b->ref[nb] == id &&
+				    b->parent_dir[nb] < 0) {
 					b->parent_dir[nb] = (int8_t)((d + 2) % 4);
 					b->vcells[b->nvcells++] = nb;
 				}
