@@ -170,7 +170,7 @@ static void rooms_find_doors(Rooms *r, const Pathgraph *pg)
 				int32_t best = -1, best_width = INT32_MAX, best_off = INT32_MAX;
 				int32_t cross[4] = {0, 0, 0, 0}, best_cross[4] = {0, 0, 0, 0};
 				for (int32_t k = i; k <= j; k++) {
-					if (pg->cell_ref[c[k]] < pg->vertex_count)
+					if (pathgraph_cell_ref(pg, c[k]) < pg->vertex_count)
 						continue;
 					int32_t width = rooms_cross(pg->grid, c[k] % pg->w,
 					                            c[k] / pg->w, cross);

@@ -184,7 +184,7 @@ static void pathgraph_vertex_walk(Pathgraph *pg, int32_t c, int32_t v, IntList *
 			if (nx < 0 || ny < 0 || nx >= w || ny >= pg->h)
 				continue;
 			int32_t nb = ny * w + nx;
-			if (pg->cell_ref[nb] == v && sc->visit[nb] != stamp) {
+			if (pathgraph_cell_ref(pg, nb) == v && sc->visit[nb] != stamp) {
 				sc->visit[nb] = stamp;
 				sc->parent[nb] = q;
 				sc->queue[tail++] = nb;
@@ -239,16 +239,16 @@ static void pathgraph_splice(Pathgraph *pg, int32_t s_cell, int32_t d_cell)
 	int32_t ends[2] = {s_cell, d_cell}, nodes[2] = {S, D};
 	int32_t edge[2], pos[2];
 	for (int i = 0; i < 2; i++) {
-		int32_t ref = pg->cell_ref[ends[i]];
+		int32_t ref = pathgraph_cell_ref(pg, ends[i]);
 		assert(ref >= 0);
 		edge[i] = ref < V ? -1 : pg->cell_edge[ref - V];
 		pos[i] = ref < V ? -1 : ref - V - pg->edges[edge[i]].first;
 	}
 	/* vertex cells: a walk inside the vertex */
 	if (edge[0] < 0)
-		pathgraph_add_piece(pg, pg->cell_ref[s_cell], S, -1, 0, 0, s_cell);
+		pathgraph_add_piece(pg, pathgraph_cell_ref(pg, s_cell), S, -1, 0, 0, s_cell);
 	if (edge[1] < 0)
-		pathgraph_add_piece(pg, pg->cell_ref[d_cell], D, -1, 0, 0, d_cell);
+		pathgraph_add_piece(pg, pathgraph_cell_ref(pg, d_cell), D, -1, 0, 0, d_cell);
 	if (edge[0] >= 0 && edge[0] == edge[1]) {
 		const PathgraphEdge *e = &pg->edges[edge[0]];
 		int lo = pos[0] < pos[1] ? 0 : 1, hi = 1 - lo;

@@ -2,22 +2,30 @@
  * pathfind.c. See pathgraph.h for what the vertices, edges and paths are.
  *
  * ALGORITHM
- * Build: (1) every skeleton cell of degree other than 2 is a vertex cell; 4-adjacent
- *    junction cells are merged into a junction set by flood fill, placed at its cell of
- *    largest dist2, and a breadth-first tree inside the set leads from any of its cells
- *    to that one. The same row-major scan records each skeleton cell's 4-neighbours as
- *    a mask of four bits. (2) From every vertex cell, every skeleton neighbour that is
- *    an unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
- *    cell: that chain is an edge. The walk steps by the masks (one load and a table a
- *    step) and measures the edge as it goes (length, clearance, cell_ref), so each
- *    chain cell is touched once. Two vertex cells of different vertices that touch are
- *    joined by an edge without chain cells. (3) Chain cells still unvisited lie on loops
- *    without a junction: the first of each in row-major order becomes a loop vertex
- *    and the loop an edge from it to itself. Vertices are numbered by their first cell
- *    in row-major order (loop vertices after the others), edges as found: the result
- *    depends on nothing else. A rebuild on a grid of the same size keeps every array
- *    and clears only the cells the last build set (all of cell_ref by one memset when
- *    they were one in 8 or more).
+ * Build, from the skeleton's bit plane (Skeleton.plane, 64 cells a word, made by
+ *    skeleton_compute as it writes its output): the grid and the skeleton's bytes are
+ *    not scanned, and every array the build writes is sized by the skeleton's cells,
+ *    not the grid's (but toward, below, touched on junction-set cells alone). A
+ *    skeleton cell's record (its cell_ref, pathgraph_cell_ref) is found by its rank,
+ *    the skeleton cells before it in row-major order: a table holds the rank of each
+ *    plane word's first bit, and a popcount of the word does the rest.
+ *    (0) One pass over the plane's words, the empty ones skipped: the table of ranks,
+ *    and the cells of degree other than 2, by bit arithmetic on the word and the four
+ *    around it. (1) Those cells are the vertex cells; 4-adjacent junction cells are
+ *    merged into a junction set by flood fill, placed at its cell of largest dist2, and
+ *    a breadth-first tree inside the set (toward: a byte a grid cell, zero but on the
+ *    last build's vertex cells) leads from any of its cells to that one. (2) From every
+ *    vertex cell, every skeleton neighbour that is an unvisited chain cell (degree 2)
+ *    starts a walk along the chain to the next vertex cell: that chain is an edge. The
+ *    walk reads each cell's neighbours from the plane (three 16-bit loads) and a table,
+ *    keeps the cell's rank (a step east or west is one rank on; north or south a
+ *    popcount) and measures the edge as it goes (length, clearance, the record's ref),
+ *    so each chain cell is touched once. Two vertex cells of different vertices that
+ *    touch are joined by an edge without chain cells. (3) Chain cells still unvisited
+ *    lie on loops without a junction: the first of each in row-major order becomes a
+ *    loop vertex and the loop an edge from it to itself. Vertices are numbered by
+ *    their first cell in row-major order (loop vertices after the others), edges as
+ *    found: the result depends on nothing else. A rebuild keeps every array.
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
@@ -30,15 +38,16 @@
  *    inner cell of exactly one edge; incident[] lists each edge under both its vertices
  *    (once for a loop).
  *
- * MEMORY  cell_ref (4 bytes a grid cell); the edges' cells (4 + 4 bytes each); vertices
- *    and edges; for the build, 2 bytes a grid cell kept between builds (the masks,
- *    and the junction sets' parent directions); and, for the queries, 12 bytes a grid
- *    cell of search scratch (a visit stamp, a parent and a queue entry: stamps spare
- *    clearing between queries).
+ * MEMORY  a record (4 bytes) a skeleton cell, and the table of ranks (4 bytes a
+ *    plane word: half a bit a grid cell); the edges' cells (4 + 4 bytes each);
+ *    vertices and edges; for the build, the junction sets' parent directions (a byte
+ *    a grid cell, kept between builds, touched on their cells alone); and, for the
+ *    queries, 12 bytes a grid cell of search scratch (a visit stamp, a parent and a
+ *    queue entry: stamps spare clearing between queries).
  *
- * COMPLEXITY  build O(w h) for the scan plus O(skeleton cells); a query O(cells searched
- *    for S' and D' + V log V + length of the edges holding S' and D' + cells of the
- *    path); k paths O(k L) such searches for routes of L arcs.
+ * COMPLEXITY  build O(w h / 64) for the pass over the plane plus O(skeleton cells); a
+ *    query O(cells searched for S' and D' + V log V + length of the edges holding S'
+ *    and D' + cells of the path); k paths O(k L) such searches for routes of L arcs.
  *
  * MEASURED  on the bench-compare grids at 1024 x 1024 (issue 16), a rebuild on a grid of
  *    the same size. Instructions (callgrind --toggle-collect=pathgraph_build, exact;
@@ -89,7 +98,47 @@
  *    its line) with a corner bit in place of the corner's dist2 load: step (2) no
  *    faster, step (1) 2.5 times slower (its scattered stores); a walk reading only
  *    the masks, then measuring the chain in a loop of its own: slower; prefetching 2
- *    or 4 cells ahead in the walk's direction: slower. */
+ *    or 4 cells ahead in the walk's direction: slower.
+ *    Then the build from the skeleton's bit plane and records by rank (ALGORITHM above;
+ *    issue 16's goal, 2 ms on every grid at 1024 and 4096, cannot be met by a build
+ *    that reads the grid: one read pass over a 4096 grid's bytes costs 5.6 ms here).
+ *    The same graph, array for array and cell_ref for cell_ref, on the ten bench grids
+ *    (1024 and 4096), and against a brute-force build in the tests. Instructions of a
+ *    rebuild (callgrind as above, 1024): rooms 3.55 -> 4.33 million (115 a skeleton
+ *    cell), rects 4.17 -> 5.11 (114), maze 20.8 -> 24.8 (100), Boston_0_1024 2.78 ->
+ *    3.05 (114), den520d 1.89 -> 1.59 (119): more instructions (the walk's neighbours
+ *    from the plane, about 21 a step by bits and bytes, 13 by three 16-bit loads; a
+ *    popcount a step north or south, 12 without the popcnt instruction, hence the
+ *    target clone), far fewer lines: no grid-sized mask, cell_ref or clearing (the
+ *    maze's rebuild, callgrind --cache-sim: first-level read misses 257 000 -> 202 000,
+ *    write misses 249 000 -> 116 000). Time, a driver timing pathgraph_build alone
+ *    after writing 64 MB to flush the caches (thread CPU, min of 7 builds, the median
+ *    of 3 rounds alternating with the former build, the machine loaded, load 5-9 on 2
+ *    cores): 1024 rooms 0.73 -> 0.62 ms, rects 1.17 -> 0.76, maze 3.45 -> 3.34,
+ *    Boston_0_1024 0.61 -> 0.44, den520d 0.43 -> 0.22; 4096 rooms 19.1 -> 14.9, rects
+ *    25.1 -> 20.4, maze 74.9 -> 59.0, Boston_0_1024 5.45 -> 2.86, den520d 2.69 -> 1.31;
+ *    skelbench --compare in one session (the pg column, medians of 5, load 9 on 2
+ *    cores): 1024 rooms 0.65 ms, rects 1.00, maze 3.06, Boston_0_1024 0.51, den520d
+ *    0.32; 4096 13.9, 22.6, 62.0, 3.14, 1.73. What is left is 13-15 ns a skeleton cell
+ *    on the maze (3.34 ms for 248 714 cells at 1024, 59.0 for 3 975 639 at 4096), 24-28
+ *    on rooms, rects and Boston_0_1024 at 4096 (staircases, a turn a step): the walk's
+ *    70-80 instructions a cell and its loads of dist2, a grid-sized array read in chain
+ *    order (perf, Boston_0_1024 at 4096: 60% of the walk waits on the load of dist2 and
+ *    the cut corner's). So 2 ms holds 80 000 to 140 000 skeleton cells: met on every
+ *    1024 grid but the maze and on den520d at 4096 (55 134 cells); not on Boston_0_1024
+ *    at 4096 (119 016), rooms and rects there (631 557, 725 098) or the maze (248 714,
+ *    3 975 639). Tried and dropped: each skeleton cell's dist2 copied into its record
+ *    in the first pass (so that the walk reads only skeleton-sized arrays): the copy,
+ *    made in row-major order, waits on a page walk for each cell of a north-south run
+ *    (rows 16 KB apart at 4096), and Boston_0_1024 at 4096 took 10.5 ms instead of 5.5;
+ *    the corner's free test by the grid's byte instead of dist2 (a line of its own at
+ *    every turn): the maze slower. Then a prefetch of dist2 8 rows on at each step
+ *    north or south (PATHGRAPH_AHEAD; slower when the walk also read and wrote
+ *    grid-sized masks and cell_ref, above, but now dist2 is the walk's one grid-sized
+ *    array): the same driver, medians of 3 rounds alternating with the build without
+ *    it, loaded machine: Boston_0_1024 at 4096 2.65 -> 2.41 ms, den520d 1.31 -> 1.23,
+ *    rooms 14.7 -> 13.5, rects 20.2 -> 18.5, the maze at 1024 3.11 -> 2.89 (16 rows
+ *    on: 2.56, 1.27, 14.2, 19.1, 3.22). */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
@@ -129,7 +178,9 @@ static void pathgraph_free_scratch(struct PathgraphScratch *sc)
 	free(sc->toward);
 	free(sc->built_vcells.v);
 	free(sc->vstart.v);
-	free(sc->mask);
+	free(sc->cell_of);
+	free(sc->cand.v);
+	free(sc->rank_base);
 	free(sc);
 }
 
@@ -140,7 +191,6 @@ void pathgraph_free(Pathgraph *pg)
 	free(pg->cells);
 	free(pg->incident_start);
 	free(pg->incident);
-	free(pg->cell_ref);
 	free(pg->cell_edge);
 	pathgraph_free_scratch(pg->scratch);
 	*pg = (Pathgraph){0};
@@ -155,43 +205,62 @@ typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
 	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
-	uint8_t *toward;    /* junction-set cells: 1 + direction to the parent, 0 at the root */
-	uint8_t *mask;      /* skeleton cells: their skeleton 4-neighbours, bit d for direction d
-	                     * (east north west south); other cells: stale */
-	IntList vcells;     /* cells of every vertex, vertex after vertex */
-	IntList vstart;     /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
-	int32_t count;      /* edge cells so far, in pg->cells and pg->cell_edge */
-	int32_t max_set;    /* the largest vertex (cells): a bound on a walk to its root */
-	int32_t chain_left; /* skeleton cells not yet in a vertex or an edge: a bound */
-	int32_t ref_base;   /* vertices found by step (1): chain cells' cell_ref base */
+	uint8_t *toward;      /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	const uint8_t *plane; /* the skeleton's bits (Skeleton.plane) */
+	int32_t row_bits;     /* bits a row of the plane: the step north there */
+	const int32_t *base;  /* the rank of each plane word's first bit */
+	PathgraphCell *cell;  /* the skeleton cells' records, by rank */
+	IntList vcells;       /* cells of every vertex, vertex after vertex */
+	IntList vstart;       /* vertex v's cells: vcells[vstart[v] .. vstart[v + 1]) */
+	int32_t count;        /* edge cells so far, in pg->cells and pg->cell_edge */
+	int32_t max_set;      /* the largest vertex (cells): a bound on a walk to its root */
+	int32_t chain_left;   /* skeleton cells not yet in a vertex or an edge: a bound */
+	int32_t ref_base;     /* vertices found by step (1): chain cells' cell_ref base */
 } Builder;
 
-/* builder_neighbour(b, i, x, d): the skeleton cell next to cell i (in column x) in
- * direction d, or -1. The column is passed in, tracked by the callers, because a
- * division per step (i % w) would cost more than the rest of the walk. */
-static int32_t builder_neighbour(const Builder *b, int32_t i, int32_t x, int d)
+/* pathgraph_load16(p): the 16 bits at p, in the plane's order. */
+static inline unsigned pathgraph_load16(const uint8_t *p)
 {
-	const int32_t w = b->pg->w;
-	const uint8_t *on = b->s->on;
-	switch (d) {
-	case 0:
-		return x + 1 < w && on[i + 1] ? i + 1 : -1;
-	case 1:
-		return i + w < w * b->pg->h && on[i + w] ? i + w : -1;
-	case 2:
-		return x > 0 && on[i - 1] ? i - 1 : -1;
-	default:
-		return i >= w && on[i - w] ? i - w : -1;
-	}
+	return (unsigned)p[0] | (unsigned)p[1] << 8;
 }
 
-/* builder_degree(b, i, x): skeleton 4-neighbours of cell i in column x. */
-static int builder_degree(const Builder *b, int32_t i, int32_t x)
+/* pathgraph_plane_mask(plane, cb, row_bits): the skeleton 4-neighbours of the cell of
+ * plane bit cb, as bits west 0, north 1, east 2, south 3: the west, own and east bits
+ * of the cell's row and of the rows north and south (row_bits away, a multiple of 64:
+ * the same shift) by three 16-bit loads. The plane's zero border spares every test of
+ * the grid's edges. */
+static inline unsigned pathgraph_plane_mask(const uint8_t *plane, int32_t cb, int32_t row_bits)
 {
-	const int32_t w = b->pg->w;
-	const uint8_t *on = b->s->on;
-	return (x + 1 < w && on[i + 1]) + (x > 0 && on[i - 1]) +
-	       (i + w < w * b->pg->h && on[i + w]) + (i >= w && on[i - w]);
+	const uint8_t *p = plane + ((cb - 1) >> 3);
+	const unsigned sh = (unsigned)(cb - 1) & 7;
+	const size_t rowb = (size_t)row_bits / 8;
+	return (pathgraph_load16(p) >> sh & 5) | (pathgraph_load16(p + rowb) >> sh & 2) |
+	       (pathgraph_load16(p - rowb) >> sh & 2) << 2;
+}
+
+/* The bit of direction d (east north west south) in a pathgraph_plane_mask, and the
+ * number of bits set in a mask: a cell's skeleton degree. */
+static const uint8_t PATHGRAPH_MASK_BIT[4] = {2, 1, 0, 3};
+static const uint8_t PATHGRAPH_POP4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+
+/* builder_bit(b, i): the plane bit of grid cell i (a division: for vertex cells, not
+ * for every step of a walk, which carries its bit along). */
+static inline int32_t builder_bit(const Builder *b, int32_t i)
+{
+	const int32_t w = b->pg->w, y = i / w;
+	return (int32_t)skeleton_plane_bit(w, i - y * w, y);
+}
+
+/* builder_cell(b, cb): the record of the skeleton cell of plane bit cb. */
+static inline PathgraphCell *builder_cell(const Builder *b, int32_t cb)
+{
+	return &b->cell[pathgraph_rank(b->plane, b->base, cb)];
+}
+
+/* builder_mask(b, i): pathgraph_plane_mask of grid cell i. */
+static inline unsigned builder_mask(const Builder *b, int32_t i)
+{
+	return pathgraph_plane_mask(b->plane, builder_bit(b, i), b->row_bits);
 }
 
 static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
@@ -201,7 +270,7 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 	    util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
-	pg->cell_ref[cell] = v;
+	builder_cell(b, builder_bit(b, cell))->ref = v;
 	return v;
 }
 
@@ -211,16 +280,23 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 static void builder_junction_set(Builder *b, int32_t seed)
 {
 	Pathgraph *pg = b->pg;
+	const int32_t step[4] = {1, pg->w, -1, -pg->w};
+	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
 	int32_t v = builder_add_vertex(b, seed, PATHGRAPH_JUNCTION);
 	int first = b->vcells.count;
 	intlist_push(&b->vcells, seed);
 	for (int k = first; k < b->vcells.count; k++) {
-		int32_t c = b->vcells.v[k], x = c % pg->w;
+		const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+		const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 		for (int d = 0; d < 4; d++) {
-			int32_t nb = builder_neighbour(b, c, x, d);
-			if (nb >= 0 && pg->cell_ref[nb] == PATHGRAPH_REF_NONE &&
-			    builder_degree(b, nb, x + PATHGRAPH_DX[d]) >= 3) {
-				pg->cell_ref[nb] = v;
+			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
+				continue;
+			const int32_t nb = c + step[d];
+			PathgraphCell *nc = builder_cell(b, cb + bstep[d]);
+			if (nc->ref == PATHGRAPH_REF_NONE &&
+			    PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb + bstep[d],
+			                                        b->row_bits)] >= 3) {
+				nc->ref = v;
 				intlist_push(&b->vcells, nb);
 			}
 		}
@@ -235,10 +311,14 @@ static void builder_junction_set(Builder *b, int32_t seed)
 	intlist_push(&b->vcells, root);
 	b->toward[root] = 0;
 	for (int k = first; k < b->vcells.count; k++) {
-		int32_t c = b->vcells.v[k], x = c % pg->w;
+		const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+		const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 		for (int d = 0; d < 4; d++) {
-			int32_t nb = builder_neighbour(b, c, x, d);
-			if (nb >= 0 && nb != root && pg->cell_ref[nb] == v && b->toward[nb] == 0) {
+			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
+				continue;
+			const int32_t nb = c + step[d];
+			if (nb != root && b->toward[nb] == 0 &&
+			    builder_cell(b, cb + bstep[d])->ref == v) {
 				b->toward[nb] = (uint8_t)(1 + (d + 2) % 4);
 				intlist_push(&b->vcells, nb);
 			}
@@ -358,36 +438,53 @@ static void builder_end_edge(Builder *b, int32_t v0, int32_t v1, int32_t first, 
 		cell_edge[k] = e;
 }
 
-/* PATHGRAPH_NEXT[back][m]: for a cell whose skeleton 4-neighbours are the bits of m (bit
- * d for direction d, east north west south) and that was entered from direction back:
- * the direction on, when the cell is a chain cell (two neighbours, back one of them);
- * else -1, a vertex cell (or a loop vertex's, its mask zeroed). */
+/* PATHGRAPH_NEXT[back][m]: for a cell whose skeleton 4-neighbours are the bits of m (a
+ * pathgraph_plane_mask: west 0, north 1, east 2, south 3) and that was entered from
+ * direction back (east north west south): the direction on, when the cell is a chain
+ * cell (two neighbours, back one of them); else -1, a vertex cell. */
 static const int8_t PATHGRAPH_NEXT[4][16] = {
-    {-1, -1, -1, 1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
-    {-1, -1, -1, 0, -1, -1, 2, -1, -1, -1, 3, -1, -1, -1, -1, -1},
-    {-1, -1, -1, -1, -1, 0, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
-    {-1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 1, -1, 2, -1, -1, -1},
+    {-1, -1, -1, -1, -1, 2, 1, -1, -1, -1, -1, -1, 3, -1, -1, -1},
+    {-1, -1, -1, 2, -1, -1, 0, -1, -1, -1, 3, -1, -1, -1, -1, -1},
+    {-1, -1, -1, 1, -1, 0, -1, -1, -1, 3, -1, -1, -1, -1, -1, -1},
+    {-1, -1, -1, -1, -1, -1, -1, -1, -1, 2, 1, -1, 0, -1, -1, -1},
 };
 
-/* builder_edge_from(b, v, c, d): the edge leaving vertex v's cell c in direction d,
- * into a chain cell not yet walked: along the chain to the next cell that is not a
- * chain cell (of degree other than 2, so a vertex cell, step 1; or a loop vertex's
- * cell, its mask zeroed by builder_loops), measuring it on the way. Each chain cell's
- * cell_ref is set to ref_base + its place in cells[]. */
-static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
+/* On x86-64 Linux the walk is also compiled with the popcnt instruction, chosen at
+ * load time: a step north or south counts bits for its rank (pathgraph_rank), twelve
+ * instructions without it. */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define PATHGRAPH_CLONES __attribute__((target_clones("popcnt", "default")))
+#define PATHGRAPH_WALK_RANK(cb)                                                                    \
+	(base[(cb) >> 6] +                                                                         \
+	 (int32_t)__builtin_popcountll(pathgraph_load64(plane + 8 * (size_t)((cb) >> 6)) &         \
+	                               ((UINT64_C(1) << ((cb)&63)) - 1)))
+#else
+#define PATHGRAPH_CLONES
+#define PATHGRAPH_WALK_RANK(cb) pathgraph_rank(plane, base, cb)
+#endif
+
+/* builder_edge_from(b, v, c, d, stop): the edge leaving vertex v's cell c in direction
+ * d, into a chain cell not yet walked: along the chain to the next cell that is not a
+ * chain cell (of degree other than 2, so a vertex cell, step 1) or is stop (a loop
+ * vertex's cell, builder_loops; else -1), measuring it on the way. Each chain cell's
+ * record takes ref_base + its place in cells[] as its ref. */
+PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d,
+                                               int32_t stop)
 {
 	Pathgraph *pg = b->pg;
 	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
 	const int32_t first = b->count;
 	EdgeRun r;
 	builder_root_path(b, c, &r, false); /* from v's own cell to c */
-	const int32_t w = pg->w, ref_base = b->ref_base;
+	const int32_t w = pg->w, ref_base = b->ref_base, rb = b->row_bits;
 	const int32_t step[4] = {1, w, -1, -w};
-	const uint8_t *mask = b->mask;
+	const uint8_t *plane = b->plane;
+	const int32_t *base = b->base;
 	const int32_t *dist2 = b->s->dist2;
-	int32_t *cells = pg->cells, *cell_ref = pg->cell_ref;
-	int32_t k = b->count, cur;
-	/* r in locals (the stores to cell_ref and cells could alias it); pend is the
+	PathgraphCell *cell = b->cell;
+	int32_t *cells = pg->cells;
+	int32_t k = b->count, cur, cb, rk;
+	/* r in locals (the stores to the records and cells could alias it); pend is the
 	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
 	if (r.ready) {
@@ -397,20 +494,45 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	int32_t md = r.min_dist2;
 	double length = r.length;
 	cur = c;
-	/* A state for each direction of the step into cur, each adding its constant
-	 * to cur, and a branch on the direction on (the switch) rather than cur +=
-	 * step[next]: the branch predictor runs ahead along a corridor, and the loads
-	 * of the cells ahead overlap where the data dependence of the index on each
-	 * mask load made them wait in turn (10-15% off the maze's build, see MEASURED).
-	 * Straight on is tested first: one predictable branch down a corridor. */
-#define PATHGRAPH_WALK_STEP(D, STEP)                                                               \
+	cb = builder_bit(b, c);
+	rk = pathgraph_rank(plane, base, cb);
+	/* A state for each direction of the step into cur, each adding its constants to
+	 * cur, its plane bit cb and (east and west) its rank rk, and a branch on the
+	 * direction on (the switch) rather than cur += step[next]: the branch predictor
+	 * runs ahead along a corridor, and the loads of the cells ahead overlap where the
+	 * data dependence of the index on each mask would make them wait in turn (see
+	 * MEASURED). Straight on is tested first: one predictable branch down a corridor.
+	 * The neighbours come from the plane (three loads, all near: an eighth of a byte
+	 * a cell), the dist2 and the ref from the cell's record, found by its rank: a
+	 * step north or south counts the bits before it in its word. The cut corner's
+	 * fourth cell is free by the grid's byte (only at turns). */
+/* A step north or south asks for dist2 8 rows on in the same direction: each row is a
+ * new page of dist2 at 4096 (16 KB a row), where the hardware's prefetchers stop, and
+ * a corridor runs on straight most steps (see MEASURED: 7-9% off at 4096 and on the
+ * 1024 maze; 16 rows on gained less). No fault is possible: a prefetch of an address
+ * past the array is a hint, taken as an integer, not a pointer into it. */
+#if defined(__GNUC__)
+#define PATHGRAPH_AHEAD(D, STEP)                                                                   \
+	do {                                                                                       \
+		if ((D)&1)                                                                         \
+			__builtin_prefetch((const void *)((uintptr_t)(dist2 + cur) +               \
+			                                  (uintptr_t)(8 * (STEP)) * 4));           \
+	} while (0)
+#else
+#define PATHGRAPH_AHEAD(D, STEP) ((void)0)
+#endif
+#define PATHGRAPH_WALK_STEP(D, STEP, BSTEP, RANK)                                                  \
 	walk_##D:                                                                                  \
 	{                                                                                          \
 		cur += (STEP);                                                                     \
-		const int next = PATHGRAPH_NEXT[(D) ^ 2][mask[cur]];                               \
-		if (next < 0)                                                                      \
+		cb += (BSTEP);                                                                     \
+		PATHGRAPH_AHEAD(D, STEP);                                                          \
+		rk = (RANK);                                                                       \
+		const int next = PATHGRAPH_NEXT[(D) ^ 2][pathgraph_plane_mask(plane, cb, rb)];     \
+		if (next < 0 || cur == stop)                                                       \
 			goto walk_end;                                                             \
-		cell_ref[cur] = ref_base + k;                                                      \
+		PathgraphCell *const rec = &cell[rk];                                              \
+		rec->ref = ref_base + k;                                                           \
 		cells[k++] = cur;                                                                  \
 		if (pend >= 0) {                                                                   \
 			const bool cut = ((pend ^ (D)) & 1) && dist2[cur - step[pend]] > 0;        \
@@ -444,17 +566,17 @@ static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d)
 	default:
 		goto walk_3;
 	}
-	PATHGRAPH_WALK_STEP(0, 1)
-	PATHGRAPH_WALK_STEP(1, w)
-	PATHGRAPH_WALK_STEP(2, -1)
-	PATHGRAPH_WALK_STEP(3, -w)
+	PATHGRAPH_WALK_STEP(0, 1, 1, rk + 1)
+	PATHGRAPH_WALK_STEP(1, w, rb, PATHGRAPH_WALK_RANK(cb))
+	PATHGRAPH_WALK_STEP(2, -1, -1, rk - 1)
+	PATHGRAPH_WALK_STEP(3, -w, -rb, PATHGRAPH_WALK_RANK(cb))
 #undef PATHGRAPH_WALK_STEP
 walk_end:
 	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
 	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
 	b->chain_left -= k - b->count;
 	b->count = k;
-	const int32_t u = cell_ref[cur];
+	const int32_t u = cell[rk].ref;
 	assert(u >= 0 && u < pg->vertex_count);
 	builder_root_path(b, cur, &r, true);
 	builder_end_edge(b, v, u, first, &r);
@@ -472,86 +594,66 @@ static void builder_vertex_at(Builder *b, int32_t i, int d)
 	}
 }
 
-/* Eight cells a word in the vertex scan where the compiler has bit-scan builtins
- * and stores bytes little-end first (as gridpath.c); elsewhere cell by cell. */
-#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-#define PATHGRAPH_SCAN_WORDS 1
-static inline uint64_t pathgraph_load8(const uint8_t *p)
+/* pathgraph_ctz64(v): the index of the lowest bit set in v != 0. */
+static inline int pathgraph_ctz64(uint64_t v)
 {
-	uint64_t v;
-	memcpy(&v, p, sizeof v);
-	return v;
-}
+#if defined(__GNUC__)
+	return __builtin_ctzll(v);
 #else
-#define PATHGRAPH_SCAN_WORDS 0
+	int k = 0;
+	while (!(v & 1)) {
+		v >>= 1;
+		k++;
+	}
+	return k;
 #endif
-
-/* builder_scan_cell(b, y, x, on, below, above, mask): the vertex scan at one cell of
- * row y (on, and the rows below and above it or NULL; mask, row y's masks). */
-static inline void builder_scan_cell(Builder *b, int32_t y, int32_t x, const uint8_t *on,
-                                     const uint8_t *below, const uint8_t *above, uint8_t *mask)
-{
-	if (!on[x])
-		return;
-	const int32_t w = b->pg->w;
-	const int e = x + 1 < w && on[x + 1], nth = above && above[x], wst = x > 0 && on[x - 1],
-	          sth = below && below[x];
-	mask[x] = (uint8_t)(e | nth << 1 | wst << 2 | sth << 3);
-	const int d = e + nth + wst + sth;
-	const int32_t i = y * w + x;
-	if (d != 2 && b->pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-		builder_vertex_at(b, i, d);
 }
 
-/* builder_vertices(b): step (1), the vertices in row-major order of their first cell,
- * and every skeleton cell's mask. Most cells are off the skeleton: the scan skips
- * eight at a time where they are all zero; and most skeleton cells are chain cells,
- * told by their degree from the rows around. */
-static void builder_vertices(Builder *b)
+/* builder_vertices(b): step (1). First, one pass over the skeleton's plane, 64 cells
+ * a word, the empty words skipped: the rank of each word's first bit, each skeleton
+ * cell's record in rank order (its dist2, from the grid-sized dist2 in row-major
+ * order, the one read of it for the chain cells; no ref yet), and the cells of
+ * degree other than 2, found from the four words around by bit arithmetic. Then the
+ * vertices, in row-major order of their first cell: a junction set's flood reaches
+ * cells past the one it starts at, so it waits for every record. The grid itself is
+ * not read. */
+static void builder_vertices(Builder *b, IntList *cand)
 {
 	Pathgraph *pg = b->pg;
-	const Skeleton *s = b->s;
-	const int32_t w = pg->w, h = pg->h;
+	const int32_t w = pg->w, h = pg->h, words = skeleton_plane_words(w);
+	const int32_t last = 1 + (w - 1) / 64; /* the last word of a row holding cells */
+	int32_t *base = b->sc->rank_base;
+	PathgraphCell *cell = b->cell;
+	int32_t rank = 0;
+	cand->count = 0;
 	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *on = s->on + (size_t)y * w;
-		const uint8_t *below = y > 0 ? on - w : NULL;
-		const uint8_t *above = y + 1 < h ? on + w : NULL;
-		uint8_t *mask = b->mask + (size_t)y * w;
-		int32_t x = 0;
-#if PATHGRAPH_SCAN_WORDS
-		/* inside rows and columns, eight cells a word: their degrees as byte sums
-		 * (each at most 4, so no carries) and their masks (each byte's bits apart),
-		 * and only the cells of degree other than 2 visited one by one */
-		if (below && above && w >= 10) {
-			builder_scan_cell(b, y, 0, on, below, above, mask);
-			const uint64_t ones = 0x0101010101010101ULL;
-			for (x = 1; x + 9 <= w; x += 8) {
-				const uint64_t here = pathgraph_load8(on + x);
-				if (here == 0)
-					continue;
-				const uint64_t e = pathgraph_load8(on + x + 1),
-				               wst = pathgraph_load8(on + x - 1),
-				               nth = pathgraph_load8(above + x),
-				               sth = pathgraph_load8(below + x);
-				const uint64_t m8 = e | nth << 1 | wst << 2 | sth << 3;
-				memcpy(mask + x, &m8, sizeof m8);
-				const uint64_t t =
-				    (e + nth + wst + sth) ^ (2 * ones); /* degree not 2 */
-				uint64_t cand = here & ((t | t >> 1 | t >> 2) & ones);
-				while (cand) {
-					const int32_t cx = x + __builtin_ctzll(cand) / 8;
-					cand &= cand - 1;
-					const int32_t i = y * w + cx;
-					if (pg->cell_ref[i] == PATHGRAPH_REF_NONE)
-						builder_vertex_at(b, i,
-						                  on[cx - 1] + on[cx + 1] +
-						                      below[cx] + above[cx]);
-				}
-			}
+		const size_t wi = (size_t)(y + 1) * (size_t)words;
+		const uint8_t *row = b->plane + wi * 8;
+		const uint8_t *above = row + (size_t)words * 8, *below = row - (size_t)words * 8;
+		for (int32_t j = 1; j <= last; j++) {
+			base[wi + (size_t)j] = rank;
+			const uint64_t here = pathgraph_load64(row + 8 * j);
+			if (here == 0)
+				continue;
+			rank += pathgraph_pop64(here);
+			const uint64_t e = here >> 1 | pathgraph_load64(row + 8 * (j + 1)) << 63,
+			               wst = here << 1 | pathgraph_load64(row + 8 * (j - 1)) >> 63,
+			               nth = pathgraph_load64(above + 8 * j),
+			               sth = pathgraph_load64(below + 8 * j);
+			/* degree exactly 2: e + wst = s1 + 2 c1, nth + sth = s2 + 2 c2 */
+			const uint64_t s1 = e ^ wst, c1 = e & wst, s2 = nth ^ sth, c2 = nth & sth;
+			const uint64_t two = (s1 & s2 & ~(c1 | c2)) | (~(s1 | s2) & (c1 ^ c2));
+			for (uint64_t t = here & ~two; t; t &= t - 1)
+				intlist_push(cand, y * w + (j - 1) * 64 + pathgraph_ctz64(t));
 		}
-#endif
-		for (; x < w; x++)
-			builder_scan_cell(b, y, x, on, below, above, mask);
+	}
+	assert(rank == b->s->count);
+	memset(cell, 0xff, (size_t)rank * sizeof *cell); /* all PATHGRAPH_REF_NONE */
+	for (int k = 0; k < cand->count; k++) {
+		const int32_t i = cand->v[k], cb = builder_bit(b, i);
+		if (b->cell[pathgraph_rank(b->plane, base, cb)].ref == PATHGRAPH_REF_NONE)
+			builder_vertex_at(
+			    b, i, PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb, b->row_bits)]);
 	}
 	intlist_push(&b->vstart, b->vcells.count);
 }
@@ -562,17 +664,18 @@ static void builder_edges(Builder *b)
 	Pathgraph *pg = b->pg;
 	const int32_t nv = pg->vertex_count;
 	const int32_t step[4] = {1, pg->w, -1, -pg->w};
+	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
 	for (int32_t v = 0; v < nv; v++)
 		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
-			const int32_t c = b->vcells.v[k];
-			const unsigned m = b->mask[c]; /* its skeleton neighbours, from the scan */
+			const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+			const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 			for (int d = 0; d < 4; d++) {
-				if (!(m >> d & 1))
+				if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 					continue;
 				const int32_t nb = c + step[d];
-				int32_t ref = pg->cell_ref[nb];
+				int32_t ref = builder_cell(b, cb + bstep[d])->ref;
 				if (ref == PATHGRAPH_REF_NONE) {
-					builder_edge_from(b, v, c, d);
+					builder_edge_from(b, v, c, d, -1);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
 					/* two vertices' cells touching: an edge without chain cells
 					 */
@@ -588,97 +691,94 @@ static void builder_edges(Builder *b)
 }
 
 /* builder_loops(b): step (3), loops without a junction, only when some skeleton cell
- * is still unwalked: the first cell of each, row-major, a loop vertex, the loop an
- * edge from it to itself. Then the chain cells' cell_ref, written as ref_base + k,
- * move up past the loop vertices (vertices number below edge cells in cell_ref). */
+ * is still unwalked: the first cell of each, row-major (from the plane, its empty
+ * words skipped, the ranks counted along), a loop vertex, the loop an edge from it to
+ * itself. Then the chain cells' refs, written as ref_base + k, move up past the loop
+ * vertices (vertices number below edge cells): every ref at or past ref_base, in one
+ * pass over the records, and the loop vertices' own cells set back. */
 static void builder_loops(Builder *b)
 {
 	if (b->chain_left == 0)
 		return;
 	Pathgraph *pg = b->pg;
-	const Skeleton *s = b->s;
-	const size_t n = (size_t)pg->w * (size_t)pg->h;
+	const int32_t w = pg->w, h = pg->h, words = skeleton_plane_words(w);
+	const int32_t last = 1 + (w - 1) / 64;
 	const int32_t nv = pg->vertex_count;
-	for (size_t i = 0; i < n && b->chain_left > 0; i++) {
-		if (!s->on[i] || pg->cell_ref[i] != PATHGRAPH_REF_NONE)
-			continue;
-		int32_t v = builder_add_vertex(b, (int32_t)i, PATHGRAPH_LOOP);
-		b->chain_left--;
-		int32_t x = (int32_t)(i % (size_t)pg->w);
-		int d = 0;
-		while (builder_neighbour(b, (int32_t)i, x, d) < 0)
-			d++;
-		b->mask[i] = 0; /* where the walk round the loop ends */
-		builder_edge_from(b, v, (int32_t)i, d);
+	for (int32_t y = 0; y < h && b->chain_left > 0; y++) {
+		const size_t wi = (size_t)(y + 1) * (size_t)words;
+		const uint8_t *row = b->plane + wi * 8;
+		for (int32_t j = 1; j <= last && b->chain_left > 0; j++) {
+			uint64_t here = pathgraph_load64(row + 8 * j);
+			int32_t rank = b->base[wi + (size_t)j];
+			for (; here && b->chain_left > 0; here &= here - 1, rank++) {
+				if (b->cell[rank].ref != PATHGRAPH_REF_NONE)
+					continue;
+				const int32_t i = y * w + (j - 1) * 64 + pathgraph_ctz64(here);
+				int32_t v = builder_add_vertex(b, i, PATHGRAPH_LOOP);
+				b->chain_left--;
+				const unsigned m = builder_mask(b, i);
+				int d = 0;
+				while (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
+					d++;
+				builder_edge_from(b, v, i, d, i);
+			}
+		}
 	}
-	/* inner cells of edges at or past nv are chain cells: junction-set cells number
-	 * below nv, and loop vertices' cells end their edges */
 	const int32_t loops = pg->vertex_count - nv;
-	for (int32_t e = 0; e < pg->edge_count; e++) {
-		const PathgraphEdge *ed = &pg->edges[e];
-		for (int32_t k = ed->first + 1; k < ed->first + ed->count - 1; k++)
-			if (pg->cell_ref[pg->cells[k]] >= nv)
-				pg->cell_ref[pg->cells[k]] += loops;
+	for (int32_t k = 0; k < b->s->count; k++)
+		if (b->cell[k].ref >= nv)
+			b->cell[k].ref += loops;
+	for (int32_t v = nv; v < pg->vertex_count; v++) {
+		const PathgraphVertex *p = &pg->vertices[v];
+		builder_cell(b, builder_bit(b, p->y * w + p->x))->ref = v;
 	}
 }
 
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 {
-	/* keep the query scratch, the arrays and the cell map of a grid of the same size */
+	/* keep the query scratch and the arrays of the last build; toward, over the grid,
+	 * zero but on the last build's vertex cells (built_vcells), cleared there */
 	const size_t n = (size_t)s->w * (size_t)s->h;
 	if (!pg->scratch)
 		pg->scratch = util_alloc(1, sizeof *pg->scratch);
 	struct PathgraphScratch *sc = pg->scratch;
-	if (pg->cell_ref && (pg->w != s->w || pg->h != s->h)) {
-		free(pg->cell_ref);
-		pg->cell_ref = NULL;
+	if (sc->toward_cells != n || !sc->toward) {
+		free(sc->toward);
+		sc->toward = util_alloc(n, 1);
+		sc->toward_cells = n;
+		sc->built_vcells.count = 0;
 	}
-	if (pg->cell_ref && sc->built_valid && sc->toward_cells == n) {
-		/* the last build's cells back to -1 (and toward to 0): see built_vcells */
-		int32_t *cell_ref = pg->cell_ref;
-		const int32_t *cells = pg->cells, count = pg->cell_count;
-		/* one cell in 8 or more: every line of cell_ref holds some, and one
-		 * stream over it costs less than a store a cell in chain order */
-		if ((size_t)count * 8 > n)
-			memset(cell_ref, 0xff, n * sizeof *cell_ref);
-		else
-			for (int32_t k = 0; k < count; k++)
-				cell_ref[cells[k]] = PATHGRAPH_REF_NONE;
-		for (int k = 0; k < sc->built_vcells.count; k++) {
-			pg->cell_ref[sc->built_vcells.v[k]] = PATHGRAPH_REF_NONE;
-			sc->toward[sc->built_vcells.v[k]] = 0;
-		}
-	} else {
-		if (!pg->cell_ref)
-			pg->cell_ref = util_alloc(n + 1, sizeof *pg->cell_ref);
-		memset(pg->cell_ref, 0xff, n * sizeof *pg->cell_ref); /* all PATHGRAPH_REF_NONE */
-		if (sc->toward_cells != n || !sc->toward) {
-			free(sc->toward);
-			sc->toward = util_alloc(n, 1);
-			sc->toward_cells = n;
-		} else {
-			memset(sc->toward, 0, n);
-		}
+	for (int k = 0; k < sc->built_vcells.count; k++)
+		sc->toward[sc->built_vcells.v[k]] = 0;
+	sc->built_vcells.count = 0;
+	const size_t words = (size_t)(s->h + 2) * (size_t)skeleton_plane_words(s->w);
+	if (sc->rank_words != words || !sc->rank_base) {
+		free(sc->rank_base);
+		sc->rank_base = util_alloc(words, sizeof *sc->rank_base);
+		sc->rank_words = words;
 	}
-	if (sc->mask_cells != n || !sc->mask) {
-		free(sc->mask);
-		sc->mask = util_alloc(n, 1);
-		sc->mask_cells = n;
-	}
-	sc->built_valid = false;
+	sc->cell_of = util_grow(sc->cell_of, &sc->cell_cap, s->count + 1, sizeof *sc->cell_of);
 	pg->w = s->w;
 	pg->h = s->h;
 	pg->grid = g;
 	pg->skeleton = s;
 	pg->vertex_count = pg->edge_count = pg->cell_count = 0;
-	Builder b = {
-	    .pg = pg, .s = s, .sc = sc, .toward = sc->toward, .mask = sc->mask, .max_set = 1};
+	assert(s->plane); /* made by skeleton_compute */
+	Builder b = {.pg = pg,
+	             .s = s,
+	             .sc = sc,
+	             .toward = sc->toward,
+	             .plane = s->plane,
+	             .row_bits = 64 * skeleton_plane_words(s->w),
+	             .base = sc->rank_base,
+	             .cell = sc->cell_of,
+	             .max_set = 1};
 	b.vcells = sc->built_vcells; /* its memory, reused */
 	b.vcells.count = 0;
 	b.vstart = sc->vstart;
 	b.vstart.count = 0;
 
-	builder_vertices(&b);
+	builder_vertices(&b, &sc->cand);
 	b.chain_left = s->count - b.vcells.count;
 	b.ref_base = pg->vertex_count;
 	builder_edges(&b);
@@ -711,7 +811,17 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 	start[0] = 0;
 	sc->built_vcells = b.vcells;
 	sc->vstart = b.vstart;
-	sc->built_valid = true;
+}
+
+int32_t pathgraph_cell_ref(const Pathgraph *pg, int32_t i)
+{
+	if (!pg->scratch || !pg->skeleton)
+		return PATHGRAPH_REF_NONE;
+	const int32_t y = i / pg->w, cb = (int32_t)skeleton_plane_bit(pg->w, i - y * pg->w, y);
+	const uint8_t *plane = pg->skeleton->plane;
+	if (!(plane[cb >> 3] >> (cb & 7) & 1))
+		return PATHGRAPH_REF_NONE;
+	return pg->scratch->cell_of[pathgraph_rank(plane, pg->scratch->rank_base, cb)].ref;
 }
 
 /* ---------------------------------------------------------------- validation */
@@ -743,7 +853,7 @@ bool pathgraph_validate(const Pathgraph *pg)
 				return false;
 			if (s->dist2[c[k]] < mind)
 				mind = s->dist2[c[k]];
-			int32_t ref = pg->cell_ref[c[k]];
+			int32_t ref = pathgraph_cell_ref(pg, c[k]);
 			bool inner_ok = ref == pg->vertex_count + ed->first + k ||
 			                (ref >= 0 && ref < pg->vertex_count);
 			if (!inner_ok)
@@ -753,9 +863,20 @@ bool pathgraph_validate(const Pathgraph *pg)
 		    fabs(ed->length - pathgraph_run_length(pg, c, ed->count, 1)) > 1e-9)
 			return false;
 	}
-	for (size_t i = 0; i < (size_t)pg->w * pg->h; i++)
-		if ((pg->cell_ref[i] >= 0) != (s->on[i] != 0))
-			return false;
+	/* the plane the build read is the skeleton, and every skeleton cell is a vertex
+	 * cell or the edge cell its ref names */
+	for (int32_t y = 0; y < pg->h; y++)
+		for (int32_t x = 0; x < pg->w; x++) {
+			const int32_t i = y * pg->w + x;
+			const int64_t cb = skeleton_plane_bit(pg->w, x, y);
+			if ((s->plane[cb >> 3] >> (cb & 7) & 1) != (s->on[i] != 0))
+				return false;
+			const int32_t ref = pathgraph_cell_ref(pg, i);
+			if ((ref >= 0) != (s->on[i] != 0) ||
+			    ref >= pg->vertex_count + pg->cell_count ||
+			    (ref >= pg->vertex_count && pg->cells[ref - pg->vertex_count] != i))
+				return false;
+		}
 	for (int32_t v = 0; v < pg->vertex_count; v++)
 		for (int32_t k = pg->incident_start[v]; k < pg->incident_start[v + 1]; k++) {
 			const PathgraphEdge *ed = &pg->edges[pg->incident[k]];

@@ -9,6 +9,7 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "utak/base/util.h"
 #include "utak/plan/heap.h"
@@ -33,6 +34,56 @@ static inline void intlist_push(IntList *l, int32_t x)
 	if (l->count == l->cap) /* the call only when full: the walks push every cell */
 		l->v = util_grow(l->v, &l->cap, l->count + 1, sizeof *l->v);
 	l->v[l->count++] = x;
+}
+
+/* ---------------------------------------------------------------- the skeleton's cells */
+
+/* A skeleton cell's record, kept in rank order (the rank of a cell: the skeleton cells
+ * before it in row-major order, so the records are as many as the skeleton's cells):
+ * its cell_ref (pathgraph.h: pathgraph_cell_ref). Its dist2 is not copied here: a
+ * copy made in row-major order waits on a page walk a cell where the skeleton runs
+ * north-south (the grid's rows 16 KB apart at 4096), and doubled the build on
+ * Boston_0_1024 at 4096, while the walks read dist2 in chain order, a constant
+ * stride down a corridor that the hardware prefetches. */
+typedef struct PathgraphCell {
+	int32_t ref;
+} PathgraphCell;
+
+/* pathgraph_load64(p): the 64 bits at p, bit k of the word bit k & 7 of byte p[k >> 3]
+ * (Skeleton.plane's order: one load where bytes are stored little-end first). */
+static inline uint64_t pathgraph_load64(const uint8_t *p)
+{
+	uint64_t v;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	memcpy(&v, p, sizeof v);
+#else
+	v = 0;
+	for (int k = 7; k >= 0; k--)
+		v = v << 8 | p[k];
+#endif
+	return v;
+}
+
+/* pathgraph_pop64(x): the bits set in x (the instruction where the target has one; the
+ * default x86-64 target has none, and GCC's builtin is then a call). */
+static inline int32_t pathgraph_pop64(uint64_t x)
+{
+#if defined(__GNUC__) && defined(__POPCNT__)
+	return __builtin_popcountll(x);
+#else
+	x = x - (x >> 1 & 0x5555555555555555u);
+	x = (x & 0x3333333333333333u) + (x >> 2 & 0x3333333333333333u);
+	x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu;
+	return (int32_t)((x * 0x0101010101010101u) >> 56);
+#endif
+}
+
+/* pathgraph_rank(plane, base, cb): the rank of the skeleton cell of plane bit cb, base
+ * holding the rank of each plane word's first bit (PathgraphScratch.rank_base). */
+static inline int32_t pathgraph_rank(const uint8_t *plane, const int32_t *base, int32_t cb)
+{
+	const uint64_t word = pathgraph_load64(plane + 8 * (size_t)(cb >> 6));
+	return base[cb >> 6] + pathgraph_pop64(word & ((UINT64_C(1) << (cb & 63)) - 1));
 }
 
 /* ---------------------------------------------------------------- query scratch */
@@ -79,21 +130,23 @@ struct PathgraphScratch {
 	/* Kept between builds of a grid of one size (pathgraph_build): the junction
 	 * sets' parent directions (w h bytes, zero but on the cells of built_vcells)
 	 * and every vertex cell of the last build, so that the next build clears
-	 * cell_ref and toward on those cells and the edges' cells alone instead of
-	 * the whole grid (4 + 1 bytes a cell: a fifth of a build on 1024 x 1024). */
+	 * toward on those cells alone. */
 	uint8_t *toward;
 	size_t toward_cells;
 	IntList built_vcells;
-	bool built_valid; /* cell_ref is -1 outside built_vcells and the edges' cells */
+	/* The skeleton cells' records in rank order (cell_cap of them), and the rank of
+	 * the first bit of each word of the skeleton's plane (rank_words of them; only
+	 * the words that hold grid cells are written). */
+	PathgraphCell *cell_of;
+	int cell_cap;
+	int32_t *rank_base;
+	size_t rank_words;
+	IntList cand; /* the build's cells of degree other than 2 (pathgraph.c, step 1) */
 	/* The capacities of the Pathgraph's arrays (vertices, edges, cells and cell_edge,
 	 * incident_start, incident), kept by the next build rather than freed and grown
 	 * again, and the builder's list of where each vertex's cells start. */
 	int vertex_cap, edge_cap, cells_cap, incident_start_cap, incident_cap;
 	IntList vstart;
-	/* The build's skeleton-neighbour masks (pathgraph.c, Builder.mask): w h bytes,
-	 * written by each build where it needs them, so never cleared. */
-	uint8_t *mask;
-	size_t mask_cells;
 };
 
 /* ---------------------------------------------------------------- lengths */

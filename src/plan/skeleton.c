@@ -621,6 +621,7 @@ void skeleton_free(Skeleton *s)
 {
 	free(s->dist2);
 	free(s->on);
+	free(s->plane);
 	skeleton_free_work(s->work);
 	*s = (Skeleton){0};
 }
@@ -634,6 +635,7 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 		skeleton_free(s);
 		s->dist2 = util_alloc(n, sizeof *s->dist2);
 		s->on = util_alloc(n, 1);
+		s->plane = util_alloc((size_t)(h + 2) * (size_t)skeleton_plane_words(w), 8);
 		s->work = util_alloc(1, sizeof *s->work);
 		s->work->cells = n;
 		s->work->state = util_alloc(pn + 3, 1); /* + 3: thinner_raster's last load */
@@ -725,12 +727,15 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 	}
 	s->pruned = thinner_prune(&t, order, maxd);
 
-	/* the output, 8 cells at a time: bit 0 of each state byte, and their count */
+	/* the output, 8 cells at a time: bit 0 of each state byte, and their count; and
+	 * the same 8 cells as the 8 bits of one byte of the plane (x is a multiple of 8,
+	 * and each row's bits start on a word) */
 	int32_t count = 0;
 	const uint64_t ones = 0x0101010101010101u;
 	for (int32_t y = 0; y < h; y++) {
 		const uint8_t *st = t.state + (size_t)(y + 1) * t.pw + 1;
 		uint8_t *on = s->on + (size_t)y * w;
+		uint8_t *bits = s->plane + skeleton_plane_bit(w, 0, y) / 8;
 		int32_t x = 0;
 		for (; x + 8 <= w; x += 8) {
 			uint64_t v;
@@ -738,11 +743,17 @@ void skeleton_compute(Skeleton *s, const Grid *g)
 			v &= ones * SKELETON_IN;
 			memcpy(on + x, &v, sizeof v);
 			count += (int32_t)((v * ones) >> 56);
+			/* byte k (0 or 1) to bit k: each product term lands on its own bit */
+			bits[x / 8] = (uint8_t)((v * 0x0102040810204080u) >> 56);
 		}
-		for (; x < w; x++) {
+		unsigned last = 0;
+		for (int32_t k = 0; x < w; x++, k++) {
 			on[x] = st[x] & SKELETON_IN;
 			count += on[x];
+			last |= (unsigned)on[x] << k;
 		}
+		if (w % 8)
+			bits[w / 8] = (uint8_t)last;
 	}
 	s->count = count;
 }

@@ -1,7 +1,7 @@
 /* test_pathgraph.c - the pathgraph and its search (pathgraph.h, paper 4.3): edges along
  * skeleton cells, the line test against hand cases and dense sampling, paths in free
  * space exactly when a flood fill joins the ends, k distinct paths round a ring, a
- * rebuilt pathgraph equal to a fresh one. */
+ * rebuilt pathgraph equal to a fresh one, the build equal to a brute-force one. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -192,7 +192,7 @@ static bool pathgraphs_equal(const Pathgraph *a, const Pathgraph *b)
 		if (a->incident[k] != b->incident[k])
 			return false;
 	for (int i = 0; i < a->w * a->h; i++)
-		if (a->cell_ref[i] != b->cell_ref[i])
+		if (pathgraph_cell_ref(a, i) != pathgraph_cell_ref(b, i))
 			return false;
 	return true;
 }
@@ -242,6 +242,315 @@ TEST_CASE(rebuilt_pathgraph_equals_a_fresh_one)
 	}
 	fprintf(stderr, "  %d builds, %d loop vertices\n", builds, loops);
 	TEST_CHECK(builds == 144 && loops > 20);
+}
+
+/* ---------------------------------------------------------------- the build by brute force */
+
+/* The pathgraph by its definitions (pathgraph.h and pathgraph_dump's numbering), built
+ * plainly from the skeleton's bytes: the oracle of pathgraph_build, which works from the
+ * skeleton's bit plane and ranks instead. */
+typedef struct Brute {
+	const Skeleton *s;
+	const Grid *g;
+	int nv, ne, ncells, cells_cap;
+	PathgraphVertex *v; /* at most one a cell */
+	PathgraphEdge *e;   /* at most four a cell: one a vertex cell's side */
+	int *vfirst;        /* vertex k's cells: vcells[vfirst[k] .. vfirst[k + 1]) */
+	int32_t *vcells;    /* breadth-first from each vertex's own cell */
+	int nvcells;
+	int32_t *cells;     /* edge cells, edge after edge */
+	int32_t *ref;       /* w h: -1, a vertex, or -2 - k for cells[k] (fixed at the end) */
+	int8_t *parent_dir; /* junction-set cells: direction to the parent, -1 at the root */
+} Brute;
+
+static const int BRUTE_DX[4] = {1, 0, -1, 0}, BRUTE_DY[4] = {0, 1, 0, -1};
+
+/* brute_nb(b, i, d): the skeleton cell next to cell i in direction d, or -1. */
+static int32_t brute_nb(const Brute *b, int32_t i, int d)
+{
+	const int w = b->s->w, x = i % w + BRUTE_DX[d], y = i / w + BRUTE_DY[d];
+	return skeleton_on(b->s, x, y) ? y * w + x : -1;
+}
+
+static int brute_degree(const Brute *b, int32_t i)
+{
+	int n = 0;
+	for (int d = 0; d < 4; d++)
+		n += brute_nb(b, i, d) >= 0;
+	return n;
+}
+
+static int brute_vertex(Brute *b, int32_t cell, PathgraphKind kind)
+{
+	const int id = b->nv++;
+	b->v[id] = (PathgraphVertex){cell % b->s->w, cell / b->s->w, kind, 1, b->s->dist2[cell]};
+	b->ref[cell] = id;
+	b->vfirst[id] = b->nvcells;
+	b->vcells[b->nvcells++] = cell;
+	return id;
+}
+
+/* brute_to_root(b, c, out, n): appends the cells from c to its vertex's own cell. */
+static int brute_to_root(const Brute *b, int32_t c, int32_t *out, int n)
+{
+	for (;;) {
+		out[n++] = c;
+		if (b->parent_dir[c] < 0)
+			return n;
+		c = brute_nb(b, c, b->parent_dir[c]);
+	}
+}
+
+/* brute_edge(b, v0, v1, path, n): an edge of the cells path[0 .. n), measured by the
+ * definitions: a diagonal across each staircase corner whose fourth cell is free,
+ * corners decided left to right; clearance the least dist2. */
+static void brute_edge(Brute *b, int v0, int v1, const int32_t *path, int n)
+{
+	const int w = b->s->w;
+	TEST_CHECK(b->ncells + n <= b->cells_cap);
+	if (b->ncells + n > b->cells_cap)
+		return;
+	PathgraphEdge *e = &b->e[b->ne++];
+	*e = (PathgraphEdge){v0, v1, b->ncells, n, 0.0, INT32_MAX};
+	for (int k = 0; k < n; k++) {
+		b->cells[b->ncells + k] = path[k];
+		if (b->s->dist2[path[k]] < e->min_dist2)
+			e->min_dist2 = b->s->dist2[path[k]];
+		if (k > 0 && k < n - 1 && b->ref[path[k]] == -1)
+			b->ref[path[k]] = -2 - (b->ncells + k);
+	}
+	for (int k = 1; k < n;) {
+		bool cut = false;
+		if (k + 1 < n) {
+			const int32_t a = path[k - 1], m = path[k], c = path[k + 1];
+			const int ax = a % w, ay = a / w, mx = m % w, my = m / w, cx = c % w,
+			          cy = c / w;
+			const bool turn = (mx - ax) * (cx - mx) + (my - ay) * (cy - my) == 0;
+			cut = turn && grid_free_at(b->g, ax + cx - mx, ay + cy - my);
+		}
+		e->length += cut ? 1.41421356237309504880 : 1.0;
+		k += cut ? 2 : 1;
+	}
+	b->ncells += n;
+}
+
+/* brute_walk(b, v, c, d, stop, path): from vertex v's cell c into the chain cell in
+ * direction d, to the next cell of degree other than 2 or to stop. */
+static void brute_walk(Brute *b, int v, int32_t c, int d, int32_t stop, int32_t *path)
+{
+	int n = brute_to_root(b, c, path, 0);
+	for (int lo = 0, hi = n - 1; lo < hi; lo++, hi--) {
+		int32_t t = path[lo];
+		path[lo] = path[hi];
+		path[hi] = t;
+	}
+	int32_t prev = c, cur = brute_nb(b, c, d);
+	while (cur != stop && brute_degree(b, cur) == 2) {
+		path[n++] = cur;
+		b->ref[cur] = -3; /* walked; its place set by brute_edge */
+		int32_t next = -1;
+		for (int k = 0; k < 4; k++) {
+			int32_t nb = brute_nb(b, cur, k);
+			if (nb >= 0 && nb != prev)
+				next = nb;
+		}
+		prev = cur;
+		cur = next;
+	}
+	for (int k = 0; k < n; k++)
+		if (b->ref[path[k]] == -3)
+			b->ref[path[k]] = -1;
+	n = brute_to_root(b, cur, path, n);
+	brute_edge(b, v, b->ref[cur], path, n);
+}
+
+static void brute_build(Brute *b, const Skeleton *s, const Grid *g)
+{
+	const int n = s->w * s->h;
+	b->s = s;
+	b->g = g;
+	b->nv = b->ne = b->ncells = b->nvcells = 0;
+	b->vcells = malloc(sizeof(int32_t) * (size_t)(n + 1));
+	b->cells_cap = 16 * n + 64;
+	b->cells = malloc(sizeof(int32_t) * (size_t)b->cells_cap);
+	b->v = malloc(sizeof *b->v * (size_t)(n + 1));
+	b->e = malloc(sizeof *b->e * (size_t)(4 * n + 1));
+	b->vfirst = malloc(sizeof *b->vfirst * (size_t)(n + 2));
+	b->ref = malloc(sizeof(int32_t) * (size_t)(n + 1));
+	b->parent_dir = malloc((size_t)(n + 1));
+	int32_t *path = malloc(sizeof(int32_t) * (size_t)(2 * n + 2));
+	memset(b->parent_dir, -1, (size_t)n);
+	for (int i = 0; i < n; i++)
+		b->ref[i] = -1;
+	for (int32_t i = 0; i < n; i++) {
+		if (!s->on[i] || b->ref[i] != -1 || brute_degree(b, i) == 2)
+			continue;
+		int deg = brute_degree(b, i);
+		if (deg < 3) {
+			brute_vertex(b, i, deg == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+			continue;
+		}
+		/* a junction set: flood, root at the first cell of largest dist2, then the
+		 * breadth-first tree from the root */
+		int id = brute_vertex(b, i, PATHGRAPH_JUNCTION), first = b->vfirst[id];
+		for (int k = first; k < b->nvcells; k++)
+			for (int d = 0; d < 4; d++) {
+				int32_t nb = brute_nb(b, b->vcells[k], d);
+				if (nb >= 0 && b->ref[nb] == -1 && brute_degree(b, nb) >= 3) {
+					b->ref[nb] = id;
+					b->vcells[b->nvcells++] = nb;
+				}
+			}
+		int32_t root = i;
+		for (int k = first; k < b->nvcells; k++)
+			if (s->dist2[b->vcells[k]] > s->dist2[root])
+				root = b->vcells[k];
+		const int size = b->nvcells - first;
+		b->nvcells = first;
+		b->vcells[b->nvcells++] = root;
+		for (int k = first; k < b->nvcells; k++)
+			for (int d = 0; d < 4; d++) {
+				int32_t nb = brute_nb(b, b->vcells[k], d);
+				if (nb >= 0 && nb != root && b->ref[nb] == id &&
+				    b->parent_dir[nb] < 0) {
+					b->parent_dir[nb] = (int8_t)((d + 2) % 4);
+					b->vcells[b->nvcells++] = nb;
+				}
+			}
+		TEST_CHECK(b->nvcells - first == size);
+		b->v[id] = (PathgraphVertex){root % s->w, root / s->w, PATHGRAPH_JUNCTION, size,
+		                             s->dist2[root]};
+	}
+	const int nv = b->nv;
+	b->vfirst[nv] = b->nvcells;
+	for (int v = 0; v < nv; v++)
+		for (int k = b->vfirst[v]; k < b->vfirst[v + 1]; k++) {
+			const int32_t c = b->vcells[k];
+			for (int d = 0; d < 4; d++) {
+				int32_t nb = brute_nb(b, c, d);
+				if (nb < 0)
+					continue;
+				if (b->ref[nb] == -1) {
+					brute_walk(b, v, c, d, -1, path);
+				} else if (b->ref[nb] >= 0 && b->ref[nb] != v && c < nb) {
+					int m = brute_to_root(b, c, path, 0);
+					for (int lo = 0, hi = m - 1; lo < hi; lo++, hi--) {
+						int32_t t = path[lo];
+						path[lo] = path[hi];
+						path[hi] = t;
+					}
+					m = brute_to_root(b, nb, path, m);
+					brute_edge(b, v, b->ref[nb], path, m);
+				}
+			}
+		}
+	for (int32_t i = 0; i < n; i++)
+		if (s->on[i] && b->ref[i] == -1) {
+			int id = brute_vertex(b, i, PATHGRAPH_LOOP), d = 0;
+			while (brute_nb(b, i, d) < 0)
+				d++;
+			brute_walk(b, id, i, d, i, path);
+		}
+	for (int32_t i = 0; i < n; i++)
+		if (b->ref[i] <= -2)
+			b->ref[i] = b->nv + (-2 - b->ref[i]);
+	free(path);
+}
+
+static void brute_free(Brute *b)
+{
+	free(b->vcells);
+	free(b->cells);
+	free(b->v);
+	free(b->e);
+	free(b->vfirst);
+	free(b->ref);
+	free(b->parent_dir);
+}
+
+/* brute_equal(b, pg): the build's graph is the oracle's, vertex for vertex, edge for
+ * edge (lengths to the last bit: the same additions in the same order), cell for cell,
+ * and so is every grid cell's pathgraph_cell_ref. */
+static bool brute_equal(const Brute *b, const Pathgraph *pg)
+{
+	if (pg->vertex_count != b->nv || pg->edge_count != b->ne || pg->cell_count != b->ncells)
+		return false;
+	for (int v = 0; v < b->nv; v++) {
+		const PathgraphVertex *p = &pg->vertices[v], *q = &b->v[v];
+		if (p->x != q->x || p->y != q->y || p->kind != q->kind ||
+		    p->set_size != q->set_size || p->dist2 != q->dist2)
+			return false;
+	}
+	for (int e = 0; e < b->ne; e++) {
+		const PathgraphEdge *p = &pg->edges[e], *q = &b->e[e];
+		if (p->v0 != q->v0 || p->v1 != q->v1 || p->first != q->first ||
+		    p->count != q->count || p->length != q->length || p->min_dist2 != q->min_dist2)
+			return false;
+	}
+	for (int k = 0; k < b->ncells; k++)
+		if (pg->cells[k] != b->cells[k])
+			return false;
+	for (int i = 0; i < pg->w * pg->h; i++)
+		if (pathgraph_cell_ref(pg, i) != b->ref[i])
+			return false;
+	return true;
+}
+
+/* The build (from the skeleton's bit plane, 64 cells a word) equals the brute-force
+ * one on random grids, among them widths at and around the plane's word boundaries
+ * (63, 64, 65, 127, 128, 129 cells; a row's bits start on a word), kept and rebuilt
+ * on grids of one size and afresh. */
+TEST_CASE(build_equals_brute_force)
+{
+	oracle_seed = 41;
+	static const int widths[] = {1, 2, 3, 7, 8, 9, 63, 64, 65, 127, 128, 129};
+	int builds = 0, loops = 0, junction_sets = 0;
+	for (int wi = 0; wi < (int)(sizeof widths / sizeof widths[0]); wi++) {
+		Pathgraph kept;
+		pathgraph_init(&kept);
+		const int w = widths[wi], h = 1 + oracle_rand_below(40);
+		for (int trial = 0; trial < 8; trial++) {
+			Grid g;
+			if (trial % 4 == 3) { /* walled rooms, a block in each: loops */
+				grid_init(&g, w, h, GRID_FREE);
+				for (int y = 0; y < h; y++)
+					for (int x = 0; x < w; x++)
+						if (x % 10 == 0 || y % 10 == 0 ||
+						    (x % 10 >= 4 && x % 10 <= 6 && y % 10 >= 4 &&
+						     y % 10 <= 6))
+							g.cells[y * w + x] = GRID_BLOCKED;
+			} else {
+				oracle_random_grid(&g, w, h, oracle_rand_below(45),
+				                   oracle_rand_below(5));
+			}
+			Skeleton s;
+			skeleton_init(&s);
+			skeleton_compute(&s, &g);
+			Pathgraph fresh;
+			pathgraph_init(&fresh);
+			pathgraph_build(&fresh, &s, &g);
+			pathgraph_build(&kept, &s, &g);
+			Brute *b = calloc(1, sizeof *b);
+			brute_build(b, &s, &g);
+			TEST_CHECK(brute_equal(b, &fresh));
+			TEST_CHECK(brute_equal(b, &kept));
+			TEST_CHECK(pathgraph_validate(&fresh));
+			for (int v = 0; v < b->nv; v++) {
+				loops += b->v[v].kind == PATHGRAPH_LOOP;
+				junction_sets += b->v[v].set_size > 1;
+			}
+			builds++;
+			brute_free(b);
+			free(b);
+			pathgraph_free(&fresh);
+			skeleton_free(&s);
+			grid_free(&g);
+		}
+		pathgraph_free(&kept);
+	}
+	fprintf(stderr, "  %d builds, %d loop vertices, %d junction sets\n", builds, loops,
+	        junction_sets);
+	TEST_CHECK(builds == 96 && loops > 10 && junction_sets > 10);
 }
 
 static Vec2 random_free_point(const Grid *g)
@@ -617,6 +926,7 @@ int main(void)
 	TEST_RUN(line_test_agrees_with_dense_sampling);
 	TEST_RUN(pathgraph_edges_on_random_grids);
 	TEST_RUN(rebuilt_pathgraph_equals_a_fresh_one);
+	TEST_RUN(build_equals_brute_force);
 	TEST_RUN(paths_exist_iff_connected_and_lie_in_free_space);
 	TEST_RUN(two_distinct_paths_round_a_ring);
 	TEST_RUN(four_distinct_paths_round_two_obstacles);

@@ -82,8 +82,6 @@ typedef struct Pathgraph {
 	int32_t *cells;                   /* grid indices y * w + x, edge after edge */
 	int32_t *incident_start;          /* vertex_count + 1: edges of v are */
 	int32_t *incident;                /* incident[incident_start[v] .. incident_start[v + 1]) */
-	int32_t *cell_ref;                /* w * h: -1 off the skeleton, v < vertex_count for a
-	                                   * cell of vertex v, vertex_count + k for cells[k] */
 	int32_t *cell_edge;               /* cell_count: the edge each entry of cells belongs to */
 	struct PathgraphScratch *scratch; /* the queries' working space (pathfind.c; pathgraph_work.h) */
 } Pathgraph;
@@ -100,8 +98,17 @@ static inline PathgraphQuery pathgraph_query_default(void)
 
 void pathgraph_init(Pathgraph *pg);
 void pathgraph_free(Pathgraph *pg);
-/* pathgraph_build(pg, s, g): the pathgraph of skeleton s of grid g (see above). */
+/* pathgraph_build(pg, s, g): the pathgraph of skeleton s of grid g (see above); s made
+ * by skeleton_compute, whose bit plane (Skeleton.plane) the build reads instead of the
+ * grid. */
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g);
+
+/* pathgraph_cell_ref(pg, i): what grid cell i (y * w + x, inside the grid) is in the
+ * built pathgraph: -1 off the skeleton, v < vertex_count for a cell of vertex v,
+ * vertex_count + k for cells[k] (an inner cell of an edge). Constant time: the build
+ * keeps one record per skeleton cell, found by its rank in the skeleton's bit plane,
+ * rather than an array over the grid. */
+int32_t pathgraph_cell_ref(const Pathgraph *pg, int32_t i);
 
 /* pathgraph_find_path(pg, from, to, q, out): the shortest path from S = from to D = to
  * (points in grid units) along the pathgraph, into out (cleared first); q NULL means

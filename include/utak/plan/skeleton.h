@@ -55,6 +55,11 @@ typedef struct Skeleton {
 	uint8_t *on;    /* w * h, row-major: 1 for a skeleton cell, else 0 */
 	int32_t count;  /* number of skeleton cells */
 	int32_t pruned; /* number of cells removed as spurs (for the bench and tests) */
+	uint8_t *plane; /* the skeleton again as bits, for the pathgraph (pathgraph.c), or NULL:
+	                 * cell (x, y) is bit skeleton_plane_bit(w, x, y), bit b being bit
+	                 * b & 7 of byte b >> 3; the bits outside the grid (a zero row below
+	                 * and above it, a zero word before each row and zero bits after it
+	                 * up to the next row) are 0 */
 	struct SkeletonWork *work; /* working space, kept for the next grid of this size */
 } Skeleton;
 
@@ -69,6 +74,20 @@ void skeleton_free(Skeleton *s);
  * cells, into s. Linear time in the cells. The memory of an earlier skeleton of a grid
  * of the same size is reused, any other is freed. */
 void skeleton_compute(Skeleton *s, const Grid *g);
+
+/* skeleton_plane_words(w): 64-bit words a row of Skeleton.plane takes: one zero word,
+ * then w bits, zero bits up to the next word and one more zero word (so that a load of
+ * a few bytes about any cell stays in its row). The plane has h + 2 such rows. */
+static inline int32_t skeleton_plane_words(int32_t w)
+{
+	return (w + 63) / 64 + 2;
+}
+/* skeleton_plane_bit(w, x, y): the bit of Skeleton.plane that holds cell (x, y); x and
+ * y may be -1, w or h, an outside cell, whose bit is 0. */
+static inline int64_t skeleton_plane_bit(int32_t w, int32_t x, int32_t y)
+{
+	return ((int64_t)(y + 1) * skeleton_plane_words(w) + 1) * 64 + x;
+}
 
 /* skeleton_on(s, x, y): (x, y) is inside the grid and a skeleton cell. */
 static inline bool skeleton_on(const Skeleton *s, int32_t x, int32_t y)
