@@ -8,7 +8,9 @@
  * for wall (goals_roommap_find), merged by the verdict's door rule keeping every
  * narrowing that may yet be a door (carryroom_merge_maybe); the node parts the
  * start from p when their merged rooms differ. The first such node, by index, is
- * reported.
+ * reported. Then each object node not held and not felt, seen in the fovea or
+ * not, taken for wall alone, on that map or on the verdict's watershed restated
+ * (hs_unfelt_parts).
  * Settling (task (i)): the SUSPECTS (hs_suspect) are taken for wall each alone and
  * all at once, on that map and on the verdict's watershed restated on the same
  * space (carryroom_watershed); the ones to settle are those that part the hall
@@ -18,7 +20,7 @@
  * claim is still checked on the watershed (hs_beaten).
  * MEMORY: one room map of the screen at a time, freed before the next; the
  * watershed 17 bytes a screen cell while it works.
- * COMPLEXITY: the rule O(w h) for each object node seen only coarsely; settling
+ * COMPLEXITY: the rule O(w h log(w h)) for each object node not felt; settling
  * O(S w h log(w h)) for S suspects, only on the arrivals of a task whose claim the
  * rule doubted. */
 #include "utak/mind/hallsplit.h"
@@ -118,6 +120,38 @@ static bool hs_node_parts(const Controller *c, int32_t k, int32_t si, int32_t sj
 	return parted;
 }
 
+static bool hs_suspect(const Controller *c, int32_t k);
+static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, Vec2 p);
+static Vec2 hs_first(const Controller *c, int32_t k, Box *box);
+
+/* hs_unfelt_parts(c, si, sj, p, np, at): whether an object node not held, not felt
+ * and not felt as wall (hs_suspect), seen in the fovea or not, taken for wall alone
+ * parts the start (screen cell si, sj) from every one of the np points p, on the
+ * room map or on the verdict's watershed restated (hs_joint_parts); *at its first
+ * square. WHY: the eye reads a free-standing stub seen in the fovea exactly as it
+ * reads an object (hallsplit.h, THE RULE); only touch tells them apart. */
+static bool hs_unfelt_parts(const Controller *c, int32_t si, int32_t sj, const Vec2 *p, int32_t np, Vec2 *at)
+{
+	int32_t nn = c->model.node_count;
+	bool *one = util_alloc((size_t)(nn > 0 ? nn : 1), sizeof *one);
+	bool parted = false;
+	for (int32_t k = 0; k < nn && !parted; k++) {
+		if (objects_felt(c, k) || !hs_suspect(c, k))
+			continue;
+		one[k] = true;
+		parted = np > 0;
+		for (int32_t i = 0; i < np && parted; i++)
+			parted = hs_joint_parts(c, one, si, sj, p[i]);
+		one[k] = false;
+		if (parted) {
+			Box box;
+			*at = hs_first(c, k, &box);
+		}
+	}
+	free(one);
+	return parted;
+}
+
 bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
 {
 	int32_t si, sj;
@@ -128,7 +162,7 @@ bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *a
 		if (hs_node_parts(c, k, si, sj, p, np, &box, at))
 			return true;
 	}
-	return false;
+	return hs_unfelt_parts(c, si, sj, p, np, at);
 }
 
 /* hs_coarse_square(c, k, sq): a square of node k on the screen not seen in the fovea,
@@ -449,8 +483,8 @@ HallVerdict hallsplit_settle(Controller *c, Vec2 p, Vec2 *at)
 	HallRun *h = &c->hall;
 	HallVerdict v = hs_settle(c, p, at);
 	if (v == HALL_DOUBT)
-		snprintf(h->why, sizeof h->why, "%s, at (%.1f, %.1f), may be a wall that parts the room he started in",
-			 h->trips == 0 ? "a blob seen only coarsely" : "an object touch has not settled", at->x, at->y);
+		snprintf(h->why, sizeof h->why, "an object touch has not settled, at (%.1f, %.1f), may be a wall that parts the room he started in",
+			 at->x, at->y);
 	bool out = false;
 	if (v == HALL_CLEAR && h->trips > 0 && hs_beaten(c, p, at, &out)) {
 		v = HALL_DOUBT;

@@ -18,8 +18,9 @@
  * (push_seat_finish), and only when no floor seen that beats it may be of that
  * room after all (roomdoubt_hidden: else he doubts it; he does not yet let go to
  * look), and only when one of the object's squares that reach the corner lies in
- * the start's room on his own room map and no blob seen only coarsely, taken for
- * wall, may part the start's hall from all of them (hallsplit.h, as task (i) asks
+ * the start's room on his own room map and no object touch has not felt (seen
+ * only coarsely or in the fovea), taken for wall, may part the start's hall from
+ * all of them (hallsplit.h, as task (i) asks
  * of Utak: held_room_split); the survey does not yet make (i)'s looks. Seated
  * short, with another object in the way, Utak moves it out of the way first
  * (pushclear.h). */
@@ -392,8 +393,9 @@ static int32_t held_reach(const Controller *c, int64_t short_by, Vec2 *p)
  * the start's room: WHY, the shortfall compares the object's best square with the
  * best floor seen in that room, and an object pushed past the room's door scores
  * beyond every floor of it (a negative shortfall), which is no corner of it. (2)
- * No blob seen only coarsely, taken for wall, parts the start from every one of
- * them, by task (i)'s rule (hallsplit.h): WHY, a free-standing stub read as an
+ * No object touch has not felt (seen only coarsely, or in the fovea: the eye reads
+ * a stub as an object either way), taken for wall, parts the start from every one
+ * of them, by task (i)'s rule (hallsplit.h): WHY, a free-standing stub read as an
  * object is space to his rooms and the wall that parts the hall to the judge's. */
 static bool held_room_split(Controller *c, int64_t short_by)
 {
@@ -410,7 +412,7 @@ static bool held_room_split(Controller *c, int64_t short_by)
 	} else if (parted) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why,
-			 "Utak cannot tell the %s is in the %s: a blob seen only coarsely, at (%.1f, %.1f), may be a wall that parts it from the room he started in",
+			 "Utak cannot tell the %s is in the %s: an object touch has not felt, at (%.1f, %.1f), may be a wall that parts it from the room he started in",
 			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
 	}
 	return beyond || parted;

@@ -25,6 +25,21 @@
  * object's squares that reach the corner, not Utak's: the judge counts the
  * object's squares in the start's room; the doubt stands when the node parts the
  * start from every one of them (push.c held_room_split).
+ * A STUB SEEN IN THE FOVEA. The eye reads a free-standing stub seen closely exactly
+ * as an object: on 88 of 151 made-up variants of tests/worlds/hall-stub.w (the
+ * stub, a square and Utak's start moved) it was seen in the fovea before any
+ * coarse blob raised the doubt, and Utak claimed the other half's corner (a false
+ * success). So the rule asks too of each object node not held, not felt, and not
+ * felt as wall, seen in the fovea or not, taken for wall alone, whether it parts
+ * the start from p, on the map above or on the verdict's watershed restated
+ * (carryroom_watershed, as in SETTLING below): objects touch has felt (a letter),
+ * held, or grasped (felt then), are known to be no wall; no other sign in the
+ * impression tells a wall from an object (doc/verdicts.md: only the fixed parts,
+ * TABLE colour B, make rooms). COST: a trip on the runs where an object, were it
+ * wall, would part the hall: 16 of the 410 corner runs of the rates' sets (one
+ * run, /tmp/rk15), +0.78 cycles a corner run on average; 5 of them end with a
+ * doubt touch could not settle (a pier felt B, the hall wider on his model where
+ * the far side is unseen, or a piece with no way to it within 4 trips).
  *
  * SETTLING (task (i)). Rather than claim the corner with that doubt, Utak goes and
  * touches the blob (paper 3.4.2: touch reads an object's letter, a wall's B), then
