@@ -16,6 +16,7 @@
 static const char *doubt_own(const ObjectReading *o);
 static bool inexact(const ObjectReading *o);
 static bool listed(const int32_t *list, int n, int32_t ident);
+static bool in_gap(const ObjectReading *o);
 
 /* Scale (shape.h) of each resolution: the side of its cells. */
 static double objects_scale(int res)
@@ -27,7 +28,7 @@ ObjectReading objects_read(Controller *c, int32_t k)
 {
 	const WorldModel *m = &c->model;
 	const ModelNode *n = &m->node[k];
-	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false, false, 0};
+	ObjectReading o = {SHAPE_NONE, false, 0, 0, 1, vec2(0, 0), false, 0, {0}, false, false, 0, false};
 	int32_t x0 = (int32_t)floor(n->rect.lo.x), y0 = (int32_t)floor(n->rect.lo.y);
 	int32_t x1 = (int32_t)ceil(n->rect.hi.x), y1 = (int32_t)ceil(n->rect.hi.y);
 	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
@@ -75,6 +76,7 @@ ObjectReading objects_read(Controller *c, int32_t k)
 		c->memo[hit].key = key;
 		Shape named = shape_read(xs, ys, o.squares, o.scale, &c->memo[hit].reading);
 		c->memo[hit].guessed = false;
+		c->memo[hit].square_fits = -1;
 		if (named == SHAPE_NONE && o.scale > 1 && !o.confirmed) {
 			ShapeReading fine;
 			if (shape_read(xs, ys, o.squares, 1, &fine) != SHAPE_NONE) {
@@ -83,11 +85,19 @@ ObjectReading objects_read(Controller *c, int32_t k)
 			}
 		}
 	}
+	/* ANOTHER NAME (objects.h): a brick seen whole whose squares a square's may
+	 * be, by the probe's test with no push (asked once per reading, when first
+	 * seen whole: the memo's key holds the squares, not the floor round them). */
+	if (c->memo[hit].square_fits < 0 && o.confirmed && c->memo[hit].reading.shape == SHAPE_BRICK &&
+	    c->task.shape == SHAPE_SQUARE)
+		c->memo[hit].square_fits = probe_square_consistent(xs, ys, o.squares, NULL, 0, NULL, 0, false,
+								   PROBE_BUDGET) != PROBE_INCONSISTENT;
 	free(xs);
 	free(ys);
 	o.reading = c->memo[hit].reading;
 	o.shape = o.reading.shape;
 	o.guessed = c->memo[hit].guessed;
+	o.square_fits = c->memo[hit].square_fits > 0;
 	o.confidence = o.confirmed ? 1 : (o.squares ? (double)o.foveal / o.squares : 0) * (o.guessed ? 0.5 : 1);
 	/* Once seen whole in the fovea, an object stays examined: a later look from
 	 * afar overwrites its squares' evidence with coarser, and the looks closer at
@@ -376,10 +386,25 @@ static bool unnamed_crumb(const Controller *c, int32_t j, const ObjectReading *q
 	       !probe_disproved(c, (int32_t)c->model.node[j].ident, q->centroid);
 }
 
+/* another_name(c, j, q): node j (read q), nearer the start, may be the task's object
+ * though named the other of square and brick (objects.h, ANOTHER NAME): for "the
+ * square", a brick seen whole spanning 3 squares or more each way whose squares a
+ * square of the probe's hypothesis owns exactly, standing still (square_fits),
+ * and no probe has shown no square owns them; for "the brick", a square read in
+ * the gap (no probe settles that). */
+static bool another_name(const Controller *c, int32_t j, const ObjectReading *q)
+{
+	const Box *r = &c->model.node[j].rect;
+	if (c->task.shape == SHAPE_SQUARE)
+		return q->shape == SHAPE_BRICK && q->square_fits && r->hi.x - r->lo.x >= 3 && r->hi.y - r->lo.y >= 3 &&
+		       !probe_disproved(c, (int32_t)c->model.node[j].ident, q->centroid);
+	return c->task.shape == SHAPE_BRICK && q->shape == SHAPE_SQUARE && in_gap(q);
+}
+
 bool objects_rival_open(Controller *c, int32_t j)
 {
 	ObjectReading q = objects_read(c, j);
-	return !q.examined || q.shape == c->task.shape || unnamed_crumb(c, j, &q);
+	return !q.examined || q.shape == c->task.shape || unnamed_crumb(c, j, &q) || another_name(c, j, &q);
 }
 
 /* pieces_shown(c, k): a probe in this task has shown an object Utak read the task's
@@ -416,7 +441,8 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 		ObjectReading q = objects_read(c, j);
 		if (goals_distance(q.centroid, c->start) >= d)
 			continue;
-		if (!q.examined || unnamed_crumb(c, j, &q) || (q.shape == c->task.shape && doubt_own(&q))) {
+		if (!q.examined || unnamed_crumb(c, j, &q) || (q.shape == c->task.shape && doubt_own(&q)) ||
+		    another_name(c, j, &q)) {
 			snprintf(why, size, "what may be another %s lies nearer the start, at (%.1f, %.1f)", shape,
 				 q.centroid.x, q.centroid.y);
 			*rival = j;

@@ -454,6 +454,28 @@ TEST_CASE(judge_quadrilaterals_kept)
 	TEST_CHECK(rejected <= 1);
 }
 
+/* With no push (objects.h, ANOTHER NAME: may a square own exactly the squares of an
+ * object read a brick?): a true square of 2.2 to 2.6, turned 0 to 45 degrees at
+ * several offsets, the sizes the fit reads a brick, is never rejected; and a
+ * 3 x 1 block, which no square of sides 1.82 or more owns, is. */
+TEST_CASE(standing_still_squares_kept)
+{
+	int undecided = 0;
+	for (int k = 0; k < 5; k++)
+		for (int deg = 0; deg <= 45; deg += 15)
+			for (int o = 0; o < 4; o++) {
+				Polygon p = rect(2.2 + 0.1 * k, 2.2 + 0.1 * k, deg, 30.05 + 0.25 * o, 30.1 + 0.5 * (o & 1));
+				sq_n = 0;
+				geom_project(&p, FIELD, FIELD, span, NULL);
+				ProbeVerdict v = probe_square_consistent(sq_x, sq_y, sq_n, NULL, 0, NULL, 0, false, BUDGET);
+				TEST_CHECK(v != PROBE_INCONSISTENT);
+				undecided += v == PROBE_UNDECIDED;
+			}
+	TEST_CHECK(undecided == 0);
+	int32_t x[3] = {30, 31, 32}, y[3] = {30, 30, 30};
+	TEST_CHECK(probe_square_consistent(x, y, 3, NULL, 0, NULL, 0, false, BUDGET) == PROBE_INCONSISTENT);
+}
+
 /* Degenerate input: nothing to test. */
 TEST_CASE(empty_is_undecided)
 {
@@ -473,6 +495,7 @@ int main(void)
 	TEST_RUN(least_width_is_sound);
 	TEST_RUN(least_width_of_small_squares);
 	TEST_RUN(narrow_squares_rejected);
+	TEST_RUN(standing_still_squares_kept);
 	TEST_RUN(judge_quadrilaterals_kept);
 	TEST_RUN(empty_is_undecided);
 	return TEST_EXIT();

@@ -104,6 +104,8 @@ typedef struct ShapeMemo {
 	uint64_t key;
 	ShapeReading reading;
 	bool guessed;	/* the reading is at the fovea's scale, the object's too coarse */
+	int8_t square_fits; /* a square's squares may be these, standing still (objects.h,
+			       ANOTHER NAME): 1, 0, or -1 not yet asked */
 } ShapeMemo;
 
 typedef enum ControllerPhase {

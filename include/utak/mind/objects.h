@@ -61,6 +61,8 @@ typedef struct ObjectReading {
 			      its shape is then SHAPE_NONE */
 	double shown_width; /* the least width a probe's looks showed (probe_width), 0
 			       when none was probed */
+	bool square_fits;   /* confirmed, named a brick, and some square of the probe's
+			       hypothesis owns exactly its squares (objects.h, ANOTHER NAME) */
 } ObjectReading;
 
 /* objects_read(c, k): what object node k is, by shape (cached). */
@@ -123,7 +125,18 @@ bool objects_touching_target(Controller *c);
  *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
  *   squares or more each way (a square two wide or more, unless its sides lie on
  *   the grid's lines, does) and has OBJECTS_CRUMB_LEAST squares or more (such a
- *   square covers no fewer). A crumb named another shape is taken at its name.
+ *   square covers no fewer). A crumb named another shape is taken at its name,
+ *   but for ANOTHER NAME: a nearer one seen whole read a brick that spans 3
+ *   squares or more each way, whose squares some square of the probe's
+ *   hypothesis owns exactly (probe_square_consistent with no push, asked once
+ *   per reading: ObjectReading.square_fits), may be the task's square; the fit
+ *   reads a true square of 2.3 to 2.5 turned 15 to 45 degrees 1.36 to 1.53 times
+ *   as long as wide (its squares are a rectangle's of those proportions too),
+ *   a brick, and Utak passed it by for a square farther on, a false success in
+ *   38 of 160 poses of 2.2 to 2.6 squares (tests/worlds/near-turned-square.w).
+ *   A probe that shows it no square settles it (rival.h); for "the brick", one read a square
+ *   longer than SHAPE_SQUARE_ASPECT (in the gap) may be the brick the same way,
+ *   and no probe settles that (the probe's hypothesis is a square).
  *   THE NEARER UNSEEN: where floor the model knows borders unseen squares nearer
  *   the start than the object's centroid (goals_unseen_within), an object of
  *   the shape may lie there; goals.c looks at such space before going to the
@@ -190,8 +203,8 @@ bool objects_doubt(Controller *c, int32_t k, char *why, size_t size);
  * no doubt or it names no other object. Utak goes and settles such a rival before
  * he claims (rival.h). objects_rival_open(c, j): node j may still be the task's
  * object by its own sight: never seen whole in the fovea, or read the task's
- * shape, or an unnamed crumb that may be a small square (a crumb a probe has
- * shown no square owns is none: probe.h). */
+ * shape, or an unnamed crumb that may be a small square, or of ANOTHER NAME (a
+ * crumb or brick a probe has shown no square owns is none: probe.h). */
 int32_t objects_rival(Controller *c, int32_t k);
 bool objects_rival_open(Controller *c, int32_t j);
 /* objects_doubtful(c, k): node k is seen whole and doubtful by its own measures
