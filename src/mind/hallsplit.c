@@ -80,11 +80,11 @@ static bool hs_node_parts(const Controller *c, int32_t k, int32_t si, int32_t sj
 	if (m->node[k].kind != NODE_OBJECT || m->node[k].held)
 		return false;
 	int64_t n = (int64_t)s->w * s->h;
-	/* The room map with k taken for wall, if it is not felt and no square of k has
-	 * been seen in the fovea; or if a square lies in a blob gone to, and it is not
-	 * felt, or felt while a square of it is still unseen in the fovea (SETTLING:
-	 * the object felt may be read as one with a stub the eye has not yet parted
-	 * from it). */
+	/* The room map with k taken for wall, if touch has not felt it (a felt object
+	 * is settled: its letter makes it space to his rooms, one felt B is wall in
+	 * the model already) and no square of it has been seen in the fovea (the rule
+	 * for a blob seen only coarsely; hs_unfelt_parts asks the same of objects seen
+	 * in the fovea). */
 	if (objects_felt(c, k))
 		return false;
 	RoomMap rm;
@@ -121,7 +121,8 @@ static bool hs_node_parts(const Controller *c, int32_t k, int32_t si, int32_t sj
 }
 
 static bool hs_suspect(const Controller *c, int32_t k);
-static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, Vec2 p);
+static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, const Vec2 *p,
+			   int32_t np);
 static Vec2 hs_first(const Controller *c, int32_t k, Box *box);
 
 /* hs_unfelt_parts(c, si, sj, p, np, at): whether an object node not held, not felt
@@ -139,9 +140,7 @@ static bool hs_unfelt_parts(const Controller *c, int32_t si, int32_t sj, const V
 		if (objects_felt(c, k) || !hs_suspect(c, k))
 			continue;
 		one[k] = true;
-		parted = np > 0;
-		for (int32_t i = 0; i < np && parted; i++)
-			parted = hs_joint_parts(c, one, si, sj, p[i]);
+		parted = hs_joint_parts(c, one, si, sj, p, np);
 		one[k] = false;
 		if (parted) {
 			Box box;
@@ -216,10 +215,14 @@ static bool hs_suspect(const Controller *c, int32_t k)
 	return false; /* (off the screen: no part of the rooms judged) */
 }
 
-/* hs_joint_parts(c, wall, si, sj, p): whether, with every node k that wall[k] marks
- * taken for wall at once, the start (screen cell si, sj) and p lie in different
- * merged rooms (the rule's map and merge, hallsplit.h). */
-static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, Vec2 p)
+/* hs_joint_parts(c, wall, si, sj, p, np): whether, with every node k that wall[k]
+ * marks taken for wall at once, the start (screen cell si, sj) and each of the np
+ * points p lie in different merged rooms (the rule's map and merge, hallsplit.h),
+ * or in different rooms of the verdict's watershed restated; false when np is 0.
+ * The map and the watershed depend on the wall set alone: each is made once a call
+ * (the watershed only when some point is not parted by the map), whatever np. */
+static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, const Vec2 *p,
+			   int32_t np)
 {
 	const Screen *s = &c->screen;
 	int64_t n = (int64_t)s->w * s->h;
@@ -234,26 +237,32 @@ static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, in
 	CarryRooms cr;
 	carryroom_merge_maybe(&rm, s, &cr);
 	int32_t a = carryroom_at(&cr, &rm, si, sj);
-	bool parted = a >= 0 && hs_parted(&cr, &rm, s, a, &p, 1);
-	/* ... or by the verdict's watershed restated on the same space, the unseen
-	 * taken for floor: rooms.h finds no door across a diagonal narrowing between
-	 * two offset piers (carryroom_watershed). */
-	int32_t pi, pj;
-	if (!parted && goals_cell_of(s, p, &pi, &pj)) {
-		Grid g;
-		grid_init(&g, s->w, s->h, GRID_BLOCKED);
-		for (int64_t q = 0; q < n; q++) {
-			int32_t l = s->label[q];
-			if (!(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE)
-				g.cells[q] = GRID_FREE;
+	int32_t *room = NULL; /* the watershed's rooms, made when first asked */
+	bool parted = np > 0;
+	for (int32_t i = 0; i < np && parted; i++) {
+		parted = a >= 0 && hs_parted(&cr, &rm, s, a, &p[i], 1);
+		/* ... or by the verdict's watershed restated on the same space, the
+		 * unseen taken for floor: rooms.h finds no door across a diagonal
+		 * narrowing between two offset piers (carryroom_watershed). */
+		int32_t pi, pj;
+		if (parted || !goals_cell_of(s, p[i], &pi, &pj))
+			continue;
+		if (!room) {
+			Grid g;
+			grid_init(&g, s->w, s->h, GRID_BLOCKED);
+			for (int64_t q = 0; q < n; q++) {
+				int32_t l = s->label[q];
+				if (!(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE)
+					g.cells[q] = GRID_FREE;
+			}
+			room = util_alloc((size_t)(n > 0 ? n : 1), sizeof *room);
+			carryroom_watershed(&g, room);
+			grid_free(&g);
 		}
-		int32_t *room = util_alloc((size_t)n, sizeof *room);
-		carryroom_watershed(&g, room);
 		int32_t ra = room[(int64_t)sj * s->w + si], rb = room[(int64_t)pj * s->w + pi];
 		parted = ra >= 0 && rb != ra;
-		free(room);
-		grid_free(&g);
 	}
+	free(room);
 	carryroom_free(&cr);
 	goals_roommap_free(&rm);
 	return parted;
@@ -368,10 +377,10 @@ static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
 		if (!wall[k])
 			continue;
 		one[k] = true;
-		ones += alone[k] = hs_joint_parts(c, one, si, sj, p);
+		ones += alone[k] = hs_joint_parts(c, one, si, sj, &p, 1);
 		one[k] = false;
 	}
-	bool joint = hs_joint_parts(c, wall, si, sj, p);
+	bool joint = hs_joint_parts(c, wall, si, sj, &p, 1);
 	if (ones == 0 && !joint) {
 		free(alone);
 		free(key);
@@ -383,7 +392,7 @@ static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
 		if (!wall[k])
 			continue;
 		wall[k] = false;
-		keys += key[k] = !hs_joint_parts(c, wall, si, sj, p);
+		keys += key[k] = !hs_joint_parts(c, wall, si, sj, &p, 1);
 		wall[k] = true;
 	}
 	for (int32_t k = 0; k < nn; k++)

@@ -377,7 +377,7 @@ static int32_t another_of_shape(Controller *c, int32_t k, Vec2 *at)
 /* unnamed_crumb(c, j, q): node j (read q) is left unnamed but may be a small square
  * (objects.h, NEARER THE START): 8 to 14 squares spanning 3 or more each way, and
  * no probe has shown that no square owns them (probe.h: the probe's hypothesis is
- * every rectangle of a square's proportions, sides from 1.5, at any angle). */
+ * every rectangle of a square's proportions, sides from PROBE_MIN_SIDE, at any angle). */
 static bool unnamed_crumb(const Controller *c, int32_t j, const ObjectReading *q)
 {
 	const Box *r = &c->model.node[j].rect;

@@ -715,7 +715,8 @@ static uint16_t grid_shifts(const Controller *c, const ProbeRun *p, int32_t bx0,
  * the object may reach and that hold only its squares and floor, wherever in his
  * square Utak's point was (probe_square_consistent, unplaced): the cell's squares
  * and every square next to them were the object's or floor before the probe, and
- * none is Utak's square or next to it (the eye sees his own square occupied). The
+ * none is Utak's own square (the eye sees it occupied; the cells beside him are
+ * kept, else the object's near side is never seen after a push). The
  * cells are placed from the square Utak stood on before the probe, whatever the
  * model believes since (its disparity search sees the object's squares change
  * beside him, which its whole squares cannot predict). */

@@ -503,9 +503,10 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	 * data dependence of the index on each mask would make them wait in turn (see
 	 * MEASURED). Straight on is tested first: one predictable branch down a corridor.
 	 * The neighbours come from the plane (three loads, all near: an eighth of a byte
-	 * a cell), the dist2 and the ref from the cell's record, found by its rank: a
+	 * a cell), the dist2 from the grid-sized dist2 (the one array the size of the
+	 * grid the walk reads), the ref from the cell's record, found by its rank: a
 	 * step north or south counts the bits before it in its word. The cut corner's
-	 * fourth cell is free by the grid's byte (only at turns). */
+	 * fourth cell is free by its dist2 (only at turns). */
 /* A step north or south asks for dist2 8 rows on in the same direction: each row is a
  * new page of dist2 at 4096 (16 KB a row), where the hardware's prefetchers stop, and
  * a corridor runs on straight most steps (see MEASURED: 7-9% off at 4096 and on the
@@ -611,8 +612,8 @@ static inline int pathgraph_ctz64(uint64_t v)
 
 /* builder_vertices(b): step (1). First, one pass over the skeleton's plane, 64 cells
  * a word, the empty words skipped: the rank of each word's first bit, each skeleton
- * cell's record in rank order (its dist2, from the grid-sized dist2 in row-major
- * order, the one read of it for the chain cells; no ref yet), and the cells of
+ * cell's record in rank order (its ref, set later: a copy of its dist2 in the record
+ * was tried and dropped, MEASURED), and the cells of
  * degree other than 2, found from the four words around by bit arithmetic. Then the
  * vertices, in row-major order of their first cell: a junction set's flood reaches
  * cells past the one it starts at, so it waits for every record. The grid itself is

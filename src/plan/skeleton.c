@@ -224,6 +224,13 @@
 
 #include "utak/base/util.h"
 
+/* The thinning's row loads and the output's plane bytes gather 8 state bytes into 8
+ * bits by one multiply, which takes byte k of a loaded word to bit k only where
+ * bytes are stored little-end first (pathgraph_work.h reads the plane so too). */
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "skeleton.c gathers bytes to bits as on a little-endian machine"
+#endif
+
 /* skeleton_dist2_bound(w, h): no free cell is farther than this (squared) from the
  * nearest blocked cell, as the ring outside the grid is blocked: in the shorter axis
  * some border is at most (side + 1) / 2 away. */

@@ -80,8 +80,8 @@
  * 1.75 ones never (three looks, the slack Utak assumes, every cell seen). */
 #define PROBE_MIN_SIDE 1.82
 /* The search splits boxes of sides from here, as it did when that was the least
- * side searched: the boxes are the same, and a box whose sides all lie under
- * PROBE_MIN_SIDE is dropped, so no verdict but one on such a rectangle changes
+ * side searched: the boxes are the same, and a box one of whose sides lies wholly
+ * under PROBE_MIN_SIDE (its upper bound below it) is dropped, so no verdict but one on such a rectangle changes
  * (a box is taken as consistent within PROBE_EPS, and other boxes would take
  * other rectangles within it: a 2.8 square cut 0.4 deep read consistent from
  * boxes split from 1.82). */
