@@ -236,6 +236,11 @@ static bool round_trips(Controller *c, const MotorCommand *cmd, int32_t seen)
 	}
 	int32_t x, y;
 	worldmodel_utak_square(&c->model, &x, &y);
+	/* A move that left him on the square he stood on (a bump, a leg shorter than a
+	 * square) is no trip: the stuck rule and the blocked route's re-plan deal with
+	 * it, and counted here two bumps would give the goal up as reached. */
+	if (c->trip_count > 0 && c->trip_x[c->trip_count - 1] == x && c->trip_y[c->trip_count - 1] == y)
+		return false;
 	int visits = 1;
 	for (int k = 0; k < c->trip_count; k++)
 		visits += c->trip_x[k] == x && c->trip_y[k] == y;
