@@ -301,18 +301,6 @@ static int ws_cmp(const void *pa, const void *pb)
 	return (a > b) - (a < b);
 }
 
-static int32_t ws_find(int32_t *parent, int32_t i)
-{
-	while (parent[i] != i)
-		i = parent[i] = parent[parent[i]];
-	return i;
-}
-
-static bool ws_wide(float peak, float c)
-{
-	return peak >= CARRYROOM_RATIO * c && peak >= c + CARRYROOM_MARGIN;
-}
-
 void carryroom_watershed(const Grid *g, int32_t *room)
 {
 	int32_t w = g->w, h = g->h;
@@ -362,7 +350,7 @@ void carryroom_watershed(const Grid *g, int32_t *room)
 		for (int u = 0; u < 4; u++) {
 			if (nb[u] < 0 || state[nb[u]] != 1)
 				continue;
-			int32_t q = ws_find(parent, nb[u]);
+			int32_t q = cr_find(parent, nb[u]);
 			bool dup = false;
 			for (int v = 0; v < nr; v++)
 				dup |= roots[v] == q;
@@ -377,11 +365,11 @@ void carryroom_watershed(const Grid *g, int32_t *room)
 			}
 		int wide = 0;
 		for (int u = 0; u < nr; u++)
-			wide += ws_wide(peak[roots[u]], c);
+			wide += cr_wide(peak[roots[u]], c);
 		if (wide >= 2) {
 			state[i] = 2;
 			for (int u = 1; u < nr; u++)
-				if (!ws_wide(peak[roots[u]], c))
+				if (!cr_wide(peak[roots[u]], c))
 					parent[roots[u]] = roots[0];
 			continue;
 		}
@@ -395,7 +383,7 @@ void carryroom_watershed(const Grid *g, int32_t *room)
 			parent[roots[u]] = roots[0];
 	}
 	for (int32_t i = 0; i < n; i++)
-		room[i] = state[i] == 1 ? ws_find(parent, i) : -1;
+		room[i] = state[i] == 1 ? cr_find(parent, i) : -1;
 	free(state);
 	free(peak);
 	free(parent);
