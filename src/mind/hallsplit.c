@@ -3,14 +3,15 @@
  * (paper 3.4.2; issue 13 items 3 and 6; the rule is in hallsplit.h). CONTROLLER
  * SIDE: the world model, its screen and what touch has felt.
  *
- * ALGORITHM. The rule: for each object node not held, not felt, and with no square
- * seen in the fovea, the room map of the screen's fixed space seen, that node taken
- * for wall (goals_roommap_find), merged by the verdict's door rule keeping every
- * narrowing that may yet be a door (carryroom_merge_maybe); the node parts the
- * start from p when their merged rooms differ. The first such node, by index, is
- * reported. Then each object node not held and not felt, seen in the fovea or
- * not, taken for wall alone, on that map or on the verdict's watershed restated
- * (hs_unfelt_parts).
+ * ALGORITHM. The rule (hs_unfelt_parts): for each object node not held and not
+ * felt, seen in the fovea or not, the room map of the screen's fixed space seen,
+ * that node taken for wall (goals_roommap_find), merged by the verdict's door rule
+ * keeping every narrowing that may yet be a door (carryroom_merge_maybe); the node
+ * parts the start from p when their merged rooms differ, or their rooms of the
+ * verdict's watershed restated on the same space do. The first such node, by
+ * index, is reported. (A node never seen in the fovea was asked first on the map
+ * alone, until stub10 asked every unfelt node: that loop found nothing the second
+ * does not, and went.)
  * Settling (task (i)): the SUSPECTS (hs_suspect) are taken for wall each alone and
  * all at once, on that map and on the verdict's watershed restated on the same
  * space (carryroom_watershed); the ones to settle are those that part the hall
@@ -68,58 +69,6 @@ static bool hs_in_blob(const Controller *c, int32_t x, int32_t y)
 	return false;
 }
 
-/* hs_node_parts(c, k, si, sj, p, np, box, first): whether node k parts the start
- * (screen cell si, sj) from the np points p (the rule; hallsplit.h); *box is k's
- * rectangle of model squares, *first the centre of its first square on the screen
- * (by row), for the doubt's words. */
-static bool hs_node_parts(const Controller *c, int32_t k, int32_t si, int32_t sj, const Vec2 *p, int32_t np,
-			  Box *box, Vec2 *first)
-{
-	const Screen *s = &c->screen;
-	const WorldModel *m = &c->model;
-	if (m->node[k].kind != NODE_OBJECT || m->node[k].held)
-		return false;
-	int64_t n = (int64_t)s->w * s->h;
-	/* The room map with k taken for wall, if touch has not felt it (a felt object
-	 * is settled: its letter makes it space to his rooms, one felt B is wall in
-	 * the model already) and no square of it has been seen in the fovea (the rule
-	 * for a blob seen only coarsely; hs_unfelt_parts asks the same of objects seen
-	 * in the fovea). */
-	if (objects_felt(c, k))
-		return false;
-	RoomMap rm;
-	grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
-	int64_t count = 0;
-	bool fine = false;
-	for (int64_t q = 0; q < n; q++) {
-		int32_t x = s->x0 + (int32_t)(q % s->w), y = s->y0 + (int32_t)(q / s->w);
-		if (s->label[q] == k) {
-			if (count++ == 0) {
-				*box = (Box){{x, y}, {x, y}};
-				*first = goals_centre(x, y);
-			}
-			box->lo.x = x < box->lo.x ? x : box->lo.x;
-			box->lo.y = y < box->lo.y ? y : box->lo.y;
-			box->hi.x = x > box->hi.x ? x : box->hi.x;
-			box->hi.y = y > box->hi.y ? y : box->hi.y;
-			fine |= worldmodel_evidence(m, x, y).res >= WORLDMODEL_RES_FOVEA;
-		} else if (s->label[q] != SCREEN_UNKNOWN && s->fixed.cells[q] == GRID_FREE)
-			rm.known.cells[q] = GRID_FREE;
-	}
-	if (count == 0 || fine) {
-		grid_free(&rm.known);
-		return false;
-	}
-	goals_roommap_find(&rm);
-	CarryRooms cr;
-	carryroom_merge_maybe(&rm, s, &cr);
-	int32_t a = carryroom_at(&cr, &rm, si, sj);
-	bool parted = a >= 0 && hs_parted(&cr, &rm, s, a, p, np);
-	carryroom_free(&cr);
-	goals_roommap_free(&rm);
-	return parted;
-}
-
 static bool hs_suspect(const Controller *c, int32_t k);
 static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, const Vec2 *p,
 			   int32_t np);
@@ -156,11 +105,6 @@ bool hallsplit_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *a
 	int32_t si, sj;
 	if (np <= 0 || !goals_cell_of(&c->screen, c->start, &si, &sj))
 		return false;
-	for (int32_t k = 0; k < c->model.node_count; k++) {
-		Box box;
-		if (hs_node_parts(c, k, si, sj, p, np, &box, at))
-			return true;
-	}
 	return hs_unfelt_parts(c, si, sj, p, np, at);
 }
 
