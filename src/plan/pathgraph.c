@@ -5,7 +5,7 @@
  * Build, from the skeleton's bit plane (Skeleton.plane, 64 cells a word, made by
  *    skeleton_compute as it writes its output): the grid and the skeleton's bytes are
  *    not scanned, and every array the build writes is sized by the skeleton's cells,
- *    not the grid's (but toward, below, touched on junction-set cells alone). A
+ *    not the grid's. A
  *    skeleton cell's record (its cell_ref, pathgraph_cell_ref) is found by its rank,
  *    the skeleton cells before it in row-major order: a table holds the rank of each
  *    plane word's first bit, and a popcount of the word does the rest.
@@ -13,8 +13,8 @@
  *    and the cells of degree other than 2, by bit arithmetic on the word and the four
  *    around it. (1) Those cells are the vertex cells; 4-adjacent junction cells are
  *    merged into a junction set by flood fill, placed at its cell of largest dist2, and
- *    a breadth-first tree inside the set (toward: a byte a grid cell, zero but on the
- *    last build's vertex cells) leads from any of its cells to that one. (2) From every
+ *    a breadth-first tree inside the set (toward: a byte a skeleton cell, by rank,
+ *    written on vertex cells alone) leads from any of its cells to that one. (2) From every
  *    vertex cell, every skeleton neighbour that is an unvisited chain cell (degree 2)
  *    starts a walk along the chain to the next vertex cell: that chain is an edge. The
  *    walk reads each cell's neighbours from the plane (three 16-bit loads) and a table,
@@ -38,10 +38,10 @@
  *    inner cell of exactly one edge; incident[] lists each edge under both its vertices
  *    (once for a loop).
  *
- * MEMORY  a record (4 bytes) a skeleton cell, and the table of ranks (4 bytes a
+ * MEMORY  a record (4 bytes) and a junction-set parent direction (a byte, written
+ *    on vertex cells alone) a skeleton cell, and the table of ranks (4 bytes a
  *    plane word: half a bit a grid cell); the edges' cells (4 + 4 bytes each);
- *    vertices and edges; for the build, the junction sets' parent directions (a byte
- *    a grid cell, kept between builds, touched on their cells alone); and, for the
+ *    vertices and edges; and, for the
  *    queries, 12 bytes a grid cell of search scratch (a visit stamp, a parent and a
  *    queue entry: stamps spare clearing between queries).
  *
@@ -205,7 +205,8 @@ typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
 	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
-	uint8_t *toward;      /* junction-set cells: 1 + direction to the parent, 0 at the root */
+	uint8_t *toward;      /* by rank, a vertex cell's 1 + direction to its set's root, 0
+	                       * at the root (and for a vertex of one cell) */
 	const uint8_t *plane; /* the skeleton's bits (Skeleton.plane) */
 	int32_t row_bits;     /* bits a row of the plane: the step north there */
 	const int32_t *base;  /* the rank of each plane word's first bit */
@@ -270,13 +271,18 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 	    util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
-	builder_cell(b, builder_bit(b, cell))->ref = v;
+	const int32_t rk = pathgraph_rank(b->plane, b->base, builder_bit(b, cell));
+	b->cell[rk].ref = v;
+	b->toward[rk] = 0;
 	return v;
 }
 
+/* The toward of a junction-set cell that the breadth-first tree has not reached yet. */
+enum { PATHGRAPH_UNSEEN = 0xff };
+
 /* builder_junction_set(b, seed): floods the junction set of seed into a new vertex,
  * placed at its cell of largest dist2 (the first such in flood order), and records in
- * toward[] the breadth-first tree from that cell. */
+ * toward[] (by rank) the breadth-first tree from that cell. */
 static void builder_junction_set(Builder *b, int32_t seed)
 {
 	Pathgraph *pg = b->pg;
@@ -292,41 +298,44 @@ static void builder_junction_set(Builder *b, int32_t seed)
 			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 				continue;
 			const int32_t nb = c + step[d];
-			PathgraphCell *nc = builder_cell(b, cb + bstep[d]);
-			if (nc->ref == PATHGRAPH_REF_NONE &&
+			const int32_t nr = pathgraph_rank(b->plane, b->base, cb + bstep[d]);
+			if (b->cell[nr].ref == PATHGRAPH_REF_NONE &&
 			    PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb + bstep[d],
 			                                        b->row_bits)] >= 3) {
-				nc->ref = v;
+				b->cell[nr].ref = v;
+				b->toward[nr] = PATHGRAPH_UNSEEN;
 				intlist_push(&b->vcells, nb);
 			}
 		}
 	}
+	int n = b->vcells.count - first;
+	if (n > b->max_set)
+		b->max_set = n;
+	if (n == 1)
+		return; /* the seed alone, its own root: as builder_add_vertex made it */
 	int32_t root = seed;
 	for (int k = first; k < b->vcells.count; k++)
 		if (b->s->dist2[b->vcells.v[k]] > b->s->dist2[root])
 			root = b->vcells.v[k];
 	/* re-order the set's cells breadth-first from the root, recording parents */
-	int n = b->vcells.count - first;
 	b->vcells.count = first;
 	intlist_push(&b->vcells, root);
-	b->toward[root] = 0;
+	b->toward[pathgraph_rank(b->plane, b->base, builder_bit(b, seed))] = PATHGRAPH_UNSEEN;
+	b->toward[pathgraph_rank(b->plane, b->base, builder_bit(b, root))] = 0;
 	for (int k = first; k < b->vcells.count; k++) {
 		const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
 		const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 		for (int d = 0; d < 4; d++) {
 			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 				continue;
-			const int32_t nb = c + step[d];
-			if (nb != root && b->toward[nb] == 0 &&
-			    builder_cell(b, cb + bstep[d])->ref == v) {
-				b->toward[nb] = (uint8_t)(1 + (d + 2) % 4);
-				intlist_push(&b->vcells, nb);
+			const int32_t nr = pathgraph_rank(b->plane, b->base, cb + bstep[d]);
+			if (b->cell[nr].ref == v && b->toward[nr] == PATHGRAPH_UNSEEN) {
+				b->toward[nr] = (uint8_t)(1 + (d + 2) % 4);
+				intlist_push(&b->vcells, c + step[d]);
 			}
 		}
 	}
 	assert(b->vcells.count - first == n);
-	if (n > b->max_set)
-		b->max_set = n;
 	pg->vertices[v].x = root % pg->w;
 	pg->vertices[v].y = root / pg->w;
 	pg->vertices[v].set_size = n;
@@ -384,21 +393,24 @@ static void builder_reserve(Builder *b, int64_t more)
 	b->sc->cells_cap = cap;
 }
 
-/* builder_root_path(b, c, r, forward): appends to the edge (and to r) the cells from
- * junction-set cell c to the root of its set (toward[]): from the root to c when
- * !forward (the start of an edge, c where it leaves the set: r starts there), else
- * from c to the root. */
-static void builder_root_path(Builder *b, int32_t c, EdgeRun *r, bool forward)
+/* builder_root_path(b, c, cb, r, forward): appends to the edge (and to r) the cells
+ * from vertex cell c (plane bit cb) to the root of its set (toward[]): from the root
+ * to c when !forward (the start of an edge, c where it leaves the set: r starts
+ * there), else from c to the root. */
+static void builder_root_path(Builder *b, int32_t c, int32_t cb, EdgeRun *r, bool forward)
 {
 	int32_t *p = b->pg->cells + b->count;
 	const int32_t w = b->pg->w, *dist2 = b->s->dist2;
-	int32_t n = 0, at = c;
+	const int32_t step[4] = {1, w, -1, -w};
+	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
+	int32_t n = 0, at = c, atb = cb;
 	for (;;) {
 		p[n++] = at;
-		uint8_t t = b->toward[at];
+		const uint8_t t = b->toward[pathgraph_rank(b->plane, b->base, atb)];
 		if (t == 0)
 			break;
-		at += PATHGRAPH_DX[t - 1] + PATHGRAPH_DY[t - 1] * w;
+		at += step[t - 1];
+		atb += bstep[t - 1];
 	}
 	int32_t i = 0;
 	if (!forward) {
@@ -475,7 +487,7 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
 	const int32_t first = b->count;
 	EdgeRun r;
-	builder_root_path(b, c, &r, false); /* from v's own cell to c */
+	builder_root_path(b, c, builder_bit(b, c), &r, false); /* from v's own cell to c */
 	const int32_t w = pg->w, ref_base = b->ref_base, rb = b->row_bits;
 	const int32_t step[4] = {1, w, -1, -w};
 	const uint8_t *plane = b->plane;
@@ -579,7 +591,7 @@ walk_end:
 	b->count = k;
 	const int32_t u = cell[rk].ref;
 	assert(u >= 0 && u < pg->vertex_count);
-	builder_root_path(b, cur, &r, true);
+	builder_root_path(b, cur, cb, &r, true);
 	builder_end_edge(b, v, u, first, &r);
 }
 
@@ -683,8 +695,8 @@ static void builder_edges(Builder *b)
 					builder_reserve(b, 2 * (int64_t)b->max_set);
 					int32_t first = b->count;
 					EdgeRun r;
-					builder_root_path(b, c, &r, false);
-					builder_root_path(b, nb, &r, true);
+					builder_root_path(b, c, cb, &r, false);
+					builder_root_path(b, nb, cb + bstep[d], &r, true);
 					builder_end_edge(b, v, ref, first, &r);
 				}
 			}
@@ -737,21 +749,10 @@ static void builder_loops(Builder *b)
 
 void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 {
-	/* keep the query scratch and the arrays of the last build; toward, over the grid,
-	 * zero but on the last build's vertex cells (built_vcells), cleared there */
-	const size_t n = (size_t)s->w * (size_t)s->h;
+	/* keep the query scratch and the arrays of the last build */
 	if (!pg->scratch)
 		pg->scratch = util_alloc(1, sizeof *pg->scratch);
 	struct PathgraphScratch *sc = pg->scratch;
-	if (sc->toward_cells != n || !sc->toward) {
-		free(sc->toward);
-		sc->toward = util_alloc(n, 1);
-		sc->toward_cells = n;
-		sc->built_vcells.count = 0;
-	}
-	for (int k = 0; k < sc->built_vcells.count; k++)
-		sc->toward[sc->built_vcells.v[k]] = 0;
-	sc->built_vcells.count = 0;
 	const size_t words = (size_t)(s->h + 2) * (size_t)skeleton_plane_words(s->w);
 	if (sc->rank_words != words || !sc->rank_base) {
 		free(sc->rank_base);
@@ -759,6 +760,7 @@ void pathgraph_build(Pathgraph *pg, const Skeleton *s, const Grid *g)
 		sc->rank_words = words;
 	}
 	sc->cell_of = util_grow(sc->cell_of, &sc->cell_cap, s->count + 1, sizeof *sc->cell_of);
+	sc->toward = util_grow(sc->toward, &sc->toward_cap, s->count + 1, 1);
 	pg->w = s->w;
 	pg->h = s->h;
 	pg->grid = g;

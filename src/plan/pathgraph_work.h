@@ -127,18 +127,18 @@ struct PathgraphScratch {
 	IntList walk_s, walk_d; /* S to S' and D to D' walks when out of sight */
 	IntList cells;          /* the route's cells, while making the polyline */
 	int64_t expanded;
-	/* Kept between builds of a grid of one size (pathgraph_build): the junction
-	 * sets' parent directions (w h bytes, zero but on the cells of built_vcells)
-	 * and every vertex cell of the last build, so that the next build clears
-	 * toward on those cells alone. */
-	uint8_t *toward;
-	size_t toward_cells;
+	/* The memory of the build's list of vertex cells (pathgraph.c's Builder.vcells),
+	 * kept for the next build. */
 	IntList built_vcells;
-	/* The skeleton cells' records in rank order (cell_cap of them), and the rank of
-	 * the first bit of each word of the skeleton's plane (rank_words of them; only
-	 * the words that hold grid cells are written). */
+	/* The skeleton cells' records in rank order (cell_cap of them), their junction-set
+	 * parent directions in rank order too (toward_cap bytes: written for vertex cells
+	 * alone, by each build), and the rank of the first bit of each word of the
+	 * skeleton's plane (rank_words of them; only the words that hold grid cells are
+	 * written). */
 	PathgraphCell *cell_of;
 	int cell_cap;
+	uint8_t *toward;
+	int toward_cap;
 	int32_t *rank_base;
 	size_t rank_words;
 	IntList cand; /* the build's cells of degree other than 2 (pathgraph.c, step 1) */
