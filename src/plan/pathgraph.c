@@ -205,8 +205,7 @@ typedef struct Builder {
 	Pathgraph *pg;
 	const Skeleton *s;
 	struct PathgraphScratch *sc; /* the capacities of pg's arrays, kept between builds */
-	uint8_t *toward;      /* by rank, a vertex cell's 1 + direction to its set's root, 0
-	                       * at the root (and for a vertex of one cell) */
+	uint8_t *toward; /* by rank: a vertex cell's 1 + direction to its set's root (0 there) */
 	const uint8_t *plane; /* the skeleton's bits (Skeleton.plane) */
 	int32_t row_bits;     /* bits a row of the plane: the step north there */
 	const int32_t *base;  /* the rank of each plane word's first bit */
@@ -223,6 +222,36 @@ typedef struct Builder {
 static inline unsigned pathgraph_load16(const uint8_t *p)
 {
 	return (unsigned)p[0] | (unsigned)p[1] << 8;
+}
+
+/* pathgraph_ctz64(v): the index of the lowest bit set in v != 0. */
+static inline int pathgraph_ctz64(uint64_t v)
+{
+#if defined(__GNUC__)
+	return __builtin_ctzll(v);
+#else
+	int k = 0;
+	while (!(v & 1)) {
+		v >>= 1;
+		k++;
+	}
+	return k;
+#endif
+}
+
+/* pathgraph_clz64(v): 63 less the index of the highest bit set in v != 0. */
+static inline int pathgraph_clz64(uint64_t v)
+{
+#if defined(__GNUC__)
+	return __builtin_clzll(v);
+#else
+	int k = 0;
+	while (!(v >> 63)) {
+		v <<= 1;
+		k++;
+	}
+	return k;
+#endif
 }
 
 /* pathgraph_plane_mask(plane, cb, row_bits): the skeleton 4-neighbours of the cell of
@@ -258,20 +287,26 @@ static inline PathgraphCell *builder_cell(const Builder *b, int32_t cb)
 	return &b->cell[pathgraph_rank(b->plane, b->base, cb)];
 }
 
-/* builder_mask(b, i): pathgraph_plane_mask of grid cell i. */
-static inline unsigned builder_mask(const Builder *b, int32_t i)
+/* builder_near_rank(b, cb, rk, d): the rank of the skeleton cell next to the skeleton
+ * cell of plane bit cb and rank rk in direction d: one on or back east or west, else
+ * counted. */
+static inline int32_t builder_near_rank(const Builder *b, int32_t cb, int32_t rk, int d)
 {
-	return pathgraph_plane_mask(b->plane, builder_bit(b, i), b->row_bits);
+	if (d == 0)
+		return rk + 1;
+	if (d == 2)
+		return rk - 1;
+	return pathgraph_rank(b->plane, b->base, cb + (d == 1 ? b->row_bits : -b->row_bits));
 }
 
-static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
+/* builder_add_vertex(b, cell, rk, kind): a vertex of one cell, cell of rank rk. */
+static int32_t builder_add_vertex(Builder *b, int32_t cell, int32_t rk, PathgraphKind kind)
 {
 	Pathgraph *pg = b->pg;
 	pg->vertices =
 	    util_grow(pg->vertices, &b->sc->vertex_cap, pg->vertex_count + 1, sizeof *pg->vertices);
 	int32_t v = pg->vertex_count++;
 	pg->vertices[v] = (PathgraphVertex){cell % pg->w, cell / pg->w, kind, 1, b->s->dist2[cell]};
-	const int32_t rk = pathgraph_rank(b->plane, b->base, builder_bit(b, cell));
 	b->cell[rk].ref = v;
 	b->toward[rk] = 0;
 	return v;
@@ -280,25 +315,27 @@ static int32_t builder_add_vertex(Builder *b, int32_t cell, PathgraphKind kind)
 /* The toward of a junction-set cell that the breadth-first tree has not reached yet. */
 enum { PATHGRAPH_UNSEEN = 0xff };
 
-/* builder_junction_set(b, seed): floods the junction set of seed into a new vertex,
- * placed at its cell of largest dist2 (the first such in flood order), and records in
- * toward[] (by rank) the breadth-first tree from that cell. */
-static void builder_junction_set(Builder *b, int32_t seed)
+/* builder_junction_set(b, seed, seed_cb, seed_rk): floods the junction set of seed (of
+ * plane bit seed_cb and rank seed_rk) into a new vertex, placed at its cell of largest
+ * dist2 (the first such in flood order), and records in toward[] (by rank) the
+ * breadth-first tree from that cell. */
+static void builder_junction_set(Builder *b, int32_t seed, int32_t seed_cb, int32_t seed_rk)
 {
 	Pathgraph *pg = b->pg;
 	const int32_t step[4] = {1, pg->w, -1, -pg->w};
 	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
-	int32_t v = builder_add_vertex(b, seed, PATHGRAPH_JUNCTION);
+	int32_t v = builder_add_vertex(b, seed, seed_rk, PATHGRAPH_JUNCTION);
 	int first = b->vcells.count;
 	intlist_push(&b->vcells, seed);
 	for (int k = first; k < b->vcells.count; k++) {
-		const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+		const int32_t c = b->vcells.v[k], cb = k == first ? seed_cb : builder_bit(b, c);
+		const int32_t crk = k == first ? seed_rk : pathgraph_rank(b->plane, b->base, cb);
 		const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 		for (int d = 0; d < 4; d++) {
 			if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 				continue;
 			const int32_t nb = c + step[d];
-			const int32_t nr = pathgraph_rank(b->plane, b->base, cb + bstep[d]);
+			const int32_t nr = builder_near_rank(b, cb, crk, d);
 			if (b->cell[nr].ref == PATHGRAPH_REF_NONE &&
 			    PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb + bstep[d],
 			                                        b->row_bits)] >= 3) {
@@ -393,25 +430,28 @@ static void builder_reserve(Builder *b, int64_t more)
 	b->sc->cells_cap = cap;
 }
 
-/* builder_root_path(b, c, cb, r, forward): appends to the edge (and to r) the cells
- * from vertex cell c (plane bit cb) to the root of its set (toward[]): from the root
+/* builder_root_path(b, v, c, cb, r, forward): appends to the edge (and to r) the cells
+ * from vertex v's cell c (plane bit cb) to the root of its set (toward[]): from the root
  * to c when !forward (the start of an edge, c where it leaves the set: r starts
  * there), else from c to the root. */
-static void builder_root_path(Builder *b, int32_t c, int32_t cb, EdgeRun *r, bool forward)
+static void builder_root_path(Builder *b, int32_t v, int32_t c, int32_t cb, EdgeRun *r,
+                              bool forward)
 {
 	int32_t *p = b->pg->cells + b->count;
 	const int32_t w = b->pg->w, *dist2 = b->s->dist2;
 	const int32_t step[4] = {1, w, -1, -w};
 	const int32_t bstep[4] = {1, b->row_bits, -1, -b->row_bits};
 	int32_t n = 0, at = c, atb = cb;
-	for (;;) {
-		p[n++] = at;
-		const uint8_t t = b->toward[pathgraph_rank(b->plane, b->base, atb)];
-		if (t == 0)
-			break;
-		at += step[t - 1];
-		atb += bstep[t - 1];
-	}
+	p[n++] = at;
+	if (b->pg->vertices[v].set_size > 1) /* else c is the root: no toward to read */
+		for (;;) {
+			const uint8_t t = b->toward[pathgraph_rank(b->plane, b->base, atb)];
+			if (t == 0)
+				break;
+			at += step[t - 1];
+			atb += bstep[t - 1];
+			p[n++] = at;
+		}
 	int32_t i = 0;
 	if (!forward) {
 		for (int32_t lo = 0, hi = n - 1; lo < hi; lo++, hi--) {
@@ -475,19 +515,20 @@ static const int8_t PATHGRAPH_NEXT[4][16] = {
 #define PATHGRAPH_WALK_RANK(cb) pathgraph_rank(plane, base, cb)
 #endif
 
-/* builder_edge_from(b, v, c, d, stop): the edge leaving vertex v's cell c in direction
- * d, into a chain cell not yet walked: along the chain to the next cell that is not a
- * chain cell (of degree other than 2, so a vertex cell, step 1) or is stop (a loop
- * vertex's cell, builder_loops; else -1), measuring it on the way. Each chain cell's
- * record takes ref_base + its place in cells[] as its ref. */
-PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c, int d,
-                                               int32_t stop)
+/* builder_edge_from(b, v, c, cb, crk, d, stop): the edge leaving vertex v's cell c
+ * (plane bit cb, rank crk) in direction d, into a chain cell not yet walked: along the
+ * chain to the next cell that is not a chain cell (of degree other than 2, so a vertex
+ * cell, step 1) or is stop (a loop vertex's cell, builder_loops; else -1), measuring it
+ * on the way. Each chain cell's record takes ref_base + its place in cells[] as its
+ * ref. */
+PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c, int32_t cb,
+                                               int32_t crk, int d, int32_t stop)
 {
 	Pathgraph *pg = b->pg;
 	builder_reserve(b, (int64_t)b->chain_left + 2 * (int64_t)b->max_set + 2);
 	const int32_t first = b->count;
 	EdgeRun r;
-	builder_root_path(b, c, builder_bit(b, c), &r, false); /* from v's own cell to c */
+	builder_root_path(b, v, c, cb, &r, false); /* from v's own cell to c */
 	const int32_t w = pg->w, ref_base = b->ref_base, rb = b->row_bits;
 	const int32_t step[4] = {1, w, -1, -w};
 	const uint8_t *plane = b->plane;
@@ -495,7 +536,7 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	const int32_t *dist2 = b->s->dist2;
 	PathgraphCell *cell = b->cell;
 	int32_t *cells = pg->cells;
-	int32_t k = b->count, cur, cb, rk;
+	int32_t k = b->count, cur, rk;
 	/* r in locals (the stores to the records and cells could alias it); pend is the
 	 * direction of the step into the last cell when r.ready, else -1 */
 	int pend = -1;
@@ -506,8 +547,7 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	int32_t md = r.min_dist2;
 	double length = r.length;
 	cur = c;
-	cb = builder_bit(b, c);
-	rk = pathgraph_rank(plane, base, cb);
+	rk = crk;
 	/* A state for each direction of the step into cur, each adding its constants to
 	 * cur, its plane bit cb and (east and west) its rank rk, and a branch on the
 	 * direction on (the switch) rather than cur += step[next]: the branch predictor
@@ -556,8 +596,10 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 		}                                                                                  \
 		if (dist2[cur] < md)                                                               \
 			md = dist2[cur];                                                           \
-		if (next == (D))                                                                   \
+		if (next == (D)) {                                                                 \
+			PATHGRAPH_RUN_##D;                                                         \
 			goto walk_##D;                                                             \
+		}                                                                                  \
 		switch (next) {                                                                    \
 		case 0:                                                                            \
 			goto walk_0;                                                               \
@@ -569,6 +611,57 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 			goto walk_3;                                                               \
 		}                                                                                  \
 	}
+/* A run east or west: after a cell that goes on straight east (west), the cells on
+ * that are chain cells going on straight too (a skeleton cell with skeleton cells
+ * west and east and none north or south), found at once from 64 bits of the plane's
+ * rows (up to 56 of them), written and measured in a loop of their own: no mask, no
+ * table and no branch on the direction a cell. Not in a loop's walk (stop >= 0), so
+ * that none passes stop. The cell after the run is a step of its own. */
+#define PATHGRAPH_RUN_BODY(SIGN, D)                                                                \
+	if (n > 0) {                                                                               \
+		if (pend >= 0)                                                                     \
+			length += 1.0;                                                             \
+		pend = (D);                                                                        \
+		for (int j = 1; j < n; j++)                                                        \
+			length += 1.0;                                                             \
+		for (int j = 1; j <= n; j++) {                                                     \
+			const int32_t c2 = cur SIGN j;                                             \
+			cell[rk SIGN j].ref = ref_base + k;                                        \
+			cells[k++] = c2;                                                           \
+			if (dist2[c2] < md)                                                        \
+				md = dist2[c2];                                                    \
+		}                                                                                  \
+		cur = cur SIGN n;                                                                  \
+		cb = cb SIGN n;                                                                    \
+		rk = rk SIGN n;                                                                    \
+	}
+#define PATHGRAPH_RUN_0                                                                            \
+	if (stop < 0) {                                                                            \
+		const int32_t x = cb + 1;                                                          \
+		const uint8_t *p = plane + (x >> 3);                                               \
+		const unsigned sh = (unsigned)x & 7;                                               \
+		const uint64_t row = pathgraph_load64(p) >> sh;                                    \
+		const uint64_t side =                                                              \
+		    (pathgraph_load64(p + rowb) | pathgraph_load64(p - rowb)) >> sh;               \
+		const int n = pathgraph_ctz64(~(row & row >> 1 & ~side) | UINT64_C(1) << 56);      \
+		PATHGRAPH_RUN_BODY(+, 0)                                                           \
+	} else                                                                                     \
+		(void)0
+#define PATHGRAPH_RUN_2                                                                            \
+	if (stop < 0) {                                                                            \
+		const int32_t x = cb - 1;                                                          \
+		const uint8_t *p = plane + (x >> 3) - 7;                                           \
+		const unsigned sh = 7 - ((unsigned)x & 7);                                         \
+		const uint64_t row = pathgraph_load64(p) << sh;                                    \
+		const uint64_t side = (pathgraph_load64(p + rowb) | pathgraph_load64(p - rowb))    \
+		                      << sh;                                                       \
+		const int n = pathgraph_clz64(~(row & row << 1 & ~side) | UINT64_C(1) << 7);       \
+		PATHGRAPH_RUN_BODY(-, 2)                                                           \
+	} else                                                                                     \
+		(void)0
+#define PATHGRAPH_RUN_1 (void)0
+#define PATHGRAPH_RUN_3 (void)0
+	const size_t rowb = (size_t)rb / 8;
 	switch (d) {
 	case 0:
 		goto walk_0;
@@ -584,6 +677,11 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	PATHGRAPH_WALK_STEP(2, -1, -1, rk - 1)
 	PATHGRAPH_WALK_STEP(3, -w, -rb, PATHGRAPH_WALK_RANK(cb))
 #undef PATHGRAPH_WALK_STEP
+#undef PATHGRAPH_RUN_BODY
+#undef PATHGRAPH_RUN_0
+#undef PATHGRAPH_RUN_1
+#undef PATHGRAPH_RUN_2
+#undef PATHGRAPH_RUN_3
 walk_end:
 	/* a chain cell was walked (c's neighbour): the edge has two cells or more */
 	r = (EdgeRun){cells[k - 2], cells[k - 1], pend >= 0, length, md};
@@ -591,35 +689,21 @@ walk_end:
 	b->count = k;
 	const int32_t u = cell[rk].ref;
 	assert(u >= 0 && u < pg->vertex_count);
-	builder_root_path(b, cur, cb, &r, true);
+	builder_root_path(b, u, cur, cb, &r, true);
 	builder_end_edge(b, v, u, first, &r);
 }
 
-/* builder_vertex_at(b, i, d): the vertex whose first cell is i, of degree d != 2. */
-static void builder_vertex_at(Builder *b, int32_t i, int d)
+/* builder_vertex_at(b, i, cb, rk, d): the vertex whose first cell is i (plane bit cb,
+ * rank rk), of degree d != 2. */
+static void builder_vertex_at(Builder *b, int32_t i, int32_t cb, int32_t rk, int d)
 {
 	intlist_push(&b->vstart, b->vcells.count);
 	if (d >= 3) {
-		builder_junction_set(b, i);
+		builder_junction_set(b, i, cb, rk);
 	} else {
-		builder_add_vertex(b, i, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
+		builder_add_vertex(b, i, rk, d == 1 ? PATHGRAPH_END : PATHGRAPH_POINT);
 		intlist_push(&b->vcells, i);
 	}
-}
-
-/* pathgraph_ctz64(v): the index of the lowest bit set in v != 0. */
-static inline int pathgraph_ctz64(uint64_t v)
-{
-#if defined(__GNUC__)
-	return __builtin_ctzll(v);
-#else
-	int k = 0;
-	while (!(v & 1)) {
-		v >>= 1;
-		k++;
-	}
-	return k;
-#endif
 }
 
 /* builder_vertices(b): step (1). First, one pass over the skeleton's plane, 64 cells
@@ -656,17 +740,23 @@ static void builder_vertices(Builder *b, IntList *cand)
 			/* degree exactly 2: e + wst = s1 + 2 c1, nth + sth = s2 + 2 c2 */
 			const uint64_t s1 = e ^ wst, c1 = e & wst, s2 = nth ^ sth, c2 = nth & sth;
 			const uint64_t two = (s1 & s2 & ~(c1 | c2)) | (~(s1 | s2) & (c1 ^ c2));
-			for (uint64_t t = here & ~two; t; t &= t - 1)
-				intlist_push(cand, y * w + (j - 1) * 64 + pathgraph_ctz64(t));
+			/* each as its cell, plane bit and rank */
+			for (uint64_t t = here & ~two; t; t &= t - 1) {
+				const int z = pathgraph_ctz64(t);
+				intlist_push(cand, y * w + (j - 1) * 64 + z);
+				intlist_push(cand, (int32_t)(wi + (size_t)j) * 64 + z);
+				intlist_push(cand, rank - pathgraph_pop64(here >> z));
+			}
 		}
 	}
 	assert(rank == b->s->count);
 	memset(cell, 0xff, (size_t)rank * sizeof *cell); /* all PATHGRAPH_REF_NONE */
-	for (int k = 0; k < cand->count; k++) {
-		const int32_t i = cand->v[k], cb = builder_bit(b, i);
-		if (b->cell[pathgraph_rank(b->plane, base, cb)].ref == PATHGRAPH_REF_NONE)
+	for (int k = 0; k < cand->count; k += 3) {
+		const int32_t i = cand->v[k], cb = cand->v[k + 1], rk = cand->v[k + 2];
+		if (b->cell[rk].ref == PATHGRAPH_REF_NONE)
 			builder_vertex_at(
-			    b, i, PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb, b->row_bits)]);
+			    b, i, cb, rk,
+			    PATHGRAPH_POP4[pathgraph_plane_mask(b->plane, cb, b->row_bits)]);
 	}
 	intlist_push(&b->vstart, b->vcells.count);
 }
@@ -681,22 +771,23 @@ static void builder_edges(Builder *b)
 	for (int32_t v = 0; v < nv; v++)
 		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
 			const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
+			const int32_t crk = pathgraph_rank(b->plane, b->base, cb);
 			const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 			for (int d = 0; d < 4; d++) {
 				if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 					continue;
 				const int32_t nb = c + step[d];
-				int32_t ref = builder_cell(b, cb + bstep[d])->ref;
+				int32_t ref = b->cell[builder_near_rank(b, cb, crk, d)].ref;
 				if (ref == PATHGRAPH_REF_NONE) {
-					builder_edge_from(b, v, c, d, -1);
+					builder_edge_from(b, v, c, cb, crk, d, -1);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
 					/* two vertices' cells touching: an edge without chain cells
 					 */
 					builder_reserve(b, 2 * (int64_t)b->max_set);
 					int32_t first = b->count;
 					EdgeRun r;
-					builder_root_path(b, c, cb, &r, false);
-					builder_root_path(b, nb, cb + bstep[d], &r, true);
+					builder_root_path(b, v, c, cb, &r, false);
+					builder_root_path(b, ref, nb, cb + bstep[d], &r, true);
 					builder_end_edge(b, v, ref, first, &r);
 				}
 			}
@@ -727,13 +818,14 @@ static void builder_loops(Builder *b)
 				if (b->cell[rank].ref != PATHGRAPH_REF_NONE)
 					continue;
 				const int32_t i = y * w + (j - 1) * 64 + pathgraph_ctz64(here);
-				int32_t v = builder_add_vertex(b, i, PATHGRAPH_LOOP);
+				int32_t v = builder_add_vertex(b, i, rank, PATHGRAPH_LOOP);
 				b->chain_left--;
-				const unsigned m = builder_mask(b, i);
+				const int32_t cb = builder_bit(b, i);
+				const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 				int d = 0;
 				while (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 					d++;
-				builder_edge_from(b, v, i, d, i);
+				builder_edge_from(b, v, i, cb, rank, d, i);
 			}
 		}
 	}
