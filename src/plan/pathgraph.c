@@ -11,21 +11,23 @@
  *    plane word's first bit, and a popcount of the word does the rest.
  *    (0) One pass over the plane's words, the empty ones skipped: the table of ranks,
  *    and the cells of degree other than 2, by bit arithmetic on the word and the four
- *    around it. (1) Those cells are the vertex cells; 4-adjacent junction cells are
- *    merged into a junction set by flood fill, placed at its cell of largest dist2, and
- *    a breadth-first tree inside the set (toward: a byte a skeleton cell, by rank,
- *    written on vertex cells alone) leads from any of its cells to that one. (2) From every
- *    vertex cell, every skeleton neighbour that is an unvisited chain cell (degree 2)
- *    starts a walk along the chain to the next vertex cell: that chain is an edge. The
- *    walk reads each cell's neighbours from the plane (three 16-bit loads) and a table,
- *    keeps the cell's rank (a step east or west is one rank on; north or south a
- *    popcount) and measures the edge as it goes (length, clearance, the record's ref),
- *    so each chain cell is touched once. Two vertex cells of different vertices that
- *    touch are joined by an edge without chain cells. (3) Chain cells still unvisited
- *    lie on loops without a junction: the first of each in row-major order becomes a
- *    loop vertex and the loop an edge from it to itself. Vertices are numbered by
- *    their first cell in row-major order (loop vertices after the others), edges as
- *    found: the result depends on nothing else. A rebuild keeps every array.
+ *    around it, each with its plane bit and rank. (1) Those cells are the vertex cells;
+ *    4-adjacent junction cells are merged into a junction set by flood fill, placed at
+ *    its cell of largest dist2, and a breadth-first tree inside the set (toward: a byte
+ *    a skeleton cell, by rank, written on vertex cells alone) leads from any of its
+ *    cells to that one. (2) From every vertex cell, every skeleton neighbour that is an
+ *    unvisited chain cell (degree 2) starts a walk along the chain to the next vertex
+ *    cell: that chain is an edge. The walk reads each cell's neighbours from the plane
+ *    (three 16-bit loads) and a table, keeps the cell's rank (a step east or west is one
+ *    rank on; north or south a popcount), takes a straight run east or west at once
+ *    (its length from 64 bits of three rows) and measures the edge as it goes (length,
+ *    clearance, the record's ref), so each chain cell is touched once. Two vertex
+ *    cells of different vertices that touch are joined by an edge without chain cells.
+ *    (3) Chain cells still unvisited lie on loops without a junction: the first of
+ *    each in row-major order becomes a loop vertex and the loop an edge from it to
+ *    itself. Vertices are numbered by their first cell in row-major order (loop
+ *    vertices after the others), edges as found: the result depends on nothing else.
+ *    A rebuild keeps every array.
  * Query: S' and D' by breadth-first search over free cells from S and D (4-connected,
  *    the topology of skeleton.h), testing each skeleton cell met with the line test
  *    and stopping once no nearer visible cell can be met (a cell in sight at distance e
@@ -273,6 +275,27 @@ static inline unsigned pathgraph_plane_mask(const uint8_t *plane, int32_t cb, in
 static const uint8_t PATHGRAPH_MASK_BIT[4] = {2, 1, 0, 3};
 static const uint8_t PATHGRAPH_POP4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 
+/* On x86-64 Linux the build's steps (builder_vertices, builder_edges and the walk,
+ * builder_edge_from) are also compiled with the popcnt instruction, chosen at load
+ * time: a rank (pathgraph_rank: a vertex cell's, its neighbours' north and south, or a
+ * step north or south in the walk) counts bits, twelve instructions without it.
+ * PATHGRAPH_POPCOUNT is for those functions alone (elsewhere, GCC's builtin is a call
+ * on the default target). */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define PATHGRAPH_CLONES __attribute__((target_clones("popcnt", "default")))
+#define PATHGRAPH_POPCOUNT(x) ((int32_t)__builtin_popcountll(x))
+#else
+#define PATHGRAPH_CLONES
+#define PATHGRAPH_POPCOUNT(x) pathgraph_pop64(x)
+#endif
+
+/* builder_rank(b, cb): pathgraph_rank by PATHGRAPH_POPCOUNT (see there). */
+static inline int32_t builder_rank(const Builder *b, int32_t cb)
+{
+	const uint64_t word = pathgraph_load64(b->plane + 8 * (size_t)(cb >> 6));
+	return b->base[cb >> 6] + PATHGRAPH_POPCOUNT(word & ((UINT64_C(1) << (cb & 63)) - 1));
+}
+
 /* builder_bit(b, i): the plane bit of grid cell i (a division: for vertex cells, not
  * for every step of a walk, which carries its bit along). */
 static inline int32_t builder_bit(const Builder *b, int32_t i)
@@ -501,20 +524,6 @@ static const int8_t PATHGRAPH_NEXT[4][16] = {
     {-1, -1, -1, -1, -1, -1, -1, -1, -1, 2, 1, -1, 0, -1, -1, -1},
 };
 
-/* On x86-64 Linux the walk is also compiled with the popcnt instruction, chosen at
- * load time: a step north or south counts bits for its rank (pathgraph_rank), twelve
- * instructions without it. */
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
-#define PATHGRAPH_CLONES __attribute__((target_clones("popcnt", "default")))
-#define PATHGRAPH_WALK_RANK(cb)                                                                    \
-	(base[(cb) >> 6] +                                                                         \
-	 (int32_t)__builtin_popcountll(pathgraph_load64(plane + 8 * (size_t)((cb) >> 6)) &         \
-	                               ((UINT64_C(1) << ((cb)&63)) - 1)))
-#else
-#define PATHGRAPH_CLONES
-#define PATHGRAPH_WALK_RANK(cb) pathgraph_rank(plane, base, cb)
-#endif
-
 /* builder_edge_from(b, v, c, cb, crk, d, stop): the edge leaving vertex v's cell c
  * (plane bit cb, rank crk) in direction d, into a chain cell not yet walked: along the
  * chain to the next cell that is not a chain cell (of degree other than 2, so a vertex
@@ -672,11 +681,17 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	default:
 		goto walk_3;
 	}
+/* builder_rank with the walk's locals (b's fields could be stored to, for all the
+ * compiler knows, by the stores to the records and cells). */
+#define PATHGRAPH_WALK_RANK(cb)                                                                    \
+	(base[(cb) >> 6] + PATHGRAPH_POPCOUNT(pathgraph_load64(plane + 8 * (size_t)((cb) >> 6)) &  \
+	                                      ((UINT64_C(1) << ((cb)&63)) - 1)))
 	PATHGRAPH_WALK_STEP(0, 1, 1, rk + 1)
 	PATHGRAPH_WALK_STEP(1, w, rb, PATHGRAPH_WALK_RANK(cb))
 	PATHGRAPH_WALK_STEP(2, -1, -1, rk - 1)
 	PATHGRAPH_WALK_STEP(3, -w, -rb, PATHGRAPH_WALK_RANK(cb))
 #undef PATHGRAPH_WALK_STEP
+#undef PATHGRAPH_WALK_RANK
 #undef PATHGRAPH_RUN_BODY
 #undef PATHGRAPH_RUN_0
 #undef PATHGRAPH_RUN_1
@@ -714,7 +729,7 @@ static void builder_vertex_at(Builder *b, int32_t i, int32_t cb, int32_t rk, int
  * vertices, in row-major order of their first cell: a junction set's flood reaches
  * cells past the one it starts at, so it waits for every record. The grid itself is
  * not read. */
-static void builder_vertices(Builder *b, IntList *cand)
+PATHGRAPH_CLONES static void builder_vertices(Builder *b, IntList *cand)
 {
 	Pathgraph *pg = b->pg;
 	const int32_t w = pg->w, h = pg->h, words = skeleton_plane_words(w);
@@ -732,7 +747,7 @@ static void builder_vertices(Builder *b, IntList *cand)
 			const uint64_t here = pathgraph_load64(row + 8 * j);
 			if (here == 0)
 				continue;
-			rank += pathgraph_pop64(here);
+			rank += PATHGRAPH_POPCOUNT(here);
 			const uint64_t e = here >> 1 | pathgraph_load64(row + 8 * (j + 1)) << 63,
 			               wst = here << 1 | pathgraph_load64(row + 8 * (j - 1)) >> 63,
 			               nth = pathgraph_load64(above + 8 * j),
@@ -745,7 +760,7 @@ static void builder_vertices(Builder *b, IntList *cand)
 				const int z = pathgraph_ctz64(t);
 				intlist_push(cand, y * w + (j - 1) * 64 + z);
 				intlist_push(cand, (int32_t)(wi + (size_t)j) * 64 + z);
-				intlist_push(cand, rank - pathgraph_pop64(here >> z));
+				intlist_push(cand, rank - PATHGRAPH_POPCOUNT(here >> z));
 			}
 		}
 	}
@@ -762,7 +777,7 @@ static void builder_vertices(Builder *b, IntList *cand)
 }
 
 /* builder_edges(b): step (2), the chains between the vertices of step (1). */
-static void builder_edges(Builder *b)
+PATHGRAPH_CLONES static void builder_edges(Builder *b)
 {
 	Pathgraph *pg = b->pg;
 	const int32_t nv = pg->vertex_count;
@@ -771,13 +786,16 @@ static void builder_edges(Builder *b)
 	for (int32_t v = 0; v < nv; v++)
 		for (int k = b->vstart.v[v]; k < b->vstart.v[v + 1]; k++) {
 			const int32_t c = b->vcells.v[k], cb = builder_bit(b, c);
-			const int32_t crk = pathgraph_rank(b->plane, b->base, cb);
+			const int32_t crk = builder_rank(b, cb);
 			const unsigned m = pathgraph_plane_mask(b->plane, cb, b->row_bits);
 			for (int d = 0; d < 4; d++) {
 				if (!(m >> PATHGRAPH_MASK_BIT[d] & 1))
 					continue;
 				const int32_t nb = c + step[d];
-				int32_t ref = b->cell[builder_near_rank(b, cb, crk, d)].ref;
+				int32_t ref = b->cell[d == 0   ? crk + 1
+				                      : d == 2 ? crk - 1
+				                               : builder_rank(b, cb + bstep[d])]
+				                  .ref;
 				if (ref == PATHGRAPH_REF_NONE) {
 					builder_edge_from(b, v, c, cb, crk, d, -1);
 				} else if (ref >= 0 && ref < nv && ref != v && c < nb) {
