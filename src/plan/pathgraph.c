@@ -1,5 +1,6 @@
 /* pathgraph.c - the pathgraph of a skeleton (paper 4.3, Figure 3); finding paths on it is
- * pathfind.c. See pathgraph.h for what the vertices, edges and paths are.
+ * pathfind.c, checking and dumping it pathcheck.c. See pathgraph.h for what the
+ * vertices, edges and paths are.
  *
  * ALGORITHM
  * Build, from the skeleton's bit plane (Skeleton.plane, 64 cells a word, made by
@@ -140,11 +141,47 @@
  *    array): the same driver, medians of 3 rounds alternating with the build without
  *    it, loaded machine: Boston_0_1024 at 4096 2.65 -> 2.41 ms, den520d 1.31 -> 1.23,
  *    rooms 14.7 -> 13.5, rects 20.2 -> 18.5, the maze at 1024 3.11 -> 2.89 (16 rows
- *    on: 2.56, 1.27, 14.2, 19.1, 3.22). */
+ *    on: 2.56, 1.27, 14.2, 19.1, 3.22).
+ *    Then toward by rank (a byte a skeleton cell, not the grid: its loads at each
+ *    junction missed the caches after skeleton_compute, a quarter of step (1) on the
+ *    maze), the walk's runs east and west at once, the vertex cells' plane bits and
+ *    ranks carried from step (0) (no division, and a popcount only north or south),
+ *    the root path of a one-cell vertex without a load, and steps (0) to (2) with the
+ *    popcnt instruction. The same graph, array for array (a hash of every array and of
+ *    pathgraph_cell_ref of every cell, the ten bench grids). skelbench --compare DIR
+ *    MAP... (both sides), three sessions alternating with the build before, load 9-10
+ *    on 2 cores, the medians of the sessions' pg medians: 1024 rooms 0.62 -> 0.51 ms,
+ *    rects 0.91 -> 0.73, maze 2.92 -> 2.32, Boston_0_1024 0.48 -> 0.45, den520d 0.25
+ *    -> 0.24; 4096 rooms 12.0 -> 10.4, rects 17.5 -> 14.2, maze 53.7 -> 49.3,
+ *    Boston_0_1024 2.41 -> 2.20, den520d 1.24 -> 1.11. The maze at 1024 with --side
+ *    1024, five sessions alternating, load 8: 2.31 -> 1.92 ms (2.52 -> 2.14 in five
+ *    more). Its build with the caches warm (a driver building 31 times without the
+ *    skeleton between, medians) 1.50 ms, 6.0 ns a skeleton cell; just after the
+ *    skeleton on the loaded machine 1.9 to 2.4: issue 16's 2 ms is met on the maze only
+ *    in the quieter sessions. Its time (perf, warm): the walk 58%, its steps north and
+ *    south the most (each a new line of dist2), step (1) and the loop over the vertex
+ *    cells 27%. Floors, the least ns a skeleton cell reached: maze 6.0 (1024, warm),
+ *    11-12 (4096); rooms 16, rects 19 (4096: staircases, a turn a step); Boston_0_1024
+ *    8 (4096, warm) to 18 (in the sessions). 2 ms needs 0.5 ns a cell on the maze at
+ *    4096 (3 975 639 cells): less than the writing of its 12 bytes of output a cell
+ *    (cells, cell_edge and the record, 48 MB) and a tenth of one read pass over that
+ *    grid's bytes (5.6 ms): out of reach of any build that writes the graph. Rooms and
+ *    rects at 4096 need 3.2 and 2.8 ns a cell (631 557, 725 098 cells), a fifth of the
+ *    least reached there, about one mispredicted branch at the turn of each step:
+ *    out of reach of this walk. Boston_0_1024 at 4096 needs 16.8 (119 016 cells):
+ *    within 10% (2.11-2.23 ms in these sessions). Tried and dropped, the same graph,
+ *    no faster alternating: each skeleton cell's dist2 gathered in rank order in step
+ *    (0)'s pass (on the maze at 1024 the gather costs 0.22 ms; every dist2 load of the
+ *    walk costs 0.19, measured by leaving them out), and so not asked of
+ *    skeleton_compute's output loop either, whose gather would cost it as much (the
+ *    skeleton, 2.4-3.0 ms on that maze, is at its goal against scikit-image with no
+ *    margin); a run north or south a cell at a time; the corner's fourth cell free by
+ *    the last cell's dist2 > 2 (no load); a prefetch extrapolated from the cell 8
+ *    steps back, or 4 or 16 rows on; step (0)'s empty words told by a mask, without a
+ *    branch; the walk made twice, without the loop's stop test for steps (2). */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -935,86 +972,4 @@ int32_t pathgraph_cell_ref(const Pathgraph *pg, int32_t i)
 	if (!(plane[cb >> 3] >> (cb & 7) & 1))
 		return PATHGRAPH_REF_NONE;
 	return pg->scratch->cell_of[pathgraph_rank(plane, pg->scratch->rank_base, cb)].ref;
-}
-
-/* ---------------------------------------------------------------- validation */
-
-static bool pathgraph_adjacent(const Pathgraph *pg, int32_t a, int32_t b)
-{
-	int32_t dx = abs(pathgraph_cx(pg, a) - pathgraph_cx(pg, b));
-	int32_t dy = abs(pathgraph_cy(pg, a) - pathgraph_cy(pg, b));
-	return dx + dy == 1;
-}
-
-bool pathgraph_validate(const Pathgraph *pg)
-{
-	const Skeleton *s = pg->skeleton;
-	for (int32_t e = 0; e < pg->edge_count; e++) {
-		const PathgraphEdge *ed = &pg->edges[e];
-		if (ed->v0 < 0 || ed->v1 < 0 || ed->v0 >= pg->vertex_count ||
-		    ed->v1 >= pg->vertex_count || ed->count < 2)
-			return false;
-		const int32_t *c = pg->cells + ed->first;
-		const PathgraphVertex *a = &pg->vertices[ed->v0], *z = &pg->vertices[ed->v1];
-		if (c[0] != a->y * pg->w + a->x || c[ed->count - 1] != z->y * pg->w + z->x)
-			return false;
-		int32_t mind = INT32_MAX;
-		for (int32_t k = 0; k < ed->count; k++) {
-			if (!s->on[c[k]])
-				return false;
-			if (k > 0 && !pathgraph_adjacent(pg, c[k - 1], c[k]))
-				return false;
-			if (s->dist2[c[k]] < mind)
-				mind = s->dist2[c[k]];
-			int32_t ref = pathgraph_cell_ref(pg, c[k]);
-			bool inner_ok = ref == pg->vertex_count + ed->first + k ||
-			                (ref >= 0 && ref < pg->vertex_count);
-			if (!inner_ok)
-				return false;
-		}
-		if (mind != ed->min_dist2 ||
-		    fabs(ed->length - pathgraph_run_length(pg, c, ed->count, 1)) > 1e-9)
-			return false;
-	}
-	/* the plane the build read is the skeleton, and every skeleton cell is a vertex
-	 * cell or the edge cell its ref names */
-	for (int32_t y = 0; y < pg->h; y++)
-		for (int32_t x = 0; x < pg->w; x++) {
-			const int32_t i = y * pg->w + x;
-			const int64_t cb = skeleton_plane_bit(pg->w, x, y);
-			if ((s->plane[cb >> 3] >> (cb & 7) & 1) != (s->on[i] != 0))
-				return false;
-			const int32_t ref = pathgraph_cell_ref(pg, i);
-			if ((ref >= 0) != (s->on[i] != 0) ||
-			    ref >= pg->vertex_count + pg->cell_count ||
-			    (ref >= pg->vertex_count && pg->cells[ref - pg->vertex_count] != i))
-				return false;
-		}
-	for (int32_t v = 0; v < pg->vertex_count; v++)
-		for (int32_t k = pg->incident_start[v]; k < pg->incident_start[v + 1]; k++) {
-			const PathgraphEdge *ed = &pg->edges[pg->incident[k]];
-			if (ed->v0 != v && ed->v1 != v)
-				return false;
-		}
-	return true;
-}
-
-/* ---------------------------------------------------------------- dump */
-
-static const char *const PATHGRAPH_KIND_NAME[] = {"junction", "end", "loop", "point"};
-
-void pathgraph_dump(const Pathgraph *pg, FILE *out)
-{
-	fprintf(out, "pathgraph: %d vertices, %d edges\n", (int)pg->vertex_count,
-	        (int)pg->edge_count);
-	for (int32_t v = 0; v < pg->vertex_count; v++) {
-		const PathgraphVertex *p = &pg->vertices[v];
-		fprintf(out, "vertex %d %d %d %s %d %.3f\n", (int)v, (int)p->x, (int)p->y,
-		        PATHGRAPH_KIND_NAME[p->kind], (int)p->set_size, sqrt((double)p->dist2));
-	}
-	for (int32_t e = 0; e < pg->edge_count; e++) {
-		const PathgraphEdge *ed = &pg->edges[e];
-		fprintf(out, "edge %d %d %d %.3f %.3f %d\n", (int)e, (int)ed->v0, (int)ed->v1,
-		        ed->length, sqrt((double)ed->min_dist2), (int)ed->count);
-	}
 }
