@@ -90,7 +90,22 @@
  *    nearer than both neighbours (exact, no faster: its branch mispredicts as the
  *    pops did), one pop without a branch (slower: a longer dependency chain), the
  *    switch to the envelope at 96 or 128 (slower), phase 1's columns in signed lanes
- *    for SSE2 (1.7% fewer instructions, no faster). */
+ *    for SSE2 (1.7% fewer instructions, no faster).
+ *    Phase 1 for AVX2 too (issue 16's maze round, skel11): edt_down and edt_columns
+ *    compiled as the row pass is (edt_columns had been called from edt_row's AVX2
+ *    clone as a plain SSE2 function, 10-11% of the 1024 maze's skeleton with its
+ *    transform in perf), their 16-bit values loaded one by one through memcpy instead
+ *    of copied into a local array (in the AVX2 clone the copy's 16-byte stores, read
+ *    back as 32-byte vectors, stalled every block: with that copy the AVX2 edt_columns
+ *    made the maze's skeleton 3-5% slower, not faster). The same values (old and new
+ *    code in one process: 1500 random grids and the ten bench grids, dist2 compared).
+ *    The transform's share of skeleton_compute (an instrumented copy, mean of 100
+ *    calls, three runs alternating with the code before, loaded): at 1024 maze
+ *    0.88-0.94 -> 0.64-0.69 ms, rooms 1.14-1.22 -> 0.97-1.00, rects 1.23-1.29 ->
+ *    1.04-1.11, Boston_0_1024 1.39-1.46 -> 1.20-1.27, den520d 1.27-1.29 -> 1.02-1.13;
+ *    at 4096 (8 calls, two runs) maze 19.7-20.0 -> 17.6-17.9, Boston_0_1024 41.9-42.3
+ *    -> 39.3-41.0. Tried first: edt_columns inlined by force into edt_row (3-5% slower
+ *    on the maze's skeleton: the copy's stall above). */
 #include "edt_work.h"
 
 #include <assert.h>
@@ -417,12 +432,12 @@ static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
                                          uint16_t *restrict dn, uint16_t *restrict g,
                                          uint16_t *restrict sq)
 {
-	uint16_t up[EDT_BLOCK];
-	memcpy(up, up_bytes, sizeof up);
 	for (int i = 0; i < EDT_BLOCK; i++) {
-		const uint16_t d = up[i] ? (uint16_t)(dn[i] + 1) : 0;
+		uint16_t up;
+		memcpy(&up, up_bytes + 2 * i, sizeof up);
+		const uint16_t d = up ? (uint16_t)(dn[i] + 1) : 0;
 		dn[i] = d;
-		g[i] = d < up[i] ? d : up[i];
+		g[i] = d < up ? d : up;
 	}
 	uint16_t m = 0;
 	for (int i = 0; i < EDT_BLOCK; i++) {
@@ -432,19 +447,31 @@ static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
 	return m;
 }
 
-/* edt_down_block(cells, prev, row): phase 1 down the grid on one block: row = prev + 1
- * on a free cell, else 0. */
-static inline void edt_down_block(const uint8_t *restrict cells,
-                                  const unsigned char *restrict prev_bytes,
-                                  unsigned char *restrict row_bytes)
+/* edt_down(cells, prev, row, w): phase 1 down the grid on one row: row = prev + 1 on
+ * a free cell, else 0. Compiled for AVX2 too, as the row pass; the values are loaded
+ * and stored one by one through memcpy (vector loads and stores once compiled), not
+ * copied through a local array: under AVX2 that array's two 16-byte halves, stored
+ * and then read back as one 32-byte vector, stalled every block (no store
+ * forwarding). */
+EDT_CLONES EDT_NOINLINE static void edt_down(const uint8_t *restrict cells,
+                                             const unsigned char *restrict prev,
+                                             unsigned char *restrict row, int32_t w)
 {
-	uint16_t prev[EDT_BLOCK], row[EDT_BLOCK];
-	memcpy(prev, prev_bytes, sizeof prev);
-	for (int i = 0; i < EDT_BLOCK; i++) {
-		const uint16_t free_mask = (uint16_t)(0u - (cells[i] == GRID_FREE));
-		row[i] = (uint16_t)((prev[i] + 1) & free_mask);
+	const int32_t w32 = w - w % EDT_BLOCK;
+	for (int32_t x0 = 0; x0 < w32; x0 += EDT_BLOCK)
+		for (int i = 0; i < EDT_BLOCK; i++) {
+			uint16_t a;
+			memcpy(&a, prev + 2 * (x0 + i), sizeof a);
+			const uint16_t free_mask = (uint16_t)(0u - (cells[x0 + i] == GRID_FREE));
+			a = (uint16_t)((a + 1) & free_mask);
+			memcpy(row + 2 * (x0 + i), &a, sizeof a);
+		}
+	for (int32_t x = w32; x < w; x++) {
+		uint16_t a;
+		memcpy(&a, prev + 2 * x, sizeof a);
+		a = cells[x] == GRID_FREE ? (uint16_t)(a + 1) : 0;
+		memcpy(row + 2 * x, &a, sizeof a);
 	}
-	memcpy(row_bytes, row, sizeof row);
 }
 
 /* edt_columns(r, up): the end of phase 1 for one row (up: its distances to the
@@ -453,7 +480,7 @@ static inline void edt_down_block(const uint8_t *restrict cells,
  * with its clipped squares r->sq and each block's largest g. The loops over a block
  * have a fixed count, so that compilers vectorise them at -O2 (GCC 12's cheap cost
  * model takes only loops that need no scalar remainder). */
-static void edt_columns(EdtRow *r, const unsigned char *restrict up)
+EDT_CLONES EDT_NOINLINE static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 {
 	const int32_t w = r->w, full = w / EDT_BLOCK;
 	uint16_t *restrict dn = r->dn, *restrict g = r->g, *restrict most = r->most;
@@ -589,21 +616,10 @@ int32_t skeleton_edt_scratch(const Grid *gr, int32_t *dist2, uint16_t *up)
 	/* Phase 1 down the grid, row by row so that the loops run along memory: up is the
 	 * distance along the column to the nearest blocked cell above (row -1 is
 	 * blocked), 0 on a blocked cell. Blocks of a fixed count, as in edt_columns. */
-	const int32_t w16 = w - w % EDT_BLOCK;
-	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *restrict c = gr->cells + (size_t)y * w;
-		unsigned char *restrict row = above + 2 * (size_t)y * w;
-		const unsigned char *restrict prev =
-		    y > 0 ? above + 2 * (size_t)(y - 1) * w : (const unsigned char *)r.dn;
-		for (int32_t x0 = 0; x0 < w16; x0 += EDT_BLOCK)
-			edt_down_block(c + x0, prev + 2 * x0, row + 2 * x0);
-		for (int32_t x = w16; x < w; x++) {
-			uint16_t a;
-			memcpy(&a, prev + 2 * x, sizeof a);
-			a = c[x] == GRID_FREE ? (uint16_t)(a + 1) : 0;
-			memcpy(row + 2 * x, &a, sizeof a);
-		}
-	}
+	for (int32_t y = 0; y < h; y++)
+		edt_down(gr->cells + (size_t)y * w,
+		         y > 0 ? above + 2 * (size_t)(y - 1) * w : (const unsigned char *)r.dn,
+		         above + 2 * (size_t)y * w, w);
 	/* Then up the grid, row by row: the column distances of a row (edt_columns), made
 	 * and used at once by the row pass (no second pass over the grid). */
 	for (int32_t y = h - 1; y >= 0; y--) {
