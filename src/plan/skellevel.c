@@ -97,6 +97,23 @@
  * visits. */
 #define SKELLEVEL_ROUNDS 2
 
+/* The passes over the planes that cost most (skellevel_planes, the subfields,
+ * skellevel_next) are also compiled for x86-64-v3 (AVX2, BMI, POPCNT) on x86-64 Linux,
+ * chosen at load time as edt.c's row pass is: the row loops over words vectorise, and
+ * the counts and lowest bits are one instruction each. On the 1024 maze (issue 16's
+ * maze round, skel11) the planes and subfields took 0.45-0.47 ms -> 0.33-0.34 and
+ * skellevel_next 0.30 -> 0.26 (an instrumented copy, means of 200 calls in runs
+ * alternating with the code before); rooms, Boston_0_1024 and den520d 0.28-0.40 ->
+ * 0.22-0.32; the 4096 maze 7.6 -> 5.9 and 5.2 -> 4.9. Not kept: x86-64-v4 (AVX-512)
+ * too (skellevel_next 0.26 -> 0.31: a row of 17 words is short for 8-word vectors),
+ * AVX2 alone (skellevel_next 0.28), and clones of skellevel_state, _high and _rest (no
+ * faster; _rest 0.007 -> 0.013 ms). */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define SKELLEVEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define SKELLEVEL_CLONES
+#endif
+
 void skellevel_init(SkelLevel *lv)
 {
 	*lv = (SkelLevel){0};
@@ -170,7 +187,7 @@ static inline int32_t skellevel_count(uint64_t v)
 /* skellevel_planes(lv, g, max_high): set (the free cells), low and near, nlow and
  * nhigh (see SkelLevel) of g; the next levels' planes and `planed` when nhigh is at
  * most max_high. */
-static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
+SKELLEVEL_CLONES static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
 {
 	const int32_t w = g->w, h = g->h, words = lv->words;
 	uint64_t *const set = lv->set, *const low = lv->low, *const near = lv->near;
@@ -280,7 +297,7 @@ static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
  * and r + 1 are of the other row parity, and in row r of the other column parity, so
  * none changes during the sub-iteration. The ring of neighbours x0 .. x7 runs from
  * east counter-clockwise, north being row r + 1 (skeleton.c's order). */
-static void skellevel_subfield(SkelLevel *lv, int a, int b)
+SKELLEVEL_CLONES static void skellevel_subfield(SkelLevel *lv, int a, int b)
 {
 	const uint64_t parity = a == 0 ? 0x5555555555555555u : 0xaaaaaaaaaaaaaaaau;
 	const int32_t words = lv->words;
@@ -477,7 +494,7 @@ void skellevel_sync(SkelLevel *lv, const uint8_t *state)
 	}
 }
 
-int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
+SKELLEVEL_CLONES int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
                        int32_t *out)
 {
 	uint64_t spread[256];
