@@ -83,7 +83,27 @@
  *    about 150 a word) in about 0.40 ms, the visits of level 2 0.21 and the listing
  *    and sort of level 5 0.18, where listing, sorting and visiting the 307 751 higher
  *    cells took about 1.5 ms (0.57, 0.32 and 0.65); the whole skeleton 49.9 -> 39.5
- *    million instructions (skeleton.c's MEASURED). */
+ *    million instructions (skeleton.c's MEASURED).
+ *    Issue 16's maze round (skel11): skellevel_planes, the subfields and
+ *    skellevel_next compiled for x86-64-v3 too (SKELLEVEL_CLONES, below: 0.45 -> 0.34
+ *    ms and 0.30 -> 0.26 on the 1024 maze). With that round's changes to edt.c and
+ *    skelprune.c (their MEASURED) and the thinning's tables built once (skeleton.c),
+ *    the whole skeleton_compute, the same cell for cell (old and new code in one
+ *    process: 500 random grids and the 19 bench grids from 256 to 4096), medians of
+ *    41 calls alternating with the code before (9 at 4096), loaded: maze 256 0.159 ->
+ *    0.107 ms, 512 0.680 -> 0.507, 1024 2.92 -> 2.26 (1.28 times), 2048 12.1 -> 9.7,
+ *    4096 53.1 -> 42.1 (1.26 times); at 1024 rooms 6.30 -> 5.99, rects 6.93 -> 6.43,
+ *    Boston_0_1024 7.15 -> 6.69, den520d 5.20 -> 4.84; at 4096 rooms 139 -> 128,
+ *    rects 155 -> 149, Boston_0_1024 160 -> 149, den520d 103 -> 95. skelbench (best of
+ *    3, two runs each): the maze's ns a cell 2.75, 2.4-2.5, 2.6-2.7, 2.9-3.0, 3.0-3.1
+ *    at 256 .. 4096 before, 1.7, 1.7-1.85, 1.96-2.06, 2.22-2.25, 2.46-2.48 after (4096
+ *    over 1024: 1.13-1.18 before, 1.19-1.26 after: 1024 gained more). make
+ *    bench-compare SIDE=1024 (one run, loaded): the skeleton 5.88, 6.05, 2.20, 6.63 and
+ *    4.65 ms on rooms, rects, maze, Boston_0_1024 and den520d, scikit-image's
+ *    skeletonize 9.23, 13.4, 7.35, 19.5 and 19.9 times as long. Tried and not kept:
+ *    writing a word's first four cells to visit with no loop test in skellevel_next
+ *    (no faster), the planed level's cells told by its plane instead of dist2 in the
+ *    re-tries (no faster). */
 #include "skellevel.h"
 
 #include <assert.h>
