@@ -514,8 +514,13 @@ void skellevel_sync(SkelLevel *lv, const uint8_t *state)
 	}
 }
 
-SKELLEVEL_CLONES int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
-                       int32_t *out)
+/* skellevel_next_words: skellevel_next, in a static function of its own so that only
+ * it is multiversioned (Clang 14 names the dispatcher of an external function with
+ * target_clones apart from the callers' references in other files, which then do not
+ * link). */
+SKELLEVEL_CLONES static int32_t skellevel_next_words(const SkelLevel *lv, int j, uint8_t *state,
+                                                     uint8_t mark, uint64_t *ends,
+                                                     int32_t *out)
 {
 	uint64_t spread[256];
 	skellevel_spread(spread, mark);
@@ -594,4 +599,10 @@ SKELLEVEL_CLONES int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *sta
 		}
 	}
 	return count;
+}
+
+int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
+                       int32_t *out)
+{
+	return skellevel_next_words(lv, j, state, mark, ends, out);
 }
