@@ -7,7 +7,9 @@
  *    computing distance transforms in linear time" (Mathematical Morphology and its
  *    Applications to Image and Signal Processing, 2000). Phase 1 finds, for every cell,
  *    the distance g to the nearest blocked cell in its column: one pass down the grid
- *    (the distance to the blocked cell above, 16 bits a cell), then one pass up that
+ *    (the distance to the blocked cell above, 16 bits a cell; on a large grid by
+ *    bands of rows, each found again from the row kept above it when its turn comes,
+ *    so that they stay in the cache: edt_bands), then one pass up that
  *    takes the distance below and the minimum and hands each row at once to phase 2:
  *    dist2(x) = min over the columns u of (x - u)^2 + g(u)^2. Phase 2 goes by blocks of
  *    32 cells. A block whose cells are all near a blocked cell (a bound b from g and
@@ -27,7 +29,10 @@
  *    on x86-64 Linux the row pass is also compiled for AVX2 and chosen at load time.
  *
  * MEMORY  dist2 (4 bytes a cell); phase 1's column distances (2 bytes a cell) in the
- *    caller's scratch, or in dist2's own first half; a few arrays of one row.
+ *    caller's scratch, or in dist2's own first half; a few arrays of one row. By
+ *    bands (edt_bands: with the caller's scratch, or alone on grids of 2048 x 2048
+ *    and up), about 256 KB of them at a time and one row a band, in the caller's
+ *    scratch or about 1.5 MB of its own at 4096 a side.
  *
  * COMPLEXITY  O(w h) but for the windows: one pass down the grid and one up, each
  *    row's envelope pushing each column at most once; a window block costs b offsets
@@ -90,7 +95,37 @@
  *    nearer than both neighbours (exact, no faster: its branch mispredicts as the
  *    pops did), one pop without a branch (slower: a longer dependency chain), the
  *    switch to the envelope at 96 or 128 (slower), phase 1's columns in signed lanes
- *    for SSE2 (1.7% fewer instructions, no faster). */
+ *    for SSE2 (1.7% fewer instructions, no faster).
+ *    Phase 1 for AVX2 too (issue 16's maze round, skel11): edt_down and edt_columns
+ *    compiled as the row pass is (edt_columns had been called from edt_row's AVX2
+ *    clone as a plain SSE2 function, 10-11% of the 1024 maze's skeleton with its
+ *    transform in perf), their 16-bit values loaded one by one through memcpy instead
+ *    of copied into a local array (in the AVX2 clone the copy's 16-byte stores, read
+ *    back as 32-byte vectors, stalled every block: with that copy the AVX2 edt_columns
+ *    made the maze's skeleton 3-5% slower, not faster). The same values (old and new
+ *    code in one process: 1500 random grids and the ten bench grids, dist2 compared).
+ *    The transform's share of skeleton_compute (an instrumented copy, mean of 100
+ *    calls, three runs alternating with the code before, loaded): at 1024 maze
+ *    0.88-0.94 -> 0.64-0.69 ms, rooms 1.14-1.22 -> 0.97-1.00, rects 1.23-1.29 ->
+ *    1.04-1.11, Boston_0_1024 1.39-1.46 -> 1.20-1.27, den520d 1.27-1.29 -> 1.02-1.13;
+ *    at 4096 (8 calls, two runs) maze 19.7-20.0 -> 17.6-17.9, Boston_0_1024 41.9-42.3
+ *    -> 39.3-41.0. Tried first: edt_columns inlined by force into edt_row (3-5% slower
+ *    on the maze's skeleton: the copy's stall above).
+ *    Phase 1 by bands (edt_bands, same round): at 4096 a side its column distances
+ *    (32 MB) went to memory and back between the two passes; by bands of about 256 KB
+ *    they stay in the cache, for a second read of the cells (16 MB). The same values
+ *    (the harness above, also with bands of 1, 2, 5 rows and of 3000 bytes forced on
+ *    every grid, 1500 random grids each; test_skeleton's
+ *    edt_by_bands_equals_the_whole_grid). The transform inside skeleton_compute (the
+ *    instrumented copy, 8 calls, two runs alternating with the code before): 4096
+ *    maze 16.7-17.8 -> 13.4-15.2 ms, Boston_0_1024 41.4-43.7 -> 37.5-38.4; at 1024
+ *    no change beyond the noise (0.59-0.78 -> 0.56-0.64 on the maze, four runs).
+ *    skeleton_edt alone (medians of 7, alternating in one process) at 4096: maze
+ *    13.1 -> 11.4, Boston_0_1024 33.3 -> 31.0, rooms 16.7 -> 14.5, rects 17.7 ->
+ *    15.4, den520d 25.5 -> 23.6; at 1024 unchanged (not by bands: EDT_BANDS_ALONE).
+ *    Bands of 64 KB, 128 KB and 512 KB: within the noise of 256 KB at 1024 and 4096
+ *    (512 KB 5% better at 4096 on the maze; 256 KB kept for caches of 512 KB a
+ *    core). */
 #include "edt_work.h"
 
 #include <assert.h>
@@ -417,12 +452,12 @@ static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
                                          uint16_t *restrict dn, uint16_t *restrict g,
                                          uint16_t *restrict sq)
 {
-	uint16_t up[EDT_BLOCK];
-	memcpy(up, up_bytes, sizeof up);
 	for (int i = 0; i < EDT_BLOCK; i++) {
-		const uint16_t d = up[i] ? (uint16_t)(dn[i] + 1) : 0;
+		uint16_t up;
+		memcpy(&up, up_bytes + 2 * i, sizeof up);
+		const uint16_t d = up ? (uint16_t)(dn[i] + 1) : 0;
 		dn[i] = d;
-		g[i] = d < up[i] ? d : up[i];
+		g[i] = d < up ? d : up;
 	}
 	uint16_t m = 0;
 	for (int i = 0; i < EDT_BLOCK; i++) {
@@ -432,19 +467,31 @@ static inline uint16_t edt_columns_block(const unsigned char *restrict up_bytes,
 	return m;
 }
 
-/* edt_down_block(cells, prev, row): phase 1 down the grid on one block: row = prev + 1
- * on a free cell, else 0. */
-static inline void edt_down_block(const uint8_t *restrict cells,
-                                  const unsigned char *restrict prev_bytes,
-                                  unsigned char *restrict row_bytes)
+/* edt_down(cells, prev, row, w): phase 1 down the grid on one row: row = prev + 1 on
+ * a free cell, else 0. Compiled for AVX2 too, as the row pass; the values are loaded
+ * and stored one by one through memcpy (vector loads and stores once compiled), not
+ * copied through a local array: under AVX2 that array's two 16-byte halves, stored
+ * and then read back as one 32-byte vector, stalled every block (no store
+ * forwarding). */
+EDT_CLONES EDT_NOINLINE static void edt_down(const uint8_t *restrict cells,
+                                             const unsigned char *restrict prev,
+                                             unsigned char *restrict row, int32_t w)
 {
-	uint16_t prev[EDT_BLOCK], row[EDT_BLOCK];
-	memcpy(prev, prev_bytes, sizeof prev);
-	for (int i = 0; i < EDT_BLOCK; i++) {
-		const uint16_t free_mask = (uint16_t)(0u - (cells[i] == GRID_FREE));
-		row[i] = (uint16_t)((prev[i] + 1) & free_mask);
+	const int32_t w32 = w - w % EDT_BLOCK;
+	for (int32_t x0 = 0; x0 < w32; x0 += EDT_BLOCK)
+		for (int i = 0; i < EDT_BLOCK; i++) {
+			uint16_t a;
+			memcpy(&a, prev + 2 * (x0 + i), sizeof a);
+			const uint16_t free_mask = (uint16_t)(0u - (cells[x0 + i] == GRID_FREE));
+			a = (uint16_t)((a + 1) & free_mask);
+			memcpy(row + 2 * (x0 + i), &a, sizeof a);
+		}
+	for (int32_t x = w32; x < w; x++) {
+		uint16_t a;
+		memcpy(&a, prev + 2 * x, sizeof a);
+		a = cells[x] == GRID_FREE ? (uint16_t)(a + 1) : 0;
+		memcpy(row + 2 * x, &a, sizeof a);
 	}
-	memcpy(row_bytes, row, sizeof row);
 }
 
 /* edt_columns(r, up): the end of phase 1 for one row (up: its distances to the
@@ -453,7 +500,7 @@ static inline void edt_down_block(const uint8_t *restrict cells,
  * with its clipped squares r->sq and each block's largest g. The loops over a block
  * have a fixed count, so that compilers vectorise them at -O2 (GCC 12's cheap cost
  * model takes only loops that need no scalar remainder). */
-static void edt_columns(EdtRow *r, const unsigned char *restrict up)
+EDT_CLONES EDT_NOINLINE static void edt_columns(EdtRow *r, const unsigned char *restrict up)
 {
 	const int32_t w = r->w, full = w / EDT_BLOCK;
 	uint16_t *restrict dn = r->dn, *restrict g = r->g, *restrict most = r->most;
@@ -547,6 +594,83 @@ EDT_CLONES static int32_t edt_row(EdtRow *r, const unsigned char *up, int32_t *o
 	return largest;
 }
 
+/* Phase 1 by bands of rows, each about EDT_BAND_BYTES of column distances (2 bytes
+ * a cell), at least EDT_BAND_MIN rows: see edt_bands. */
+#ifndef EDT_BAND_BYTES
+#define EDT_BAND_BYTES (256 * 1024)
+#endif
+#ifndef EDT_BAND_MIN
+#define EDT_BAND_MIN 8
+#endif
+
+/* skeleton_edt (no caller's scratch) goes by bands, with scratch of its own, when
+ * phase 1's distances would take this many bytes or more (a grid of 2048 x 2048 and
+ * up); on a smaller grid they stay in dist2's first half, with no allocation. */
+#ifndef EDT_BANDS_ALONE
+#define EDT_BANDS_ALONE (8u << 20)
+#endif
+
+/* edt_band_rows(w): the rows of a band, for rows of w cells. */
+static int32_t edt_band_rows(int32_t w)
+{
+	const int32_t rows = EDT_BAND_BYTES / (2 * (w > 0 ? w : 1));
+	return rows > EDT_BAND_MIN ? rows : EDT_BAND_MIN;
+}
+
+/* edt_bands(gr, r, band, bands, scratch, dist2): both phases by bands of `band` rows
+ * (bands of them, the last one shorter), so that the column distances of phase 1
+ * stay in the cache until the row pass reads them instead of going to memory and
+ * back (2 bytes a cell each way, besides dist2's 4 written: at 4096 a side 32 MB,
+ * where the caches hold 1 MB a core and 32 MB in all). First down the grid with two
+ * rows of distances, keeping each band's last row; then, from the top band's up to
+ * the first, each band's distances again from the row kept above it (rows of zeros,
+ * a blocked row, above the first band), down the band, and the row pass up it (the
+ * distance below and the row below's bounds carried from band to band, as from row
+ * to row). The same values as phase 1 over the whole grid: each row's distances are
+ * the same numbers, found once more. The cells are read twice, 1 byte a cell. scratch
+ * holds (bands + 2 band) rows of 2 w bytes (the kept rows, then the band's, the
+ * first two of which serve the first pass); returns the largest dist2. */
+static int32_t edt_bands(const Grid *gr, EdtRow *r, int32_t band, int32_t bands,
+                         unsigned char *scratch, int32_t *dist2)
+{
+	const int32_t w = gr->w, h = gr->h;
+	const size_t row_bytes = 2 * (size_t)w;
+	unsigned char *kept = scratch, *buf = scratch + (size_t)bands * row_bytes;
+	/* rows of zeros, a blocked row above the grid: buf's last row, cleared here for
+	 * the first pass and again after it (which uses buf's first two rows; the bands'
+	 * pass uses band rows at most) */
+	unsigned char *zero = buf + (size_t)(2 * band - 1) * row_bytes;
+	memset(zero, 0, row_bytes);
+	const unsigned char *prev = zero;
+	for (int32_t b = 0; b < bands; b++) {
+		const int32_t y1 = (b + 1) * band < h ? (b + 1) * band : h;
+		for (int32_t y = b * band; y < y1; y++) {
+			unsigned char *row = buf + (size_t)(y & 1) * row_bytes;
+			edt_down(gr->cells + (size_t)y * w, prev, row, w);
+			prev = row;
+		}
+		memcpy(kept + (size_t)b * row_bytes, prev, row_bytes);
+		prev = kept + (size_t)b * row_bytes;
+	}
+	memset(zero, 0, row_bytes);
+	int32_t largest = 0;
+	for (int32_t b = bands - 1; b >= 0; b--) {
+		const int32_t y0 = b * band, y1 = (b + 1) * band < h ? (b + 1) * band : h;
+		prev = b > 0 ? kept + (size_t)(b - 1) * row_bytes : zero;
+		for (int32_t y = y0; y < y1; y++) {
+			unsigned char *row = buf + (size_t)(y - y0) * row_bytes;
+			edt_down(gr->cells + (size_t)y * w, prev, row, w);
+			prev = row;
+		}
+		for (int32_t y = y1 - 1; y >= y0; y--) {
+			const int32_t most =
+			    edt_row(r, buf + (size_t)(y - y0) * row_bytes, dist2 + (size_t)y * w);
+			largest = most > largest ? most : largest;
+		}
+	}
+	return largest;
+}
+
 /* skeleton_edt_scratch(g, dist2, up): skeleton_edt with up as scratch of 2 w h bytes,
  * or NULL to use dist2's own memory (see below). It once also counted each dist2
  * value for the thinning's sort; counting here stalled on its own stores (skeleton.c,
@@ -588,28 +712,34 @@ int32_t skeleton_edt_scratch(const Grid *gr, int32_t *dist2, uint16_t *up)
 	r.v.D = util_alloc(n, sizeof *r.v.D);
 	/* Phase 1 down the grid, row by row so that the loops run along memory: up is the
 	 * distance along the column to the nearest blocked cell above (row -1 is
-	 * blocked), 0 on a blocked cell. Blocks of a fixed count, as in edt_columns. */
-	const int32_t w16 = w - w % EDT_BLOCK;
-	for (int32_t y = 0; y < h; y++) {
-		const uint8_t *restrict c = gr->cells + (size_t)y * w;
-		unsigned char *restrict row = above + 2 * (size_t)y * w;
-		const unsigned char *restrict prev =
-		    y > 0 ? above + 2 * (size_t)(y - 1) * w : (const unsigned char *)r.dn;
-		for (int32_t x0 = 0; x0 < w16; x0 += EDT_BLOCK)
-			edt_down_block(c + x0, prev + 2 * x0, row + 2 * x0);
-		for (int32_t x = w16; x < w; x++) {
-			uint16_t a;
-			memcpy(&a, prev + 2 * x, sizeof a);
-			a = c[x] == GRID_FREE ? (uint16_t)(a + 1) : 0;
-			memcpy(row + 2 * x, &a, sizeof a);
+	 * blocked), 0 on a blocked cell. Blocks of a fixed count, as in edt_columns. With
+	 * the caller's scratch, by bands (edt_bands); else over the whole grid, then up
+	 * it. */
+	const int32_t band = edt_band_rows(w);
+	const int32_t bands = (h + band - 1) / band;
+	const size_t band_bytes = ((size_t)bands + 2 * (size_t)band) * 2 * (size_t)w;
+	if (up && (int64_t)bands + 2 * band <= h) {
+		largest = edt_bands(gr, &r, band, bands, above, dist2);
+	} else if (!up && 2 * (size_t)w * (size_t)h >= EDT_BANDS_ALONE) {
+		/* the transform alone on a large grid: the bands' own scratch (about 1.5 MB
+		 * at 4096 a side) costs less than the traffic it saves */
+		unsigned char *scratch = util_alloc(band_bytes, 1);
+		largest = edt_bands(gr, &r, band, bands, scratch, dist2);
+		free(scratch);
+	} else {
+		for (int32_t y = 0; y < h; y++)
+			edt_down(gr->cells + (size_t)y * w,
+			         y > 0 ? above + 2 * (size_t)(y - 1) * w
+			               : (const unsigned char *)r.dn,
+			         above + 2 * (size_t)y * w, w);
+		/* Then up the grid, row by row: the column distances of a row
+		 * (edt_columns), made and used at once by the row pass (no second pass
+		 * over the grid). */
+		for (int32_t y = h - 1; y >= 0; y--) {
+			int32_t *out = dist2 + (size_t)y * w;
+			const int32_t most = edt_row(&r, above + 2 * (size_t)y * w, out);
+			largest = most > largest ? most : largest;
 		}
-	}
-	/* Then up the grid, row by row: the column distances of a row (edt_columns), made
-	 * and used at once by the row pass (no second pass over the grid). */
-	for (int32_t y = h - 1; y >= 0; y--) {
-		int32_t *out = dist2 + (size_t)y * w;
-		const int32_t most = edt_row(&r, above + 2 * (size_t)y * w, out);
-		largest = most > largest ? most : largest;
 	}
 	free(r.v.u);
 	free(r.v.G);

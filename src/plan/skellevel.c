@@ -83,7 +83,27 @@
  *    about 150 a word) in about 0.40 ms, the visits of level 2 0.21 and the listing
  *    and sort of level 5 0.18, where listing, sorting and visiting the 307 751 higher
  *    cells took about 1.5 ms (0.57, 0.32 and 0.65); the whole skeleton 49.9 -> 39.5
- *    million instructions (skeleton.c's MEASURED). */
+ *    million instructions (skeleton.c's MEASURED).
+ *    Issue 16's maze round (skel11): skellevel_planes, the subfields and
+ *    skellevel_next compiled for x86-64-v3 too (SKELLEVEL_CLONES, below: 0.45 -> 0.34
+ *    ms and 0.30 -> 0.26 on the 1024 maze). With that round's changes to edt.c and
+ *    skelprune.c (their MEASURED) and the thinning's tables built once (skeleton.c),
+ *    the whole skeleton_compute, the same cell for cell (old and new code in one
+ *    process: 500 random grids and the 19 bench grids from 256 to 4096), medians of
+ *    41 calls alternating with the code before (9 at 4096), loaded: maze 256 0.159 ->
+ *    0.107 ms, 512 0.680 -> 0.507, 1024 2.92 -> 2.26 (1.28 times), 2048 12.1 -> 9.7,
+ *    4096 53.1 -> 42.1 (1.26 times); at 1024 rooms 6.30 -> 5.99, rects 6.93 -> 6.43,
+ *    Boston_0_1024 7.15 -> 6.69, den520d 5.20 -> 4.84; at 4096 rooms 139 -> 128,
+ *    rects 155 -> 149, Boston_0_1024 160 -> 149, den520d 103 -> 95. skelbench (best of
+ *    3, two runs each): the maze's ns a cell 2.75, 2.4-2.5, 2.6-2.7, 2.9-3.0, 3.0-3.1
+ *    at 256 .. 4096 before, 1.7, 1.7-1.85, 1.96-2.06, 2.22-2.25, 2.46-2.48 after (4096
+ *    over 1024: 1.13-1.18 before, 1.19-1.26 after: 1024 gained more). make
+ *    bench-compare SIDE=1024 (one run, loaded): the skeleton 5.88, 6.05, 2.20, 6.63 and
+ *    4.65 ms on rooms, rects, maze, Boston_0_1024 and den520d, scikit-image's
+ *    skeletonize 9.23, 13.4, 7.35, 19.5 and 19.9 times as long. Tried and not kept:
+ *    writing a word's first four cells to visit with no loop test in skellevel_next
+ *    (no faster), the planed level's cells told by its plane instead of dist2 in the
+ *    re-tries (no faster). */
 #include "skellevel.h"
 
 #include <assert.h>
@@ -96,6 +116,23 @@
  * subfields made deletable (a corner a corridor turns), the rest is left to the
  * visits. */
 #define SKELLEVEL_ROUNDS 2
+
+/* The passes over the planes that cost most (skellevel_planes, the subfields,
+ * skellevel_next) are also compiled for x86-64-v3 (AVX2, BMI, POPCNT) on x86-64 Linux,
+ * chosen at load time as edt.c's row pass is: the row loops over words vectorise, and
+ * the counts and lowest bits are one instruction each. On the 1024 maze (issue 16's
+ * maze round, skel11) the planes and subfields took 0.45-0.47 ms -> 0.33-0.34 and
+ * skellevel_next 0.30 -> 0.26 (an instrumented copy, means of 200 calls in runs
+ * alternating with the code before); rooms, Boston_0_1024 and den520d 0.28-0.40 ->
+ * 0.22-0.32; the 4096 maze 7.6 -> 5.9 and 5.2 -> 4.9. Not kept: x86-64-v4 (AVX-512)
+ * too (skellevel_next 0.26 -> 0.31: a row of 17 words is short for 8-word vectors),
+ * AVX2 alone (skellevel_next 0.28), and clones of skellevel_state, _high and _rest (no
+ * faster; _rest 0.007 -> 0.013 ms). */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#define SKELLEVEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define SKELLEVEL_CLONES
+#endif
 
 void skellevel_init(SkelLevel *lv)
 {
@@ -170,7 +207,7 @@ static inline int32_t skellevel_count(uint64_t v)
 /* skellevel_planes(lv, g, max_high): set (the free cells), low and near, nlow and
  * nhigh (see SkelLevel) of g; the next levels' planes and `planed` when nhigh is at
  * most max_high. */
-static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
+SKELLEVEL_CLONES static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
 {
 	const int32_t w = g->w, h = g->h, words = lv->words;
 	uint64_t *const set = lv->set, *const low = lv->low, *const near = lv->near;
@@ -280,7 +317,7 @@ static void skellevel_planes(SkelLevel *lv, const Grid *g, int32_t max_high)
  * and r + 1 are of the other row parity, and in row r of the other column parity, so
  * none changes during the sub-iteration. The ring of neighbours x0 .. x7 runs from
  * east counter-clockwise, north being row r + 1 (skeleton.c's order). */
-static void skellevel_subfield(SkelLevel *lv, int a, int b)
+SKELLEVEL_CLONES static void skellevel_subfield(SkelLevel *lv, int a, int b)
 {
 	const uint64_t parity = a == 0 ? 0x5555555555555555u : 0xaaaaaaaaaaaaaaaau;
 	const int32_t words = lv->words;
@@ -477,8 +514,13 @@ void skellevel_sync(SkelLevel *lv, const uint8_t *state)
 	}
 }
 
-int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
-                       int32_t *out)
+/* skellevel_next_words: skellevel_next, in a static function of its own so that only
+ * it is multiversioned (Clang 14 names the dispatcher of an external function with
+ * target_clones apart from the callers' references in other files, which then do not
+ * link). */
+SKELLEVEL_CLONES static int32_t skellevel_next_words(const SkelLevel *lv, int j, uint8_t *state,
+                                                     uint8_t mark, uint64_t *ends,
+                                                     int32_t *out)
 {
 	uint64_t spread[256];
 	skellevel_spread(spread, mark);
@@ -557,4 +599,10 @@ int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark,
 		}
 	}
 	return count;
+}
+
+int32_t skellevel_next(const SkelLevel *lv, int j, uint8_t *state, uint8_t mark, uint64_t *ends,
+                       int32_t *out)
+{
+	return skellevel_next_words(lv, j, state, mark, ends, out);
 }

@@ -54,11 +54,14 @@ typedef struct Thinner {
 	                 * once: the only cells that can be end points when the visits
 	                 * are over (thinner_prune) */
 	int32_t ends_words;
-	uint64_t *recheck;    /* ends_words words, zero but in thinner_prune: the cells to
-	                       * test again after the spurs are removed */
+	uint64_t *recheck;    /* ends_words + 1 words, zero but in thinner_prune: the cells
+	                       * to test again after the spurs are removed (the word past
+	                       * the state's cells stays zero: thinner_prune) */
 	const int32_t *dist2; /* w * h, unpadded */
-	uint8_t kind[1u << THIN_RASTER]; /* THIN_* of each raster mask */
-	uint8_t ring[1u << THIN_RASTER]; /* the neighbourhood mask (bit i: neighbour i) */
+	const uint8_t *kind; /* 1 << THIN_RASTER: THIN_* of each raster mask */
+	const uint8_t *ring; /* 1 << THIN_RASTER: the neighbourhood mask (bit i: neighbour
+	                      * i); both built once for a Skeleton's working space
+	                      * (skeleton.c), not at every call */
 	int32_t doff[8];                 /* unpadded index offsets of the 8 neighbours (in dist2) */
 	uint64_t row_mul;                /* pi / pw as (pi * row_mul) >> row_shift (thinner_row) */
 	unsigned row_shift;

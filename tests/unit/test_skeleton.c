@@ -140,6 +140,42 @@ TEST_CASE(edt_equals_brute_force_on_wide_open_grids)
 	}
 }
 
+/* The skeleton's transform takes phase 1 by bands of rows on grids tall enough for
+ * two bands and more (edt.c, edt_bands: about 256 KB of 16-bit column distances a
+ * band, so 1872 rows of 70 cells), the transform alone over the whole grid at these
+ * sizes: the two must agree cell for cell (a last band shorter than the others
+ * included), and both with the definition on cells picked at random; the grids
+ * from few blocked cells to many, the free runs down the columns up to the grid's
+ * height. */
+TEST_CASE(edt_by_bands_equals_the_whole_grid)
+{
+	oracle_seed = 11;
+	const int sizes[][4] = {{70, 4200, 3, 6}, {130, 2100, 0, 9}, {67, 3900, 20, 2}};
+	for (int k = 0; k < 3; k++) {
+		Grid g;
+		oracle_random_grid(&g, sizes[k][0], sizes[k][1], sizes[k][2], sizes[k][3]);
+		const size_t n = (size_t)g.w * (size_t)g.h;
+		int32_t *d = malloc(sizeof(int32_t) * n);
+		const int32_t largest = skeleton_edt(&g, d);
+		Skeleton s;
+		skeleton_init(&s);
+		skeleton_compute(&s, &g);
+		TEST_CHECK(memcmp(d, s.dist2, sizeof(int32_t) * n) == 0);
+		int32_t most = 0;
+		for (size_t i = 0; i < n; i++)
+			most = s.dist2[i] > most ? s.dist2[i] : most;
+		TEST_CHECK(most == largest);
+		for (int t = 0; t < 60; t++) {
+			const int x = oracle_rand_below(g.w), y = oracle_rand_below(g.h);
+			TEST_CHECK(s.dist2[(size_t)y * g.w + x] == brute_edt_at(&g, x, y));
+		}
+		TEST_CHECK(skeleton_validate(&s, &g));
+		skeleton_free(&s);
+		free(d);
+		grid_free(&g);
+	}
+}
+
 /* topology_matches(g, s): per free 4-component, exactly one skeleton 4-component,
  * and the same number of holes (each counted on that component alone). */
 static bool topology_matches(const Grid *g, const Skeleton *s)
@@ -445,6 +481,7 @@ int main(void)
 	TEST_RUN(edt_equals_brute_force_on_random_grids);
 	TEST_RUN(edt_all_free_all_blocked_and_thin_grids);
 	TEST_RUN(edt_equals_brute_force_on_wide_open_grids);
+	TEST_RUN(edt_by_bands_equals_the_whole_grid);
 	TEST_RUN(skeleton_topology_on_random_grids);
 	TEST_RUN(skeleton_topology_across_word_boundaries);
 	TEST_RUN(skeleton_2x2_blocks_only_pinwheels);
