@@ -355,9 +355,12 @@ static void arrive(Controller *c)
 			c->room_look = true; /* the next goal: a look at the door's coarse side */
 		else if (corner_frontier(c))
 			; /* the room seen in part: the next goal is a look at its unseen side */
-		else if (corner_room_doubt(c) != ROOMDOUBT_LOOK && !goals_corner_hidden(c) && !corner_hall_split(c))
+		else if (corner_room_doubt(c) == ROOMDOUBT_LOOK)
+			; /* not sure of the room: the next goal is a look at the wall between */
+		else if (hallsplit_hidden_look(c))
+			c->room_look = true; /* the next goal: a look at what may join a better floor */
+		else if (!goals_corner_hidden(c) && !corner_hall_split(c))
 			c->phase = PHASE_DONE; /* (goals_corner_hidden and corner_hall_split fail it, with his doubt) */
-		/* else not sure of the room: the next goal is a look at the wall between */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

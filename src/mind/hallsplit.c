@@ -19,11 +19,18 @@
  * the nearest by steps with a way to it (hs_way: beside it for touch, or a look)
  * is gone to, and its rectangle remembered. With none left that parts it, the
  * claim is still checked on the watershed (hs_beaten).
+ * Looking (hs_unseen_look): where hs_beaten finds floor that beats the claim in
+ * the start's watershed room, the way to it crossing the fewest squares not seen
+ * in the fovea (hallsplit_fewest, a 0-1 breadth-first search); the first such
+ * square along it from Utak that can be looked at is gone to. And before the
+ * hidden-floor doubt (roomdoubt_hidden), a look at the coarse squares that may join
+ * that floor to the start's room (hallsplit_hidden_look); both within HALL_LOOKS.
  * MEMORY: one room map of the screen at a time, freed before the next; the
  * watershed 17 bytes a screen cell while it works.
  * COMPLEXITY: the rule O(w h log(w h)) for each object node not felt; settling
  * O(S w h log(w h)) for S suspects, only on the arrivals of a task whose claim the
- * rule doubted. */
+ * rule doubted; a look O(w h log(w h)) for the watershed and O(w h) for the search,
+ * and O(w h) goals_near for each square of the way tried. */
 #include "utak/mind/hallsplit.h"
 
 #include <math.h>
@@ -36,6 +43,7 @@
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
+#include "utak/mind/roomdoubt.h"
 
 bool hallsplit_parts(const Controller *c, Vec2 p, Vec2 *at)
 {
@@ -284,6 +292,145 @@ static bool hs_beaten(const Controller *c, Vec2 p, Vec2 *beat, bool *out)
 	return *out || (best != INT64_MIN && best - got > CONTROLLER_CORNER_SLACK);
 }
 
+int32_t hallsplit_fewest(int32_t w, int32_t h, const bool *pass, const bool *costly, int64_t u, int64_t b,
+			 int64_t *from)
+{
+	int64_t n = (int64_t)w * h;
+	if (u < 0 || b < 0 || u >= n || b >= n || !pass[u] || !pass[b])
+		return -1;
+	/* 0-1 breadth-first search: the queue of cost L, and the next's (L + 1); a
+	 * cell is queued only when its cost drops, at most once into each level it
+	 * can take, so each queue holds at most 2 n. */
+	int32_t *cost = util_alloc((size_t)n, sizeof *cost);
+	int64_t *cur = util_alloc((size_t)n * 2, sizeof *cur), *next = util_alloc((size_t)n * 2, sizeof *next);
+	for (int64_t q = 0; q < n; q++)
+		cost[q] = INT32_MAX;
+	int64_t nc = 0, nn = 0;
+	cost[u] = 0;
+	from[u] = -1;
+	cur[nc++] = u;
+	for (int32_t level = 0; nc > 0 && cost[b] == INT32_MAX; level++) {
+		for (int64_t k = 0; k < nc; k++) {
+			int64_t q = cur[k];
+			if (cost[q] != level)
+				continue; /* bettered since it was queued */
+			int32_t i = (int32_t)(q % w), j = (int32_t)(q / w);
+			static const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
+			for (int d = 0; d < 4; d++) {
+				int32_t x = i + di[d], y = j + dj[d];
+				if (x < 0 || y < 0 || x >= w || y >= h)
+					continue;
+				int64_t r = (int64_t)y * w + x;
+				if (!pass[r])
+					continue;
+				int32_t c = level + costly[r];
+				if (c >= cost[r])
+					continue;
+				cost[r] = c;
+				from[r] = q;
+				if (c == level && nc < n * 2)
+					cur[nc++] = r;
+				else if (c > level && nn < n * 2)
+					next[nn++] = r;
+			}
+		}
+		int64_t *t = cur;
+		cur = next;
+		next = t;
+		nc = nn;
+		nn = 0;
+	}
+	int32_t got = cost[b] == INT32_MAX ? -1 : cost[b];
+	free(next);
+	free(cur);
+	free(cost);
+	return got;
+}
+
+/* hs_settled(c, q): screen cell q has been seen in the fovea: a square never seen,
+ * or seen only by the 2 x 2 and 4 x 4 cells (which read a wall one square thick
+ * as floor), may yet be wall. */
+static bool hs_settled(const Controller *c, int64_t q)
+{
+	const Screen *s = &c->screen;
+	return worldmodel_evidence(&c->model, s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w)).res >=
+	       WORLDMODEL_RES_FOVEA;
+}
+
+/* hs_unseen_look(c, p, beat): LOOKING (hallsplit.h): floor at beat beats Utak's claim
+ * at p in the start's watershed room; if the way to it within that room that
+ * crosses the fewest squares never seen crosses any, a look at the first of them
+ * from Utak not yet looked at is begun (true; c->hall set). WHY the fewest: a way
+ * over floor seen alone means the rooms join on what the eye has shown, and no
+ * look can undo that; the unseen squares of the cheapest way are the ones that
+ * decide it. */
+static bool hs_unseen_look(Controller *c, Vec2 p, Vec2 beat)
+{
+	const Screen *s = &c->screen;
+	HallRun *h = &c->hall;
+	int32_t si, sj, ui, uj, bi, bj;
+	if (h->looks >= HALL_LOOKS || !goals_cell_of(s, c->start, &si, &sj) ||
+	    !goals_cell_of(s, c->model.utak, &ui, &uj) || !goals_cell_of(s, beat, &bi, &bj))
+		return false;
+	int64_t n = (int64_t)s->w * s->h;
+	int32_t *room = util_alloc((size_t)n, sizeof *room);
+	carryroom_watershed(&s->fixed, room);
+	int32_t a = room[(int64_t)sj * s->w + si];
+	int64_t u = (int64_t)uj * s->w + ui, b = (int64_t)bj * s->w + bi;
+	bool begun = false;
+	if (a >= 0 && room[u] == a && room[b] == a) {
+		bool *pass = util_alloc((size_t)n, sizeof *pass), *costly = util_alloc((size_t)n, sizeof *costly);
+		for (int64_t q = 0; q < n; q++) {
+			pass[q] = room[q] == a;
+			costly[q] = !hs_settled(c, q);
+		}
+		int64_t *from = util_alloc((size_t)n, sizeof *from);
+		int32_t fewest = hallsplit_fewest(s->w, s->h, pass, costly, u, b, from);
+		free(costly);
+		free(pass);
+		if (fewest > 0) {
+			/* The way from the beating floor back to Utak; the square not
+			 * seen in the fovea nearest Utak along it that can still be looked
+			 * at (a reachable cell within GOALS_LOOK of it, no goal reached
+			 * within GOALS_LOOK + 1: roomdoubt.c's looks). */
+			int32_t *dist = util_alloc((size_t)n, sizeof *dist);
+			goals_reach(&s->free, ui, uj, dist);
+			bool found = false;
+			Vec2 goal = {0, 0}, sq = {0, 0};
+			for (int64_t q = b; q >= 0; q = from[q]) {
+				if (hs_settled(c, q))
+					continue;
+				Vec2 here = goals_centre(s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w)), near;
+				bool looked = false;
+				for (int v = 0; v < c->visited_count && !looked; v++)
+					looked = goals_distance(here, c->visited[v]) <= GOALS_LOOK + 1;
+				if (looked || !goals_near(c, here, dist, &near) || goals_distance(near, here) > GOALS_LOOK ||
+				    goals_distance(near, c->model.utak) < 0.5)
+					continue;
+				/* the last kept is the nearest Utak along the path */
+				found = true;
+				goal = near;
+				sq = here;
+			}
+			free(dist);
+			if (found) {
+				h->going = h->look = begun = true;
+				h->at = goal;
+				h->claim = p;
+				h->looks++;
+				c->have_plan = false;
+				size_t len = strlen(h->note);
+				snprintf(h->note + len, sizeof h->note - len,
+					 "; floor at (%.1f, %.1f) that would beat the corner joins his room only through squares not seen in the fovea: going to look at (%.1f, %.1f) (hallsplit.h)",
+					 beat.x, beat.y, sq.x, sq.y);
+			}
+		}
+		free(from);
+	}
+	free(room);
+	return begun;
+}
+
 /* hs_settle(c, p, at): hallsplit_settle without the verdict's check (hs_beaten);
  * also asked on reaching a trip's goal (hallsplit_arrive). */
 static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
@@ -375,6 +522,7 @@ static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
 	if (objects_felt(c, best) && h->looked_count < HALL_TRIPS) /* a look (hs_way) */
 		h->looked[h->looked_count++] = (int32_t)c->model.node[best].ident;
 	h->going = true;
+	h->look = false;
 	h->at = best_near;
 	h->claim = p;
 	h->trips++;
@@ -395,6 +543,10 @@ bool hallsplit_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		return false;
 	if (c->space.w != c->screen.w || c->space.h != c->screen.h) {
 		h->going = false;
+		return false;
+	}
+	if (h->look && (!goals_cell_of(&c->screen, h->at, &i, &j) || dist[j * c->screen.w + i] < 0)) {
+		h->going = false; /* a look whose cell is no longer reachable: the corner judged again */
 		return false;
 	}
 	if (!goals_cell_of(&c->screen, h->at, &i, &j) || dist[j * c->screen.w + i] < 0) {
@@ -426,7 +578,7 @@ void hallsplit_arrive(Controller *c)
 	 * corner. */
 	Vec2 at;
 	if (c->hall.going) {
-		c->hall.going = false;
+		c->hall.going = c->hall.look = false;
 		hs_settle(c, c->hall.claim, &at);
 	}
 }
@@ -440,6 +592,8 @@ HallVerdict hallsplit_settle(Controller *c, Vec2 p, Vec2 *at)
 			 at->x, at->y);
 	bool out = false;
 	if (v == HALL_CLEAR && h->trips > 0 && hs_beaten(c, p, at, &out)) {
+		if (!out && hs_unseen_look(c, p, *at))
+			return HALL_GOING; /* a look at the unseen that joins the two (LOOKING) */
 		v = HALL_DOUBT;
 		if (out)
 			snprintf(h->why, sizeof h->why,
@@ -452,3 +606,22 @@ HallVerdict hallsplit_settle(Controller *c, Vec2 p, Vec2 *at)
 	return v;
 }
 
+bool hallsplit_hidden_look(Controller *c)
+{
+	HallRun *h = &c->hall;
+	int32_t ui, uj;
+	if (h->looks >= HALL_LOOKS || !goals_cell_of(&c->screen, c->model.utak, &ui, &uj))
+		return false;
+	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
+	goals_reach(&c->screen.free, ui, uj, dist);
+	bool look = roomdoubt_hidden_look(c, dist, goals_subject_score(c), &c->room_look_at);
+	free(dist);
+	if (look) {
+		h->looks++;
+		size_t n = strlen(h->note);
+		snprintf(h->note + n, sizeof h->note - n,
+			 "; floor that would beat the corner may join his room by squares seen only coarsely: going to look from (%.1f, %.1f) (roomdoubt.h)",
+			 c->room_look_at.x, c->room_look_at.y);
+	}
+	return look;
+}

@@ -897,7 +897,11 @@ static bool hidden_floor(const WorldModel *m, int32_t x, int32_t y)
 	return false;
 }
 
-bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
+/* hidden(c, got, at, dist, goal): roomdoubt_hidden; with dist, also a look (*goal,
+ * true in *look) at the square that may be floor under a coarse cell, beside the
+ * start's room or the room of the floor that beats, nearest Utak and not looked at
+ * already (look_at): the squares that join the two on the optimistic map. */
+static bool hidden(const Controller *c, int64_t got, Vec2 *at, const int32_t *dist, Vec2 *goal, bool *look)
 {
 	const Screen *s = &c->screen;
 	StartRooms sr;
@@ -933,6 +937,7 @@ bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
 		}
 	}
 	int64_t best = INT64_MIN;
+	int32_t beat = -1; /* the model's room of the floor that beats */
 	for (int64_t k = 0; a >= 0 && b >= 0 && k < n; k++) {
 		int32_t i = (int32_t)(k % w), j = (int32_t)(k / w);
 		int32_t r = carryroom_at(&sr.cr, &sr.rm, i, j);
@@ -942,8 +947,23 @@ bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
 		int64_t score = goals_corner_score(c->task.corner, s->x0 + i, s->y0 + j);
 		if (score > got + CONTROLLER_CORNER_SLACK && score > best) {
 			best = score;
+			beat = r;
 			*at = goals_centre(s->x0 + i, s->y0 + j);
 		}
+	}
+	double near = INFINITY;
+	for (int64_t k = 0; dist && best > INT64_MIN && k < n; k++) {
+		int32_t i = (int32_t)(k % w), j = (int32_t)(k / w);
+		if (!maybe[k] || carryroom_at(&cr, &rm, i, j) != b)
+			continue;
+		bool beside = false;
+		for (int dy = -1; dy <= 1 && !beside; dy++)
+			for (int dx = -1; dx <= 1 && !beside; dx++) {
+				int32_t r = carryroom_at(&sr.cr, &sr.rm, i + dx, j + dy);
+				beside = r >= 0 && (r == a || r == beat);
+			}
+		if (beside && look_at(c, dist, goals_centre(s->x0 + i, s->y0 + j), &near, goal))
+			*look = true;
 	}
 	carryroom_free(&cr);
 	goals_roommap_free(&rm);
@@ -951,4 +971,17 @@ bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
 	free(maybe);
 	free(open);
 	return best > INT64_MIN;
+}
+
+bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at)
+{
+	bool look = false;
+	return hidden(c, got, at, NULL, NULL, &look);
+}
+
+bool roomdoubt_hidden_look(const Controller *c, const int32_t *dist, int64_t got, Vec2 *goal)
+{
+	Vec2 at;
+	bool look = false;
+	return hidden(c, got, &at, dist, goal, &look) && look;
 }

@@ -4,7 +4,9 @@
 # over the three-square gaps join the L to both walls, and the space inside its
 # bend and the true corner read as a pocket behind a door of their own. "go
 # ne-corner": Utak stops short of the L, 11 short of the true corner; before
-# roomdoubt_hidden he claimed it (a false success), now he doubts it. "push square
+# roomdoubt_hidden he claimed it (a false success), then he doubted it; now he first
+# looks at the coarse squares from nearby (hallsplit_hidden_look), sees the gaps,
+# and goes on to the true corner. "push square
 # ne-corner": the square cannot pass the gaps; he fails honestly, short (no change).
 table 60 40
 object lshape E 46 24 56 24 56 28 50 28 50 36 46 36

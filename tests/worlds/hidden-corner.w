@@ -8,7 +8,9 @@
 # as his model draws it, 12 short of the room's true corner. Before roomdoubt_hidden
 # Utak claimed it (a false success); now he doubts it: that floor may be of his
 # room, joined to it by the squares seen only coarsely. "go ne-corner" (task (i))
-# likewise: he stops beside the tip, 11 short, and now doubts it.
+# likewise: he stopped beside the tip, 11 short, and doubted it; now, free to walk,
+# he first looks at those squares from nearby (hallsplit_hidden_look), sees the
+# gap between the triangle's foot and the wall, and goes on to the true corner.
 table 40 30
 object triangle E 27 17 36.5 17 27 26.5
 object square A 8 8 12 8 12 12 8 12

@@ -75,6 +75,17 @@
  * unchanged where it does not): 12-65 cycles on the random corners it settled.
  * Task (v) keeps the doubt: settling would mean letting go of the square seated
  * in the corner, and fetching it again if the blob were wall.
+ * LOOKING (task (i)). The watershed takes the unseen for space: floor seen beyond
+ * a wall whose door he has not seen may join the start's room only through squares
+ * never seen (random g16: the wall between two rooms seen from one end, its far
+ * part and its door unseen; he doubted a corner the judge counts reached). When
+ * hs_beaten doubts the claim, the way from Utak to the floor that beats it within
+ * the start's watershed room crossing the fewest squares never seen (0-1 breadth-
+ * first search) is found; if it crosses none, the rooms join on floor seen and the
+ * doubt stands; else Utak goes to look at the first unseen square along it that no
+ * goal reached has looked at (a reachable cell within GOALS_LOOK of it), and
+ * judges the corner again on return, at most HALL_LOOKS looks a task. A look only
+ * adds what the eye saw: the claim is still made by hs_beaten's rule alone.
  * COMPLEXITY: the rule O(w h) a room map of the screen for each object node seen
  * only coarsely; settling O(S w h log(w h)) for S suspects, per judgement. */
 #ifndef UTAK_HALLSPLIT_H
@@ -86,9 +97,16 @@
 
 #include "utak/base/geom.h"
 
-/* Trips to touch a blob a task, at most, and blobs remembered (their rectangles). */
-#define HALL_TRIPS 4
+/* Trips to touch a blob a task, at most, and blobs remembered (their rectangles).
+ * 8: a trip that ends beside a blob seen coarsely, a square or two off, where touch
+ * does not reach it, sets off again and counts; with 4, random g121, g211 and g276
+ * of the rates (and perturbed clutter-p1) spent them so and kept the doubt, and are
+ * claimed with 8 (103 -> 111, 51 -> 54, 65 -> 204, 47 -> 54 cycles). */
+#define HALL_TRIPS 8
 #define HALL_BLOBS HALL_TRIPS
+/* Looks a task, at most, at unseen squares that alone join floor that beats the
+ * corner to the start's room by the verdict's watershed (LOOKING below). */
+#define HALL_LOOKS 4
 
 /* A hall doubt being settled by touch (SETTLING above); in the Controller. */
 typedef struct HallRun {
@@ -100,6 +118,8 @@ typedef struct HallRun {
 	int blob_count;
 	int32_t looked[HALL_TRIPS];	/* idents of felt objects looked at (once each) */
 	int looked_count;
+	bool look;		/* the trip on is a look at unseen squares (LOOKING), not a touch */
+	int looks;		/* such looks begun this task */
 	char note[200];		/* a trip begun, for the trace (controller.c prints it) */
 	char why[200];		/* HALL_DOUBT: the doubt's words */
 } HallRun;
@@ -137,5 +157,19 @@ bool hallsplit_goal(struct Controller *c, const int32_t *dist, struct GoalResult
 /* hallsplit_arrive(c): a goal reached: the trip, if one was on, is over; if what
  * it went to is still unsettled, the next trip sets off from here. */
 void hallsplit_arrive(struct Controller *c);
+/* hallsplit_fewest(w, h, pass, costly, u, b, from): on a w x h grid of cells, 4-
+ * connected over the cells pass marks, the least number of costly cells a way from
+ * cell u to cell b enters (u itself not counted), -1 when none joins them (or u or
+ * b is not passable); from[] the way back (from[u] = -1), for the cells reached.
+ * LOOKING's search (the costly cells those not seen in the fovea). COMPLEXITY:
+ * O(w h) time (0-1 breadth-first search), 20 bytes a cell while it works. */
+int32_t hallsplit_fewest(int32_t w, int32_t h, const bool *pass, const bool *costly, int64_t u, int64_t b,
+			 int64_t *from);
+/* hallsplit_hidden_look(c): task (i), at the corner, where floor seen that beats it
+ * may join the start's room by squares seen only coarsely (roomdoubt_hidden), a
+ * look at them first (roomdoubt_hidden_look: c->room_look_at, kept by goals.c
+ * until reached), at most HALL_LOOKS a task with LOOKING's looks; false when there
+ * is none to take, and the doubt is then goals_corner_hidden's. */
+bool hallsplit_hidden_look(struct Controller *c);
 
 #endif

@@ -198,5 +198,15 @@ RoomDoubt roomdoubt_next(const Controller *c, const RoomMap *rm, CarryRooms *cr,
  * room of its own, and a wall seen coarsely between two rooms would otherwise
  * always read as a possible gap. COMPLEXITY: O(w h) two room maps of the screen. */
 bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at);
+/* roomdoubt_hidden_look(c, dist, got, goal): where roomdoubt_hidden doubts, a look
+ * before the doubt (task (i): Utak is free to walk; for a push he would have to let
+ * go first): the square that may be floor under a coarse cell (occupied on the
+ * model, seen only coarsely, within a cell less a square of floor), on the
+ * optimistic map's room of the start, beside the start's room or the room of the
+ * floor that beats, nearest Utak and not looked at already; true and *goal the
+ * reachable cell within GOALS_LOOK of it. A look only adds what the eye saw: the
+ * claim is still made by roomdoubt_hidden alone. COMPLEXITY: as roomdoubt_hidden,
+ * and O(w h) goals_near for each square kept. */
+bool roomdoubt_hidden_look(const Controller *c, const int32_t *dist, int64_t got, Vec2 *goal);
 
 #endif
