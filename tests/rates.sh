@@ -15,7 +15,7 @@
 # it impossible: judge.h). Per task it prints the runs,
 # those that apply, the achieved rate among them, the belief/verdict disagreements
 # and, counted apart, the false successes (Utak sure of a task the judge says is not
-# done). With RATES_TARGETS naming a mode (or "all") the issue's target for it is
+# done, counted in runs where the task does not apply too). With RATES_TARGETS naming a mode (or "all") the issue's target for it is
 # checked: perturb, every applicable run achieved; random, disagreement under 3% and
 # no false success; noise, at least 90% achieved. Runs go RATES_JOBS (2) at a time.
 # RATES_KEEP=FILE appends every run's line ("MODE|TASK|STATUS|LAST LINE|WORLD
@@ -65,11 +65,13 @@ cat >"$tmp/report.awk" <<'EOA'
 BEGIN { nt = split(tasks, order, "|") }
 function add(t, st, last) {
 	runs[t]++
+	# A false success counts even where the task does not apply: Utak sure he
+	# touched the square in a world the judge finds none in is the worst case.
+	if (last ~ /Utak believes it achieved/) fs[t]++
 	if (last ~ /does not apply|there is no /) { na[t]++; return }
 	app[t]++
 	if (st == 0 && last ~ /^task: achieved/) ok[t]++
-	if (last ~ /Utak believes it achieved/) { dis[t]++; fs[t]++ }
-	else if (last ~ /Utak believes it/) dis[t]++
+	if (last ~ /Utak believes it/) dis[t]++
 }
 { add($1, $2, $3); add("all", $2, $3); if ($2 != 0 && $2 != 1) print "  exit " $2 ": " $4 ": " $3 }
 END {
