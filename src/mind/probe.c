@@ -611,7 +611,7 @@ static void judge(Controller *c, ProbeRun *p)
 	for (int l = 0; l < looks; l++) {
 		pushed_sq += vec2_dot(vec2_sub(p->corner[l], from), vec2_sub(p->corner[l], from));
 		from = p->corner[l];
-		p->looks[l] = (ProbeLook){p->corner[l], rate * sqrt(pushed_sq), p->shifts[l]};
+		p->looks[l] = (ProbeLook){p->corner[l], rate * sqrt(pushed_sq), p->shifts[l], rate};
 	}
 	p->verdict = probe_square_consistent(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true, PROBE_BUDGET);
 	p->width = probe_least_width(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true);

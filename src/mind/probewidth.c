@@ -41,6 +41,30 @@ static void region_reach(const ProbeRegion *reg, const int32_t *first, const Pro
 	}
 }
 
+/* look_error(looks, j, k): how far motion's error may move look k's regions
+ * against look j's, along each axis (looks numbered as in region_reach: 0 is B,
+ * no error): the two slacks; or, with a rate (ProbeLook.rate) at every look
+ * between, that of the pushes between them (the root of their squared lengths
+ * times the rate), when less. */
+static double look_error(const ProbeLook *looks, int32_t j, int32_t k)
+{
+	if (j == k)
+		return 0;
+	if (j > k) {
+		int32_t t = j;
+		j = k;
+		k = t;
+	}
+	double both = (j ? looks[j - 1].slack : 0) + looks[k - 1].slack;
+	double rate = looks[k - 1].rate, sq = 0;
+	for (int32_t l = j + 1; l <= k && rate > 0; l++) {
+		Vec2 from = l > 1 ? looks[l - 2].d : vec2(0, 0), to = looks[l - 1].d;
+		sq += (to.x - from.x) * (to.x - from.x) + (to.y - from.y) * (to.y - from.y);
+		rate = looks[l - 1].rate > 0 ? fmax(rate, looks[l - 1].rate) : 0;
+	}
+	return rate > 0 ? fmin(both, rate * sqrt(sq)) : both;
+}
+
 double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks, int32_t nlooks,
 			 const ProbeCell *cells, int32_t ncells, bool unplaced)
 {
@@ -83,6 +107,10 @@ double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const
 	first[nlooks + 1] = n;
 	uint16_t place[PROBE_SHIFTS][PROBE_LOOKS];
 	int nplaces = probe_grid_places(looks, nlooks, unplaced, place);
+	double err[PROBE_LOOKS + 1][PROBE_LOOKS + 1];
+	for (int32_t j = 0; j <= nlooks; j++)
+		for (int32_t k = 0; k <= nlooks; k++)
+			err[j][k] = look_error(looks, j, k);
 	/* A place of a look's grid that puts a region it showed beyond where the
 	 * object can reach is none: before the pushes the object lay within B's
 	 * closed squares, so along u no point of it lies beyond B's centres' reach
@@ -143,12 +171,11 @@ double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const
 					for (int32_t k = 0; k <= nlooks; k++) {
 						if (!seen[j] || !seen[k])
 							continue;
-						/* Each look's own error of motion, within its
-						 * slack on each axis, moves all its regions
-						 * together (none in one look's own spread). */
-						double err = j == k ? 0
-								    : ((j ? looks[j - 1].slack : 0) + (k ? looks[k - 1].slack : 0)) * l1;
-						best = fmax(best, hi[k] + sh[k][pick[k]] - lo[j] - sh[j][pick[j]] - err);
+						/* Each look's own error of motion moves all its
+						 * regions together (none in one look's own
+						 * spread); between two looks, look_error's, on
+						 * each axis. */
+						best = fmax(best, hi[k] + sh[k][pick[k]] - lo[j] - sh[j][pick[j]] - err[j][k] * l1);
 					}
 				worst = fmin(worst, best);
 				int32_t l = 1; /* the next choice */

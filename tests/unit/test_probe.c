@@ -71,7 +71,8 @@ static bool unseen_noise;
  * on Utak's square: his point starts at f within his square (0, 0) and moves with
  * the object. Judged as the controller does: slack PROBE_SLACK_RATE (at least
  * 4 sigma, but for unseen_noise) times the root of the squared lengths pushed, the
- * point unplaced. */
+ * point unplaced; the error between two looks within the rate times the root of
+ * the squared lengths pushed between them (ProbeLook.rate). */
 static int32_t bx[MOST], by[MOST], nb, nc;
 static ProbeCell cells[PROBE_LOOKS * MOST / 4];
 static ProbeLook looks[PROBE_LOOKS];
@@ -102,7 +103,7 @@ static void observe(const Polygon *p, const Vec2 *corners, int n, double sigma, 
 		pushed_sq += len * len;
 		err = vec2_add(err, vec2(sigma * len * gaussian(seed), sigma * len * gaussian(seed)));
 		at = corners[l];
-		looks[l] = (ProbeLook){corners[l], rate * sqrt(pushed_sq), PROBE_ANY_SHIFT};
+		looks[l] = (ProbeLook){corners[l], rate * sqrt(pushed_sq), PROBE_ANY_SHIFT, rate};
 		Polygon q = moved(p, at.x + err.x, at.y + err.y);
 		/* The eye's grid: Utak's square now, from his first (0, 0). */
 		int32_t gx = (int32_t)floor(f.x + at.x + err.x), gy = (int32_t)floor(f.y + at.y + err.y);
@@ -480,7 +481,7 @@ TEST_CASE(standing_still_squares_kept)
 TEST_CASE(empty_is_undecided)
 {
 	int32_t x = 0;
-	ProbeLook look = {{0.25, 0.25}, 0, PROBE_ANY_SHIFT};
+	ProbeLook look = {{0.25, 0.25}, 0, PROBE_ANY_SHIFT, 0};
 	TEST_CHECK(probe_square_consistent(&x, &x, 0, &look, 1, NULL, 0, true, BUDGET) == PROBE_UNDECIDED);
 }
 

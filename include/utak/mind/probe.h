@@ -102,6 +102,15 @@ typedef struct ProbeLook {
 	 * (sy + 1) * 3 + (sx + 1) for a grid moved by (sx, sy); PROBE_ANY_SHIFT
 	 * when nothing rules any out. */
 	uint16_t shifts;
+	/* The slack per root of the squared lengths pushed (PROBE_SLACK_RATE, or
+	 * more under noise the disparity has shown), when the looks' pushes are
+	 * taken one after another (look l's from look l - 1's d, the first's from
+	 * where the object was): then motion's error between looks j and k is that
+	 * of the pushes between them, within rate times the root of their squared
+	 * lengths (the errors of the pushes before j move both looks alike, as the
+	 * slack of each look already assumes: a Gaussian error per push, motion.h).
+	 * 0: not so, and the error between two looks is within their two slacks. */
+	double rate;
 } ProbeLook;
 #define PROBE_ANY_SHIFT 0x1ff
 
@@ -156,7 +165,10 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
  * looks is narrower (tests/unit/test_probe.c, least_width_is_sound, against the
  * exact width of 600 polygons projected as the TABLE does). With three quarter-
  * square looks it shows a square 2.25 on a side two wide 6 times in 40, 2.35 20,
- * 2.45 34, 2.15 never: the step and the slack of motion leave the rest in doubt. */
+ * 2.45 34, 2.15 never: the step and the slack of motion leave the rest in doubt.
+ * With a rate (ProbeLook.rate), two looks' regions are set against each other
+ * with the error of the pushes between them, when less than their two slacks
+ * (random g18's 2.24 square: shown 1.88 wide, was 1.81). */
 #define PROBE_WIDTH_DIRECTIONS 720
 double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks, int32_t nlooks,
 			 const ProbeCell *cells, int32_t ncells, bool unplaced);
