@@ -312,13 +312,14 @@ static inline unsigned pathgraph_plane_mask(const uint8_t *plane, int32_t cb, in
 static const uint8_t PATHGRAPH_MASK_BIT[4] = {2, 1, 0, 3};
 static const uint8_t PATHGRAPH_POP4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 
-/* On x86-64 Linux the build's steps (builder_vertices, builder_edges and the walk,
- * builder_edge_from) are also compiled with the popcnt instruction, chosen at load
+/* On x86-64 with glibc (target_clones needs its ifunc; musl has none) the build's
+ * steps (builder_vertices, builder_edges and the walk, builder_edge_from) are also
+ * compiled with the popcnt instruction, chosen at load
  * time: a rank (pathgraph_rank: a vertex cell's, its neighbours' north and south, or a
  * step north or south in the walk) counts bits, twelve instructions without it.
  * PATHGRAPH_POPCOUNT is for those functions alone (elsewhere, GCC's builtin is a call
  * on the default target). */
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__GLIBC__)
 #define PATHGRAPH_CLONES __attribute__((target_clones("popcnt", "default")))
 #define PATHGRAPH_POPCOUNT(x) ((int32_t)__builtin_popcountll(x))
 #else
