@@ -174,8 +174,9 @@
  *    (0)'s pass (on the maze at 1024 the gather costs 0.22 ms; every dist2 load of the
  *    walk costs 0.19, measured by leaving them out), and so not asked of
  *    skeleton_compute's output loop either, whose gather would cost it as much (the
- *    skeleton, 2.4-3.0 ms on that maze, is at its goal against scikit-image with no
- *    margin); a run north or south a cell at a time; the corner's fourth cell free by
+ *    skeleton was 2.4-3.0 ms on that maze then, at its goal against scikit-image with
+ *    no margin; since skel11's round it is 2.26 ms, skeleton_compute alternating, and
+ *    skeletonize / utak 7.35 at 1024 and 6.33 at 4096: README's Benchmarks); a run north or south a cell at a time; the corner's fourth cell free by
  *    the last cell's dist2 > 2 (no load); a prefetch extrapolated from the cell 8
  *    steps back, or 4 or 16 rows on; step (0)'s empty words told by a mask, without a
  *    branch; the walk made twice, without the loop's stop test for steps (2). */
