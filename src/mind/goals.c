@@ -215,7 +215,11 @@ int64_t goals_held_score(const Controller *c, int32_t x, int32_t y)
 
 /* goals_corner_hidden(c): whether floor seen that beats the task's subject may be of
  * the start's room after all (roomdoubt_hidden); if so, the task fails with Utak's
- * doubt (no look yet: for a push he would have to let go first). */
+ * doubt. For task (i) hallsplit_hidden_look has come first (controller.c): he has
+ * looked from nearby at the coarse squares that may join that floor to his room,
+ * while looks were left (HALL_LOOKS) and one could be made, and this is the doubt
+ * that stands after them; for a push there is no look yet (he would have to let
+ * go first). */
 bool goals_corner_hidden(Controller *c)
 {
 	Vec2 at;

@@ -33,6 +33,7 @@
  * and O(w h) goals_near for each square of the way tried. */
 #include "utak/mind/hallsplit.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -298,11 +299,14 @@ int32_t hallsplit_fewest(int32_t w, int32_t h, const bool *pass, const bool *cos
 	int64_t n = (int64_t)w * h;
 	if (u < 0 || b < 0 || u >= n || b >= n || !pass[u] || !pass[b])
 		return -1;
-	/* 0-1 breadth-first search: the queue of cost L, and the next's (L + 1); a
-	 * cell is queued only when its cost drops, at most once into each level it
-	 * can take, so each queue holds at most 2 n. */
+	/* 0-1 breadth-first search: the queue of cost L, and the next's (L + 1). A
+	 * cell's cost of entry (costly[r]) is its own, whichever neighbour it is
+	 * entered from, and the levels are taken in order, every cell of cost below L
+	 * done before any of cost L: so the first cost a cell gets, from a neighbour
+	 * of the lowest level, is final, and each cell is queued once, into one of
+	 * the two queues: n entries each suffice (20 bytes a cell with cost). */
 	int32_t *cost = util_alloc((size_t)n, sizeof *cost);
-	int64_t *cur = util_alloc((size_t)n * 2, sizeof *cur), *next = util_alloc((size_t)n * 2, sizeof *next);
+	int64_t *cur = util_alloc((size_t)n, sizeof *cur), *next = util_alloc((size_t)n, sizeof *next);
 	for (int64_t q = 0; q < n; q++)
 		cost[q] = INT32_MAX;
 	int64_t nc = 0, nn = 0;
@@ -312,8 +316,8 @@ int32_t hallsplit_fewest(int32_t w, int32_t h, const bool *pass, const bool *cos
 	for (int32_t level = 0; nc > 0 && cost[b] == INT32_MAX; level++) {
 		for (int64_t k = 0; k < nc; k++) {
 			int64_t q = cur[k];
-			if (cost[q] != level)
-				continue; /* bettered since it was queued */
+			/* No cell is bettered once queued (above): a check would never fire. */
+			assert(cost[q] == level);
 			int32_t i = (int32_t)(q % w), j = (int32_t)(q / w);
 			static const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
 			for (int d = 0; d < 4; d++) {
@@ -328,9 +332,9 @@ int32_t hallsplit_fewest(int32_t w, int32_t h, const bool *pass, const bool *cos
 					continue;
 				cost[r] = c;
 				from[r] = q;
-				if (c == level && nc < n * 2)
+				if (c == level)
 					cur[nc++] = r;
-				else if (c > level && nn < n * 2)
+				else
 					next[nn++] = r;
 			}
 		}

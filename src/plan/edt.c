@@ -197,8 +197,9 @@ _Static_assert(EDT_CLIP + EDT_WINDOW_BOUND * EDT_WINDOW_BOUND <= UINT16_MAX,
 #else
 #define EDT_NOINLINE
 #endif
-/* On x86-64 Linux the row pass is also compiled for AVX2, chosen at load time. */
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+/* On x86-64 with glibc (target_clones needs its ifunc; musl has none) the row pass is
+ * also compiled for AVX2, chosen at load time. */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__GLIBC__)
 #define EDT_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define EDT_CLONES

@@ -174,8 +174,9 @@
  *    (0)'s pass (on the maze at 1024 the gather costs 0.22 ms; every dist2 load of the
  *    walk costs 0.19, measured by leaving them out), and so not asked of
  *    skeleton_compute's output loop either, whose gather would cost it as much (the
- *    skeleton, 2.4-3.0 ms on that maze, is at its goal against scikit-image with no
- *    margin); a run north or south a cell at a time; the corner's fourth cell free by
+ *    skeleton was 2.4-3.0 ms on that maze then, at its goal against scikit-image with
+ *    no margin; since skel11's round it is 2.26 ms, skeleton_compute alternating, and
+ *    skeletonize / utak 7.35 at 1024 and 6.33 at 4096: README's Benchmarks); a run north or south a cell at a time; the corner's fourth cell free by
  *    the last cell's dist2 > 2 (no load); a prefetch extrapolated from the cell 8
  *    steps back, or 4 or 16 rows on; step (0)'s empty words told by a mask, without a
  *    branch; the walk made twice, without the loop's stop test for steps (2). */
@@ -312,13 +313,14 @@ static inline unsigned pathgraph_plane_mask(const uint8_t *plane, int32_t cb, in
 static const uint8_t PATHGRAPH_MASK_BIT[4] = {2, 1, 0, 3};
 static const uint8_t PATHGRAPH_POP4[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
 
-/* On x86-64 Linux the build's steps (builder_vertices, builder_edges and the walk,
- * builder_edge_from) are also compiled with the popcnt instruction, chosen at load
+/* On x86-64 with glibc (target_clones needs its ifunc; musl has none) the build's
+ * steps (builder_vertices, builder_edges and the walk, builder_edge_from) are also
+ * compiled with the popcnt instruction, chosen at load
  * time: a rank (pathgraph_rank: a vertex cell's, its neighbours' north and south, or a
  * step north or south in the walk) counts bits, twelve instructions without it.
  * PATHGRAPH_POPCOUNT is for those functions alone (elsewhere, GCC's builtin is a call
  * on the default target). */
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__GLIBC__)
 #define PATHGRAPH_CLONES __attribute__((target_clones("popcnt", "default")))
 #define PATHGRAPH_POPCOUNT(x) ((int32_t)__builtin_popcountll(x))
 #else

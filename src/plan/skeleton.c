@@ -209,6 +209,12 @@
  *    27.6, den520d 18.2 and 24.8: the maze's 5 reached, with no margin on this
  *    shared machine. Not kept: planing level 5 too on the 1024 maze (its pass costs
  *    what its listing saves).
+ *    An eighth round, on the maze (issue 16's maze round, skel11): maze 1024 2.92 ->
+ *    2.26 ms (skeleton_compute, alternating with the code before), skeletonize / utak
+ *    7.35 at 1024 (make bench-compare SIDE=1024) and 6.33 at 4096 (README's
+ *    Benchmarks): the figures, by part, are in the MEASURED sections of skellevel.c
+ *    (the planes and subfields, the whole skeleton_compute), edt.c (phase 1 for AVX2)
+ *    and skelprune.c (the pruning's recheck marking).
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 

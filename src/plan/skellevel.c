@@ -127,9 +127,18 @@
  * 0.22-0.32; the 4096 maze 7.6 -> 5.9 and 5.2 -> 4.9. Not kept: x86-64-v4 (AVX-512)
  * too (skellevel_next 0.26 -> 0.31: a row of 17 words is short for 8-word vectors),
  * AVX2 alone (skellevel_next 0.28), and clones of skellevel_state, _high and _rest (no
- * faster; _rest 0.007 -> 0.013 ms). */
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
+ * faster; _rest 0.007 -> 0.013 ms).
+ *
+ * The x86-64-v3 clone is asked for only where target_clones handles it: GCC 12 on
+ * (older GCC rejects "arch=x86-64-vN" there) and clang 18 on (older clang builds a
+ * resolver that never picks it, and LLVM issue 55830 reports assertion failures);
+ * elsewhere the clone is AVX2 alone, as edt.c's. ifunc, which target_clones needs,
+ * is glibc's (musl has none), hence __GLIBC__ rather than __linux__. */
+#if defined(__GNUC__) && defined(__x86_64__) && defined(__GLIBC__) && \
+	((!defined(__clang__) && __GNUC__ >= 12) || (defined(__clang__) && __clang_major__ >= 18))
 #define SKELLEVEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#elif defined(__GNUC__) && defined(__x86_64__) && defined(__GLIBC__)
+#define SKELLEVEL_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define SKELLEVEL_CLONES
 #endif

@@ -34,6 +34,13 @@
 #include "skelthin.h"
 #include "utak/plan/skeleton.h"
 
+/* The pruning's recheck marking (thinner_prune's removal: a loaded word of state
+ * masked with 0x010101, shifted by 7 and 14) takes byte k of the word to bit k only
+ * where bytes are stored little-end first, as skeleton.c's gathers do. */
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "skelprune.c gathers bytes to bits as on a little-endian machine"
+#endif
+
 /* thinner_mask4(st, pi, pw): pi's 4-neighbours in the set, bit k the k-th of east,
  * north (+pw), west and south: the ring's even neighbours in its order. */
 static inline unsigned thinner_mask4(const uint8_t *st, int32_t pi, int32_t pw)

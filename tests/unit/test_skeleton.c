@@ -147,11 +147,28 @@ TEST_CASE(edt_equals_brute_force_on_wide_open_grids)
  * included), and both with the definition on cells picked at random; the grids
  * from few blocked cells to many, the free runs down the columns up to the grid's
  * height. */
+/* edt.c's choice, restated from its constants (EDT_BAND_BYTES 256 KB, EDT_BAND_MIN 8;
+ * edt.c tells no caller which way it went): skeleton_compute's transform goes by
+ * bands when bands + 2 x band <= h, band = max(8, 262144 / (2 w)) rows. The test
+ * asserts its grids meet it, so that a change of those constants that left them on
+ * the whole-grid path would show here. */
+static bool edt_takes_bands(int w, int h)
+{
+	int band = 262144 / (2 * w);
+	band = band > 8 ? band : 8;
+	const int bands = (h + band - 1) / band;
+	return bands + 2 * band <= h;
+}
+
 TEST_CASE(edt_by_bands_equals_the_whole_grid)
 {
 	oracle_seed = 11;
-	const int sizes[][4] = {{70, 4200, 3, 6}, {130, 2100, 0, 9}, {67, 3900, 20, 2}};
+	/* the third at the least height that takes the bands for w = 67 (band 1956 rows,
+	 * 3 bands: 3 + 3912 = 3915) */
+	const int sizes[][4] = {{70, 4200, 3, 6}, {130, 2100, 0, 9}, {67, 3915, 20, 2}};
+	TEST_CHECK(!edt_takes_bands(67, 3914));
 	for (int k = 0; k < 3; k++) {
+		TEST_CHECK(edt_takes_bands(sizes[k][0], sizes[k][1]));
 		Grid g;
 		oracle_random_grid(&g, sizes[k][0], sizes[k][1], sizes[k][2], sizes[k][3]);
 		const size_t n = (size_t)g.w * (size_t)g.h;
@@ -174,6 +191,57 @@ TEST_CASE(edt_by_bands_equals_the_whole_grid)
 		free(d);
 		grid_free(&g);
 	}
+}
+
+/* skeleton_edt alone on a grid of 2048 x 2048 and up (2 bytes a cell of phase 1
+ * reach EDT_BANDS_ALONE, 8 MB) goes by bands with scratch of its own (edt.c). Oracle:
+ * the grid, 2064 a side, is 16 x 16 tiles of 129 cells, each a random 128 x 128 interior walled on its
+ * east and north by a blocked line (outside the grid is blocked); no blocked cell
+ * beyond a tile's walls is nearer a cell inside than the wall cell on its row or
+ * column, so each interior's transform is that of the interior alone as a grid of
+ * its own (128 x 128: the whole-grid path), a different path from the bands. The
+ * bands (63 rows) cut the tiles at offsets that vary from tile row to tile row. */
+TEST_CASE(edt_alone_by_bands_equals_its_tiles)
+{
+	oracle_seed = 12;
+	enum { T = 129, N = 16, W = T * N };
+	TEST_CHECK(2 * (size_t)W * W >= (size_t)8 << 20);
+	Grid g;
+	grid_init(&g, W, W, GRID_FREE);
+	Grid tile[N * N];
+	for (int t = 0; t < N * N; t++) {
+		oracle_random_grid(&tile[t], T - 1, T - 1, t % 5 == 0 ? 0 : 4, t % 3);
+		for (int y = 0; y < T; y++)
+			for (int x = 0; x < T; x++) {
+				const bool wall = x == T - 1 || y == T - 1;
+				const size_t at = (size_t)((t / N) * T + y) * W + (size_t)((t % N) * T + x);
+				g.cells[at] = wall ? GRID_BLOCKED : tile[t].cells[y * (T - 1) + x];
+			}
+	}
+	int32_t *d = malloc(sizeof(int32_t) * (size_t)W * W);
+	int32_t *e = malloc(sizeof(int32_t) * (T - 1) * (T - 1));
+	const int32_t largest = skeleton_edt(&g, d);
+	int32_t most = 0;
+	bool same = true;
+	for (int t = 0; t < N * N; t++) {
+		const int32_t m = skeleton_edt(&tile[t], e);
+		most = m > most ? m : most;
+		for (int y = 0; y < T; y++)
+			for (int x = 0; x < T; x++) {
+				const int32_t want = x == T - 1 || y == T - 1 ? 0 : e[y * (T - 1) + x];
+				same = same && d[(size_t)((t / N) * T + y) * W + (size_t)((t % N) * T + x)] == want;
+			}
+		grid_free(&tile[t]);
+	}
+	TEST_CHECK(same);
+	TEST_CHECK(largest == most);
+	for (int k = 0; k < 8; k++) {
+		const int x = oracle_rand_below(W), y = oracle_rand_below(W);
+		TEST_CHECK(d[(size_t)y * W + x] == brute_edt_at(&g, x, y));
+	}
+	free(e);
+	free(d);
+	grid_free(&g);
 }
 
 /* topology_matches(g, s): per free 4-component, exactly one skeleton 4-component,
@@ -482,6 +550,7 @@ int main(void)
 	TEST_RUN(edt_all_free_all_blocked_and_thin_grids);
 	TEST_RUN(edt_equals_brute_force_on_wide_open_grids);
 	TEST_RUN(edt_by_bands_equals_the_whole_grid);
+	TEST_RUN(edt_alone_by_bands_equals_its_tiles);
 	TEST_RUN(skeleton_topology_on_random_grids);
 	TEST_RUN(skeleton_topology_across_word_boundaries);
 	TEST_RUN(skeleton_2x2_blocks_only_pinwheels);

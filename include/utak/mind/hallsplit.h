@@ -39,7 +39,8 @@
  * wall, would part the hall: 16 of the 410 corner runs of the rates' sets (one
  * run, /tmp/rk15), +0.78 cycles a corner run on average; 5 of them end with a
  * doubt touch could not settle (a pier felt B, the hall wider on his model where
- * the far side is unseen, or a piece with no way to it within 4 trips).
+ * the far side is unseen, or a piece with no way to it within 4 trips: the
+ * figures of /tmp/rk15, when the trips limit was 4; it is now HALL_TRIPS, 8).
  *
  * SETTLING (task (i)). Rather than claim the corner with that doubt, Utak goes and
  * touches the blob (paper 3.4.2: touch reads an object's letter, a wall's B), then
@@ -87,7 +88,10 @@
  * judges the corner again on return, at most HALL_LOOKS looks a task. A look only
  * adds what the eye saw: the claim is still made by hs_beaten's rule alone.
  * COMPLEXITY: the rule O(w h) a room map of the screen for each object node seen
- * only coarsely; settling O(S w h log(w h)) for S suspects, per judgement. */
+ * only coarsely; settling O(S w h log(w h)) for S suspects, per judgement;
+ * looking, per judgement hs_beaten doubts, O(w h log(w h)) (the watershed), O(w h)
+ * the 0-1 search (hallsplit_fewest) and a reach, and O(w h) more for each square
+ * not seen in the fovea along the way found (goals_near, to look at it from). */
 #ifndef UTAK_HALLSPLIT_H
 #define UTAK_HALLSPLIT_H
 
