@@ -90,6 +90,9 @@ typedef struct ProbeSearch {
 	 * (sy + 1) * 3 + sx + 1: look l's cells are squares (x + sx, y + sy)). */
 	uint16_t place[PROBE_SHIFTS][PROBE_LOOKS];
 	int nshifts;
+	/* The rectangles searched: long side / short side within (amin, amax]
+	 * (the square's [1, PROBE_ASPECT], or the oblong's (PROBE_ASPECT, inf)). */
+	double amin, amax;
 } ProbeSearch;
 
 /* box_radius(b, contrib): R for box b (above), and each parameter's share of it. */
@@ -213,8 +216,9 @@ static bool look_errors(ProbeSearch *s, int32_t sx, int32_t sy, int32_t l, const
  * seen; 0 when every one contradicts it. */
 static uint32_t box_alive(ProbeSearch *s, ProbeBox *b, double r)
 {
-	/* No rectangle in the box is square enough, or wide enough. */
-	if (b->lo[P_W] > PROBE_ASPECT * b->hi[P_H] || b->lo[P_H] > PROBE_ASPECT * b->hi[P_W] ||
+	/* No rectangle in the box has the proportions searched, or is wide enough. */
+	if (b->lo[P_W] > s->amax * b->hi[P_H] || b->lo[P_H] > s->amax * b->hi[P_W] ||
+	    (b->hi[P_W] <= s->amin * b->lo[P_H] && b->hi[P_H] <= s->amin * b->lo[P_W]) ||
 	    b->hi[P_W] < PROBE_MIN_SIDE || b->hi[P_H] < PROBE_MIN_SIDE)
 		return 0;
 	double a = 0.5 * (b->lo[P_A] + b->hi[P_A]);
@@ -353,6 +357,13 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 				     int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
 				     int64_t budget)
 {
+	return probe_rect_consistent(bx, by, nb, looks, nlooks, cells, ncells, unplaced, 0, PROBE_ASPECT, budget);
+}
+
+ProbeVerdict probe_rect_consistent(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks,
+				   int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
+				   double amin, double amax, int64_t budget)
+{
 	if (nb <= 0 || nb > PROBE_MAX_SQUARES || nlooks < 0 || nlooks > PROBE_LOOKS)
 		return PROBE_UNDECIDED;
 	for (int32_t i = 0; i < ncells; i++)
@@ -390,7 +401,7 @@ ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32
 	/* The cells grouped by look. */
 	ProbeCell *grouped = util_alloc(ncells > 0 ? (size_t)ncells : 1, sizeof *grouped);
 	ProbeSearch *s = util_alloc(1, sizeof *s);
-	*s = (ProbeSearch){before, n, grouped, ncells, {0}, looks, nlooks, {{0}}, 1};
+	*s = (ProbeSearch){before, n, grouped, ncells, {0}, looks, nlooks, {{0}}, 1, amin, amax};
 	int32_t placed = 0;
 	for (int32_t l = 0; l < nlooks; l++) {
 		s->first[l] = placed;

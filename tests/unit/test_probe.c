@@ -477,6 +477,61 @@ TEST_CASE(standing_still_squares_kept)
 	TEST_CHECK(probe_square_consistent(x, y, 3, NULL, 0, NULL, 0, false, BUDGET) == PROBE_INCONSISTENT);
 }
 
+/* OBLONG (probe.h): rectangles the judge names no square (long/short 1.25 to
+ * 1.5, judgeshape.c), projected exactly as the TABLE does (geom_project), every
+ * 9 degrees: the search over long/short in (PROBE_ASPECT, inf) never rules the
+ * true one out, with the probe's looks or with the squares alone. And the case
+ * that claimed a square in main (a 2.27 x 3.04 rectangle turned 1 degree, a
+ * 4 x 4 block): the square's search admits it too, so only OBLONG tells. */
+TEST_CASE(oblongs_never_rejected)
+{
+	uint64_t seed = 41;
+	int kept = 0, runs = 0;
+	for (int deg = 0; deg < 90; deg += 9)
+		for (int k = 0; k < 2; k++) {
+			double w = 2.1 + 0.35 * k + 0.01 * deg, aspect = 1.25 + 0.25 * k;
+			Polygon p = rect(w, w * aspect, deg, 15.3, 16.6);
+			observe(&p, corners, 3, 0, vec2(0.1 * (deg % 10), 0.5), 1, &seed);
+			ProbeVerdict v = probe_rect_consistent(bx, by, nb, looks, 3, cells, nc, true, PROBE_ASPECT,
+							       INFINITY, BUDGET);
+			TEST_CHECK(v != PROBE_INCONSISTENT);
+			TEST_CHECK(probe_rect_consistent(bx, by, nb, NULL, 0, NULL, 0, false, PROBE_ASPECT, INFINITY,
+							 BUDGET) != PROBE_INCONSISTENT);
+			kept += v == PROBE_CONSISTENT;
+			runs++;
+		}
+	TEST_CHECK(kept >= runs - 2); /* decided, not merely undecided, for nearly all */
+	Polygon v79 = rect(2.27, 3.04, 1, 15.06, 16.25);
+	observe(&v79, corners, 0, 0, vec2(0.5, 0.5), 1, &seed);
+	TEST_CHECK(nb == 16);
+	TEST_CHECK(probe_square_consistent(bx, by, nb, NULL, 0, NULL, 0, false, BUDGET) == PROBE_CONSISTENT);
+	TEST_CHECK(probe_rect_consistent(bx, by, nb, NULL, 0, NULL, 0, false, PROBE_ASPECT, INFINITY, BUDGET) ==
+		   PROBE_CONSISTENT);
+}
+
+/* OBLONG rules out: a 13 x 13 block of squares standing still is owned by no
+ * rectangle whose long side is over 1.2 times its short one (axis-aligned, it
+ * spans more than 11 and at most 13 on each axis: 13 / 11 < 1.2; a turned one
+ * cannot reach all four corner squares without owning one round them), and a
+ * 4 x 4 block by no rectangle under PROBE_MIN_SIDE's oblong over 2.1 (a 2.01 x 4
+ * one owns it: kept). */
+TEST_CASE(oblong_ruled_out_by_large_block)
+{
+	int32_t xs[169], ys[169], n = 0;
+	for (int32_t y = 20; y < 33; y++)
+		for (int32_t x = 20; x < 33; x++)
+			xs[n] = x, ys[n++] = y;
+	TEST_CHECK(probe_rect_consistent(xs, ys, n, NULL, 0, NULL, 0, false, PROBE_ASPECT, INFINITY, BUDGET) ==
+		   PROBE_INCONSISTENT);
+	TEST_CHECK(probe_square_consistent(xs, ys, n, NULL, 0, NULL, 0, false, BUDGET) == PROBE_CONSISTENT);
+	n = 0;
+	for (int32_t y = 20; y < 24; y++)
+		for (int32_t x = 20; x < 24; x++)
+			xs[n] = x, ys[n++] = y;
+	TEST_CHECK(probe_rect_consistent(xs, ys, n, NULL, 0, NULL, 0, false, PROBE_ASPECT, INFINITY, BUDGET) ==
+		   PROBE_CONSISTENT);
+}
+
 /* Degenerate input: nothing to test. */
 TEST_CASE(empty_is_undecided)
 {
@@ -498,6 +553,8 @@ int main(void)
 	TEST_RUN(narrow_squares_rejected);
 	TEST_RUN(standing_still_squares_kept);
 	TEST_RUN(judge_quadrilaterals_kept);
+	TEST_RUN(oblongs_never_rejected);
+	TEST_RUN(oblong_ruled_out_by_large_block);
 	TEST_RUN(empty_is_undecided);
 	return TEST_EXIT();
 }

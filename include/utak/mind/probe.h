@@ -141,6 +141,18 @@ typedef enum ProbeVerdict { PROBE_CONSISTENT, PROBE_INCONSISTENT, PROBE_UNDECIDE
 ProbeVerdict probe_square_consistent(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks,
 				     int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
 				     int64_t budget);
+/* probe_rect_consistent(..., amin, amax, budget): the same test over the
+ * rectangles whose long side / short side lies in (amin, amax] (sides at least
+ * PROBE_MIN_SIDE); probe_square_consistent is it over [1, PROBE_ASPECT]. Over
+ * (PROBE_ASPECT, INFINITY) it asks OBLONG: may a rectangle the judge names no
+ * square (judgeshape.c: long/short over 1.2) have given the same squares and
+ * looks? A square's squares alone (no look) nearly always may: a 2.27 x 3.04
+ * rectangle owns the same 4 x 4 squares as a 3.5 square. Not yet asked by the
+ * controller: a doubt on it before the probe doubts nearly every square claim
+ * (issue 13, the aspect12 helper's report). */
+ProbeVerdict probe_rect_consistent(const int32_t *bx, const int32_t *by, int32_t nb, const ProbeLook *looks,
+				   int32_t nlooks, const ProbeCell *cells, int32_t ncells, bool unplaced,
+				   double amin, double amax, int64_t budget);
 
 /* probe_least_width(bx, by, nb, looks, nlooks, cells, ncells, unplaced): a lower
  * bound on the width (least extent across any direction, doc/verdicts.md) of
