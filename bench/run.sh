@@ -15,7 +15,9 @@
 # compares with libtcod; (3) configuration-space erosion times; (4) skelbench: the
 # distance transform, skeleton, pathgraph and a corner-to-corner query on synthetic
 # rooms, random rectangles and a maze of 1024 to 4096 cells a side (linear growth)
-# and on Boston_0_1024; (5) tablebench: loading a 4096 x 4096 TABLE; (6) costbench:
+# and on Boston_0_1024, then (--scaling) each job's ns a cell from 256 to 4096 beside
+# the machine's floor, one read pass over the grid's bytes and over a 4-byte array;
+# (5) tablebench: loading a 4096 x 4096 TABLE; (6) costbench:
 # a move of 10^6 squares into the verge against one of 10, and the verdict of a
 # shape task against a corner task's, on 4096 objects (issue 14).
 # PATHBENCH_SAMPLE scenarios of each file, evenly spaced, are run, so the whole
@@ -76,6 +78,9 @@ echo
 echo "== skelbench 3 4096: skeleton planner on synthetic grids (and Boston_0_1024 when present; CPU ms)"
 if [ -f "$boston" ]; then "$benchdir/skelbench" 3 4096 "$boston" || st=1
 else "$benchdir/skelbench" 3 4096 || st=1; fi
+echo
+echo "== skelbench --scaling 7: ns a cell of each job from 256 to 4096 beside the read passes (issue 16)"
+"$benchdir/skelbench" --scaling 7 || st=1
 echo
 echo "== tablebench: a 4096 x 4096 TABLE with 200 objects"
 "$benchdir/tablebench" || st=1

@@ -27,7 +27,12 @@
  * skel (its distance transform included), pg (pathgraph_build), astar and jps
  * (gridpath_find between the ends by plain A* and by the jump-point search; the ends
  * as bench_ends picks them). Exit 2 when the two searches' lengths differ.
- * compare.py times the peers on the same files in the same run. */
+ * compare.py times the peers on the same files in the same run.
+ *
+ *   skelbench --scaling [REPEATS [LARGEST]]
+ * Each job's ns a cell on the rooms, rects and maze grids at every side from 256 to
+ * LARGEST (4096), medians of REPEATS rounds (7, at least 5) that time every side in
+ * turn, beside the machine's floor at each size (read passes): see bench_scaling. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -556,8 +561,202 @@ static int bench_compare(const char *dir, char **maps, int count, int32_t only)
 	return 0;
 }
 
+/* ---------------------------------------------------------------- --scaling */
+
+/* skelbench --scaling [REPEATS [LARGEST]] (issue 16, "costs linear in cells from 256
+ * to 4096"): for each of the rooms, rects and maze grids, all sides from 256 to
+ * LARGEST (default 4096) are built at once, each with its own skeleton, pathgraph and
+ * searches, and every round (REPEATS of them, at least 5, default 7) times every job
+ * on every side in turn (the sides in alternate directions from round to round), so
+ * that the load of this shared machine falls on all sides alike (after one round
+ * not timed, which first touches the working memory). Printed per side:
+ * the median ns a cell of each job (thread CPU time over w h), and beside them the
+ * floor of the machine at that size: one read pass over the grid's bytes (read8: 1
+ * byte a cell, 16 MB at 4096) and over a 4-byte array of the grid's size (read32, as
+ * dist2: 64 MB at 4096), each summing 8 bytes a load, and one load of every line of
+ * that 4-byte array down its columns (down32: bench_read_down, the floor of an
+ * access order the prefetchers cannot follow). Then, per job, its ns a cell at each
+ * side over that at 256 (growth), and its time in read32 and in down32 passes ("x
+ * r32", "x d32": linear in cells, within the machine's floor, means one of these
+ * columns is even from 256 to 4096). A* and jump points also in ns per cell
+ * expanded (their expansions are not proportional to the cells).
+ * Jobs: edt (skeleton_edt), skel (skeleton_compute, its transform included), pg
+ * (pathgraph_build), astar and jps (gridpath_find between bench_ends' ends). */
+#define SKELBENCH_SCALING_SIDES 5
+
+typedef struct BenchSide {
+	Grid g;
+	int32_t *d2;
+	uint32_t *wide; /* the 4-byte read pass's array, the grid's size */
+	Skeleton s;
+	Pathgraph pg;
+	GridPathSearch astar, jump;
+	Path pa, pj;
+	int32_t sx, sy, gx, gy;
+} BenchSide;
+
+enum { SC_READ8, SC_READ32, SC_DOWN32, SC_EDT, SC_SKEL, SC_PG, SC_ASTAR, SC_JPS, SC_JOBS };
+
+/* bench_read_down(a, w, h): one pass reading one 4-byte value of every 64-byte line
+ * of a (w x h, w a multiple of 16), down the columns: no two loads in a row share a
+ * line, a page (at 1024 a side and up) or a stride the hardware prefetchers follow
+ * across pages: the floor of a job that reads a grid-sized array in an order of its
+ * own (a walk along a chain, a level's cells across the grid), as read32 is of one
+ * that streams. */
+static uint64_t bench_read_down(const uint32_t *a, int32_t w, int32_t h)
+{
+	uint64_t sum = 0;
+	for (int32_t x = 0; x < w; x += 16)
+		for (int32_t y = 0; y < h; y++)
+			sum += a[(size_t)y * w + x];
+	return sum;
+}
+
+/* bench_read_words(p, bytes): one pass reading bytes (a multiple of 8) 8 at a time. */
+static uint64_t bench_read_words(const void *p, size_t bytes)
+{
+	const unsigned char *b = p;
+	uint64_t sum = 0;
+	for (size_t i = 0; i + 8 <= bytes; i += 8) {
+		uint64_t v;
+		memcpy(&v, b + i, 8);
+		sum += v;
+	}
+	return sum;
+}
+
+static int bench_scaling(int repeats, int32_t largest)
+{
+	static const char *const names[] = {"rooms", "rects", "maze"};
+	void (*const make[])(Grid *, int32_t) = {bench_rooms, bench_rects, bench_maze};
+	static const int32_t all[SKELBENCH_SCALING_SIDES] = {256, 512, 1024, 2048, 4096};
+	static const char *const keys[SC_JOBS] = {"read8", "read32", "down32", "edt",
+	                                          "skel",  "pg",     "astar",  "jps"};
+	int nsides = 0;
+	while (nsides < SKELBENCH_SCALING_SIDES && all[nsides] <= largest)
+		nsides++;
+	printf("# --scaling: ns a cell (thread CPU / w h), medians of %d rounds, every side "
+	       "timed in each round; read8/read32: one read pass over 1 and 4 bytes a cell, "
+	       "down32: a load of each line of the 4-byte array down its columns; growth: "
+	       "over 256; x r32, x d32: edt skel pg astar jps in read32 and down32 passes\n",
+	       repeats);
+	double *t = malloc(sizeof *t * (size_t)repeats * SC_JOBS * SKELBENCH_SCALING_SIDES);
+	for (int k = 0; k < 3; k++) {
+		BenchSide side[SKELBENCH_SCALING_SIDES];
+		int64_t exp_a[SKELBENCH_SCALING_SIDES], exp_j[SKELBENCH_SCALING_SIDES];
+		for (int z = 0; z < nsides; z++) {
+			BenchSide *b = &side[z];
+			bench_seed = 2026;
+			make[k](&b->g, all[z]);
+			const size_t n = (size_t)all[z] * all[z];
+			b->d2 = malloc(sizeof *b->d2 * n);
+			b->wide = malloc(sizeof *b->wide * n);
+			for (size_t i = 0; i < n; i++)
+				b->wide[i] = (uint32_t)i;
+			skeleton_init(&b->s);
+			pathgraph_init(&b->pg);
+			gridpath_init(&b->astar, &b->g);
+			gridpath_init(&b->jump, &b->g);
+			b->jump.method = GRIDPATH_JUMP;
+			path_init(&b->pa);
+			path_init(&b->pj);
+			Vec2 from, to;
+			bench_ends(&b->g, &from, &to);
+			b->sx = (int32_t)from.x;
+			b->sy = (int32_t)from.y;
+			b->gx = (int32_t)to.x;
+			b->gy = (int32_t)to.y;
+		}
+		volatile uint64_t sink = 0;
+		/* round -1 warms up: first touches of the working memory are not timed */
+		for (int r = -1; r < repeats; r++)
+			for (int q = 0; q < nsides; q++) {
+				const int z = r % 2 ? nsides - 1 - q : q;
+				BenchSide *b = &side[z];
+				const size_t n = (size_t)b->g.w * b->g.h;
+				double len;
+				double c[SC_JOBS + 1];
+				c[0] = bench_now_ms();
+				sink += bench_read_words(b->g.cells, n);
+				c[1] = bench_now_ms();
+				sink += bench_read_words(b->wide, 4 * n);
+				c[2] = bench_now_ms();
+				sink += bench_read_down(b->wide, b->g.w, b->g.h);
+				c[3] = bench_now_ms();
+				skeleton_edt(&b->g, b->d2);
+				c[4] = bench_now_ms();
+				skeleton_compute(&b->s, &b->g);
+				c[5] = bench_now_ms();
+				pathgraph_build(&b->pg, &b->s, &b->g);
+				c[6] = bench_now_ms();
+				gridpath_find(&b->astar, b->sx, b->sy, b->gx, b->gy, &b->pa, &len);
+				c[7] = bench_now_ms();
+				gridpath_find(&b->jump, b->sx, b->sy, b->gx, b->gy, &b->pj, &len);
+				c[8] = bench_now_ms();
+				for (int j = 0; j < SC_JOBS && r >= 0; j++)
+					t[((size_t)z * SC_JOBS + j) * repeats + r] =
+					    (c[j + 1] - c[j]) * 1e6 / (double)n;
+				exp_a[z] = b->pa.expanded;
+				exp_j[z] = b->pj.expanded;
+			}
+		(void)sink;
+		double med[SKELBENCH_SCALING_SIDES][SC_JOBS];
+		printf("%-6s %5s |", names[k], "side");
+		for (int j = 0; j < SC_JOBS; j++)
+			printf(" %6s", keys[j]);
+		printf(" | %9s %9s | %8s %8s\n", "A* exp", "jps exp", "A* ns/e", "jps ns/e");
+		for (int z = 0; z < nsides; z++) {
+			printf("%-6s %5d |", names[k], (int)all[z]);
+			for (int j = 0; j < SC_JOBS; j++) {
+				BenchFigure f =
+				    bench_figure(&t[((size_t)z * SC_JOBS + j) * repeats], repeats);
+				med[z][j] = f.median;
+				printf(" %6.2f", f.median);
+			}
+			const double n = (double)all[z] * all[z];
+			printf(" | %9lld %9lld | %8.1f %8.1f\n", (long long)exp_a[z],
+			       (long long)exp_j[z],
+			       exp_a[z] ? med[z][SC_ASTAR] * n / (double)exp_a[z] : 0.0,
+			       exp_j[z] ? med[z][SC_JPS] * n / (double)exp_j[z] : 0.0);
+		}
+		/* growth: each side's ns a cell over 256's; then in read32 passes */
+		for (int z = 0; z < nsides; z++) {
+			printf("%-6s %5d growth", names[k], (int)all[z]);
+			for (int j = 0; j < SC_JOBS; j++)
+				printf(" %s %.2f", keys[j], med[z][j] / med[0][j]);
+			printf(" | x r32");
+			for (int j = SC_EDT; j < SC_JOBS; j++)
+				printf(" %.1f", med[z][j] / med[z][SC_READ32]);
+			printf(" | x d32");
+			for (int j = SC_EDT; j < SC_JOBS; j++)
+				printf(" %.2f", med[z][j] / med[z][SC_DOWN32]);
+			printf("\n");
+		}
+		fflush(stdout);
+		for (int z = 0; z < nsides; z++) {
+			BenchSide *b = &side[z];
+			path_free(&b->pa);
+			path_free(&b->pj);
+			gridpath_free(&b->astar);
+			gridpath_free(&b->jump);
+			pathgraph_free(&b->pg);
+			skeleton_free(&b->s);
+			free(b->d2);
+			free(b->wide);
+			grid_free(&b->g);
+		}
+	}
+	free(t);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
+	if (argc > 1 && strcmp(argv[1], "--scaling") == 0) {
+		int repeats = argc > 2 ? atoi(argv[2]) : 7;
+		int32_t largest = argc > 3 ? atoi(argv[3]) : 4096;
+		return bench_scaling(repeats < 5 ? 5 : repeats, largest);
+	}
 	if (argc > 2 && strcmp(argv[1], "--compare") == 0) {
 		if (argc > 4 && strcmp(argv[3], "--side") == 0) {
 			int32_t side = atoi(argv[4]);

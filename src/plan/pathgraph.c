@@ -179,7 +179,37 @@
  *    skeletonize / utak 7.35 at 1024 and 6.33 at 4096: README's Benchmarks); a run north or south a cell at a time; the corner's fourth cell free by
  *    the last cell's dist2 > 2 (no load); a prefetch extrapolated from the cell 8
  *    steps back, or 4 or 16 rows on; step (0)'s empty words told by a mask, without a
- *    branch; the walk made twice, without the loop's stop test for steps (2). */
+ *    branch; the walk made twice, without the loop's stop test for steps (2).
+ *    Then the scaling round (issue 16, "costs linear in cells from 256 to 4096";
+ *    `skelbench --scaling`): from 1024 to 4096 the build cost 2.0-2.7 times as much a
+ *    grid cell on rooms and rects and 1.5 on the maze (its instructions 16.1 times, so
+ *    the cache: callgrind's simulated 32 MB last level, 0 read misses at 1024, 0.3 a
+ *    skeleton cell at 4096 on the maze, most in the walk). perf on rooms at 4096: 47%
+ *    of the walk's samples (builds repeated without the skeleton between) on two loads
+ *    of dist2, the cell's and the cut corner's. The rooms' diagonals are staircases, a
+ *    row north or south and a cell east or west by turns: 8 rows on, the walk is 8
+ *    cells (32 bytes) east or west of the cell the single prefetch asked for, on
+ *    another line about half the time.
+ *    PATHGRAPH_AHEAD now asks for three lines 16 rows on, 16 cells either side too.
+ *    The same graph, array for array (a hash of every array and every cell_ref, the
+ *    former pathgraph.c linked in the same driver under other names: 1500 random grids
+ *    1 to 300 a side, the bench grids below). Time, that driver, the build just after a
+ *    skeleton_compute, old and new alternating, medians of 9 (21 or 41 at 1024 and
+ *    below; loaded machine, load 5-7): old / new at 4096 rooms 9.68 -> 8.15 ms (1.19
+ *    times), rects 13.06 -> 10.54 (1.24), maze 42.2 -> 38.7 (1.09), Boston_0_1024
+ *    2.04 -> 1.81 (1.13), den520d 0.98 -> 0.97 (1.00); at 2048 1.22, 1.26, 1.06; at 1024
+ *    rooms 0.57 -> 0.41, rects 0.79 -> 0.57, maze 2.29 -> 2.07, Boston_0_1024 0.48 ->
+ *    0.38, den520d 0.12 -> 0.12; at 256 and 512 0.97-1.01 (dist2 in the core's 1 MB:
+ *    the prefetches are instructions). Also measured there: 8 rows on with two lines
+ *    8 cells either side (1.08-1.16 at 4096), 24 or 32 rows with 4 or 5 lines (rooms
+ *    and rects 1.2-1.35 but Boston_0_1024 and den520d at 4096 0.91-0.98), 12 or 6 rows
+ *    with two lines (less than 16 with three). Tried and dropped in the same round:
+ *    the walk without its dist2 loads, the edge measured afterwards in a loop of its
+ *    own over its cells (edgerun_push, so the same doubles; its loads independent):
+ *    0.95 at 4096 on rooms and rects, 1.05 on the maze, 1.07-1.15 slower at 1024; and
+ *    2 MB pages for every large array (glibc.malloc.hugetlb=1, which advises
+ *    MADV_HUGEPAGE): no change beyond the noise (this machine's L2 TLB reaches 8 MB
+ *    with 4 KB pages, and the walk's misses are of the caches, not of the TLB). */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
@@ -607,17 +637,27 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
 	 * grid the walk reads), the ref from the cell's record, found by its rank: a
 	 * step north or south counts the bits before it in its word. The cut corner's
 	 * fourth cell is free by its dist2 (only at turns). */
-/* A step north or south asks for dist2 8 rows on in the same direction: each row is a
- * new page of dist2 at 4096 (16 KB a row), where the hardware's prefetchers stop, and
- * a corridor runs on straight most steps (see MEASURED: 7-9% off at 4096 and on the
- * 1024 maze; 16 rows on gained less). No fault is possible: a prefetch of an address
- * past the array is a hint, taken as an integer, not a pointer into it. */
+/* A step north or south asks for dist2 PATHGRAPH_AHEAD_ROWS rows on in the same
+ * direction: each row is a new page of dist2 at 4096 (16 KB a row), where the
+ * hardware's prefetchers stop. It asks for three lines there, the cell's and those
+ * PATHGRAPH_AHEAD_ROWS cells east and west of it, so that a walk that drifts east or
+ * west by up to a cell a row on its way (a staircase of 45 degrees or steeper: the
+ * diagonals of a room) finds its line fetched as well as a straight corridor does
+ * (see MEASURED: one line 8 rows on took 7-9% off at 4096 and on the 1024 maze;
+ * three lines 16 rows on 6-18% more at 4096, the scaling round). No fault is
+ * possible: a prefetch of an address past the array is a hint, taken as an integer,
+ * not a pointer into it. */
+#define PATHGRAPH_AHEAD_ROWS 16
 #if defined(__GNUC__)
 #define PATHGRAPH_AHEAD(D, STEP)                                                                   \
 	do {                                                                                       \
-		if ((D)&1)                                                                         \
-			__builtin_prefetch((const void *)((uintptr_t)(dist2 + cur) +               \
-			                                  (uintptr_t)(8 * (STEP)) * 4));           \
+		if ((D)&1) {                                                                       \
+			const uintptr_t at_ = (uintptr_t)(dist2 + cur) +                           \
+			                      (uintptr_t)(PATHGRAPH_AHEAD_ROWS * (STEP)) * 4;      \
+			__builtin_prefetch((const void *)(at_ - 4 * PATHGRAPH_AHEAD_ROWS));        \
+			__builtin_prefetch((const void *)at_);                                     \
+			__builtin_prefetch((const void *)(at_ + 4 * PATHGRAPH_AHEAD_ROWS));        \
+		}                                                                                  \
 	} while (0)
 #else
 #define PATHGRAPH_AHEAD(D, STEP) ((void)0)
