@@ -70,6 +70,17 @@
  * fifth less but ran 1.1 to 1.3 times slower; so did a first pass for the mask of
  * taken neighbours, and buckets 4 or 16 times finer (153, 159 M).
  *
+ * SCALING (issue 16's scaling round, `skelbench --scaling`, every side timed in each
+ * round, medians of 7 and 9, three runs, loaded): corner to corner on rooms, rects
+ * and the maze from 256 to 4096 a side, plain A* costs 9.4-10.8, 11.1-14.0 and
+ * 15.0-18.6 ns a cell expanded at 256 and 11.4-12.1, 10.2-11.4 and 20.6-22.1 at
+ * 4096 (rooms about 1.15 times, the maze 1.1-1.5: its nodes, 0.5 MB at 256, 134 MB
+ * at 4096, leave the caches; the prefetches below hide most of it); the jump search
+ * 240-340, 260-375 and 100-135 ns a jump point expanded at 256, 256-300, 258-320 and
+ * 115-125 at 4096 (flat within the noise). A cell of the grid costs what its expansions do: the
+ * cells a query expands are not proportional to the grid's (the 2048 maze's ends
+ * are 807 097 cells apart by A*, the 1024's 687 929). Nothing was changed for it.
+ *
  * PREFETCH: a cell pushed by step d is expanded later and then reads the line of
  * the cell one more step d beyond it, a new row or column that no hardware
  * prefetcher foresees when the search runs along a column; gridpath_prefetch asks

@@ -215,6 +215,38 @@
  *    Benchmarks): the figures, by part, are in the MEASURED sections of skellevel.c
  *    (the planes and subfields, the whole skeleton_compute), edt.c (phase 1 for AVX2)
  *    and skelprune.c (the pruning's recheck marking).
+ *    The scaling round (issue 16, "costs linear in cells from 256 to 4096";
+ *    `skelbench --scaling`, which times every side in each round): skeleton_compute
+ *    costs 4.7-5.1, 5.2-5.6 and 1.9-2.1 ns a cell on rooms, rects and the maze at 256,
+ *    512 and 1024, then 5.6-5.8, 6.0 and 1.9-2.0 at 2048 and 6.5-6.8, 7.1-7.2 and
+ *    2.2 at 4096 (1.3-1.4, 1.3 and 1.1 times its 256 figure), while one read pass
+ *    over a 4-byte array the grid's size costs 0.14 ns a cell at every side (the
+ *    prefetchers follow it) and a load of each of its lines in an order they cannot
+ *    follow 0.05 at 256, 0.15 at 1024 and 0.67 at 4096. By function (perf, software
+ *    clock; ns a cell at 1024 -> 4096): rooms: the visits (thinner_visit_all) 1.58 ->
+ *    2.51, thinner_ridge_end 0.22 -> 1.12 (296 000 calls at 4096, about 60 ns each:
+ *    its dist2 loads, which nothing before it has brought in), skelsort_rows 1.49 ->
+ *    1.59, the transform 0.57 -> 0.56; rects: the visits 1.95 -> 3.14,
+ *    thinner_ridge_end 0.10 -> 0.72, skelsort_rows 1.77 -> 2.24 (its scatter into a
+ *    64 MB order). Instructions grow with the cells but for the visits' prefetches
+ *    above THIN_PREFETCH_BYTES (callgrind, rooms, 89 -> 99 a cell); last-level
+ *    misses (callgrind's simulated 32 MB, one call) 0.001 -> 0.27 a cell (the visits
+ *    0.10, skelsort_rows 0.13): each distance level sweeps the whole grid, sparsely,
+ *    and at 4096 the 17 MB state and the 64 MB dist2 stay in no cache. Tried and
+ *    dropped (each switched at run time in one driver, alternating, medians of 9 to
+ *    21 at 4096): dist2 prefetched for the cell THIN_AHEAD visits on, its line or its
+ *    three rows (rooms 1.01 and 1.04, rects 1.16 and 1.28 times slower, the maze 1.01
+ *    and 1.02: a ridge test follows 1.5% of the visits on rooms, so most of those
+ *    lines are fetched for nothing); the same only where the raster of that cell,
+ *    read from its rows prefetched earlier, is THIN_RIDGE (8 or 16 visits on, the rows
+ *    16 or 32 on: rooms and rects 1.03-1.09 slower, the maze unchanged: the second
+ *    raster a visit costs more than the misses it spares); the cell's own state row
+ *    prefetched with the rows above and below (5-6% off rects in that driver, but
+ *    0.97-1.03 on the five grids at 4096 against the former skeleton.c linked beside
+ *    it under other names: the noise); 2 MB pages for every large allocation (glibc's
+ *    glibc.malloc.hugetlb=1, which advises MADV_HUGEPAGE: 0-5%, not steady). What
+ *    would remove the growth changes the order of the visits within a level (by
+ *    tiles rather than by index), and so the skeleton where the tie-break chose.
  *    The transform's own figures are in edt.c's header. */
 #include "utak/plan/skeleton.h"
 
