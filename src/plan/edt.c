@@ -130,7 +130,7 @@
  *    timed in each round, medians of 7 and 9, three runs, loaded): skeleton_edt costs
  *    0.74-0.90 ns a cell on rooms, 0.81-0.92 on rects and 0.54-0.68 on the maze at
  *    every side from 256 to 4096; 4096 over 256: 0.93-1.01, 0.98-1.02 and 1.02-1.13
- *    (the maze's bands from 2048 read the cells twice); 5.4-6.3 one-pass reads of a
+ *    (the maze's bands from 2048 read the cells twice); 5.4-6.4 one-pass reads of a
  *    4-byte array the grid's size on rooms and rects, 3.7-4.6 on the maze, at every
  *    side. Linear: its rows and bands stay in the core's cache at every size, and it
  *    writes dist2 in order. Nothing was changed for it. */

@@ -206,7 +206,10 @@
  *    with two lines (less than 16 with three). Tried and dropped in the same round:
  *    the walk without its dist2 loads, the edge measured afterwards in a loop of its
  *    own over its cells (edgerun_push, so the same doubles; its loads independent):
- *    0.95 at 4096 on rooms and rects, 1.05 on the maze, 1.07-1.15 slower at 1024; and
+ *    0.95 at 4096 on rooms and rects, 1.05 on the maze, 1.07-1.15 slower at 1024; the
+ *    first 16 rows of a walk prefetched at its start too (two lines every 4 rows, in
+ *    the direction of its first step, or both ways from a step east or west): 0.99-1.02
+ *    at 4096 on rooms, rects, the maze and Boston_0_1024; and
  *    2 MB pages for every large array (glibc.malloc.hugetlb=1, which advises
  *    MADV_HUGEPAGE): no change beyond the noise (this machine's L2 TLB reaches 8 MB
  *    with 4 KB pages, and the walk's misses are of the caches, not of the TLB). */
