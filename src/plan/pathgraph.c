@@ -181,38 +181,28 @@
  *    steps back, or 4 or 16 rows on; step (0)'s empty words told by a mask, without a
  *    branch; the walk made twice, without the loop's stop test for steps (2).
  *    Then the scaling round (issue 16, "costs linear in cells from 256 to 4096";
- *    `skelbench --scaling`): from 1024 to 4096 the build cost 2.0-2.7 times as much a
- *    grid cell on rooms and rects and 1.5 on the maze (its instructions 16.1 times, so
- *    the cache: callgrind's simulated 32 MB last level, 0 read misses at 1024, 0.3 a
- *    skeleton cell at 4096 on the maze, most in the walk). perf on rooms at 4096: 47%
- *    of the walk's samples (builds repeated without the skeleton between) on two loads
- *    of dist2, the cell's and the cut corner's. The rooms' diagonals are staircases, a
- *    row north or south and a cell east or west by turns: 8 rows on, the walk is 8
- *    cells (32 bytes) east or west of the cell the single prefetch asked for, on
- *    another line about half the time.
- *    PATHGRAPH_AHEAD now asks for three lines 16 rows on, 16 cells either side too.
- *    The same graph, array for array (a hash of every array and every cell_ref, the
- *    former pathgraph.c linked in the same driver under other names: 1500 random grids
- *    1 to 300 a side, the bench grids below). Time, that driver, the build just after a
- *    skeleton_compute, old and new alternating, medians of 9 (21 or 41 at 1024 and
- *    below; loaded machine, load 5-7): old / new at 4096 rooms 9.68 -> 8.15 ms (1.19
- *    times), rects 13.06 -> 10.54 (1.24), maze 42.2 -> 38.7 (1.09), Boston_0_1024
- *    2.04 -> 1.81 (1.13), den520d 0.98 -> 0.97 (1.00); at 2048 1.22, 1.26, 1.06; at 1024
- *    rooms 0.57 -> 0.41, rects 0.79 -> 0.57, maze 2.29 -> 2.07, Boston_0_1024 0.48 ->
- *    0.38, den520d 0.12 -> 0.12; at 256 and 512 0.97-1.01 (dist2 in the core's 1 MB:
- *    the prefetches are instructions). Also measured there: 8 rows on with two lines
- *    8 cells either side (1.08-1.16 at 4096), 24 or 32 rows with 4 or 5 lines (rooms
- *    and rects 1.2-1.35 but Boston_0_1024 and den520d at 4096 0.91-0.98), 12 or 6 rows
- *    with two lines (less than 16 with three). Tried and dropped in the same round:
- *    the walk without its dist2 loads, the edge measured afterwards in a loop of its
- *    own over its cells (edgerun_push, so the same doubles; its loads independent):
- *    0.95 at 4096 on rooms and rects, 1.05 on the maze, 1.07-1.15 slower at 1024; the
- *    first 16 rows of a walk prefetched at its start too (two lines every 4 rows, in
- *    the direction of its first step, or both ways from a step east or west): 0.99-1.02
- *    at 4096 on rooms, rects, the maze and Boston_0_1024; and
- *    2 MB pages for every large array (glibc.malloc.hugetlb=1, which advises
- *    MADV_HUGEPAGE): no change beyond the noise (this machine's L2 TLB reaches 8 MB
- *    with 4 KB pages, and the walk's misses are of the caches, not of the TLB). */
+ *    `skelbench --scaling`): from 256 to 4096 the build cost 2.0-2.9 times as much a
+ *    grid cell on rooms and rects, 1.7-1.9 on the maze, while its instructions grow
+ *    with the cells (maze, 1024 to 4096: 16.1 times; callgrind's simulated 32 MB last
+ *    level: no read misses at 1024, 0.3 a skeleton cell at 4096, most in the walk).
+ *    perf, rooms at 4096: 47% of the walk on two loads of dist2, the cell's and the
+ *    cut corner's.
+ *    The rooms' diagonals are staircases: 8 rows on, the walk is 8 cells (32 bytes)
+ *    east or west of the cell the single prefetch asked for. PATHGRAPH_AHEAD now asks
+ *    for three lines 16 rows on, 16 cells either side too. The same graph, array for
+ *    array (hashes of every array and cell_ref against the former pathgraph.c linked
+ *    in one driver under other names: 1500 random grids, the bench grids); that
+ *    driver, old and new alternating after a skeleton_compute, medians of 9 to 41
+ *    (load 5-7): 4096 rooms 9.68 -> 8.15 ms, rects 13.06 -> 10.54, maze 42.2 -> 38.7,
+ *    Boston_0_1024 2.04 -> 1.81, den520d 0.98 -> 0.97; 2048 1.06-1.26 times faster;
+ *    1024 rooms 0.57 -> 0.41, rects 0.79 -> 0.57, maze 2.29 -> 2.07, Boston_0_1024
+ *    0.48 -> 0.38, den520d 0.12 -> 0.12; 256 and 512 0.97-1.01. Also measured: 8 rows
+ *    on, two lines (1.08-1.16 at 4096); 24 or 32 rows, 4 or 5 lines (rooms and rects
+ *    1.27-1.36, Boston_0_1024 and den520d 0.91-1.00); 6 or 12 rows, two lines (less).
+ *    Dropped: the edge measured after its walk in a loop of its own (edgerun_push,
+ *    the same doubles, independent loads): old / new 1.05 at 4096 on rooms and rects,
+ *    0.96 on the maze, 0.86-0.94 at 1024; the first 16 rows of a walk prefetched at
+ *    its start: 0.99-1.02; 2 MB pages (glibc.malloc.hugetlb=1): within the noise. */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
@@ -647,7 +637,8 @@ PATHGRAPH_CLONES static void builder_edge_from(Builder *b, int32_t v, int32_t c,
  * west by up to a cell a row on its way (a staircase of 45 degrees or steeper: the
  * diagonals of a room) finds its line fetched as well as a straight corridor does
  * (see MEASURED: one line 8 rows on took 7-9% off at 4096 and on the 1024 maze;
- * three lines 16 rows on 6-18% more at 4096, the scaling round). No fault is
+ * three lines 16 rows on made the build 1.09-1.24 times faster again at 4096, the
+ * scaling round, but on den520d, unchanged). No fault is
  * possible: a prefetch of an address past the array is a hint, taken as an integer,
  * not a pointer into it. */
 #define PATHGRAPH_AHEAD_ROWS 16

@@ -217,7 +217,7 @@
  *    and skelprune.c (the pruning's recheck marking).
  *    The scaling round (issue 16, "costs linear in cells from 256 to 4096";
  *    `skelbench --scaling`, which times every side in each round): skeleton_compute
- *    costs 4.7-5.1, 5.2-5.6 and 1.9-2.1 ns a cell on rooms, rects and the maze at 256,
+ *    costs 4.6-5.1, 5.2-5.6 and 1.9-2.1 ns a cell on rooms, rects and the maze at 256,
  *    512 and 1024, then 5.6-5.8, 6.0 and 1.9-2.0 at 2048 and 6.5-6.8, 7.1-7.2 and
  *    2.2 at 4096 (1.3-1.4, 1.3 and 1.1 times its 256 figure), while one read pass
  *    over a 4-byte array the grid's size costs 0.14 ns a cell at every side (the
