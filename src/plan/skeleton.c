@@ -244,7 +244,8 @@
  *    prefetched with the rows above and below (5-6% off rects in that driver, but
  *    0.97-1.03 on the five grids at 4096 against the former skeleton.c linked beside
  *    it under other names: the noise); 2 MB pages for every large allocation (glibc's
- *    glibc.malloc.hugetlb=1, which advises MADV_HUGEPAGE: 0-5%, not steady). What
+ *    glibc.malloc.hugetlb=1, which advises MADV_HUGEPAGE: 0-5%, not steady); the
+ *    visits' prefetches from 2 MB of state, so at 2048 too (0.97-1.02 there). What
  *    would remove the growth changes the order of the visits within a level (by
  *    tiles rather than by index), and so the skeleton where the tie-break chose.
  *    The transform's own figures are in edt.c's header. */
