@@ -182,10 +182,10 @@ void wm_regrow_held(WorldModel *m, const bool *was_floor)
 	}
 }
 
-/* held_on_solid(m, x, y): how many held squares, Utak on square (x, y), lie on
+/* wm_held_on_solid(m, x, y): how many held squares, Utak on square (x, y), lie on
  * squares the model surely believes occupied (seen, p >= 0.5, conf >= WM_BLOCKED_CONF):
  * the object lifted (wm_vacate), by something else. */
-static int32_t held_on_solid(const WorldModel *m, int32_t x, int32_t y)
+int32_t wm_held_on_solid(const WorldModel *m, int32_t x, int32_t y)
 {
 	int32_t n = 0;
 	for (int32_t j = 0; j < m->held_count; j++) {
@@ -226,10 +226,10 @@ void wm_register_held(WorldModel *m, int32_t x, int32_t y, const Evidence *held,
 {
 	int32_t compared;
 	double best = wm_score_holding(m, x, y, held, under, imp, &compared);
-	int32_t bx = 0, by = 0, solid = held_on_solid(m, x, y);
+	int32_t bx = 0, by = 0, solid = wm_held_on_solid(m, x, y);
 	for (int32_t sy = -1; sy <= 1; sy++)
 		for (int32_t sx = -1; sx <= 1; sx++) {
-			if ((sx == 0 && sy == 0) || held_on_solid(m, x + sx, y + sy) > solid)
+			if ((sx == 0 && sy == 0) || wm_held_on_solid(m, x + sx, y + sy) > solid)
 				continue;
 			for (int32_t j = 0; j < m->held_count; j++) {
 				m->held_dx[j] += sx;

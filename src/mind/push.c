@@ -21,7 +21,8 @@
  * the start's room on his own room map and no object touch has not felt (seen
  * only coarsely or in the fovea), taken for wall, may part the start's hall from
  * all of them (hallsplit.h, as task (i) asks
- * of Utak: held_room_split); the survey does not yet make (i)'s looks. Seated
+ * of Utak: held_room_split); the survey does not yet make (i)'s looks; and only on
+ * the held squares the last impression shows whole (pushseen.h). Seated
  * short, with another object in the way, Utak moves it out of the way first
  * (pushclear.h). */
 #include "utak/mind/push.h"
@@ -35,6 +36,7 @@
 #include "utak/mind/goals.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/pushclear.h"
+#include "utak/mind/pushseen.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
 #include "utak/plan/cspace.h"
@@ -499,12 +501,15 @@ static bool push_held_is_task_shape(const Controller *c)
 }
 
 /* push_seat_finish(c): both axes pressed: the corner as Utak now sees it, and what he
- * holds, judged before he lets go; the corner claimed only when the model can tell it
- * is of the start's room, as for task (i), and that no floor seen that would beat it
- * may be of that room (roomdoubt_hidden): else he doubts the corner. */
+ * holds, judged before he lets go; the corner claimed only when the held squares the
+ * last impression shows whole reach it (pushseen.h: a square in a cell only partly
+ * occupied may be floor), the model can tell it is of the start's room, as for task
+ * (i), and no floor seen that would beat it may be of that room (roomdoubt_hidden):
+ * else he doubts the corner. */
 void push_seat_finish(Controller *c)
 {
 	int64_t short_by = goals_corner_shortfall(c);
+	Vec2 at = c->model.utak;
 	if (!push_held_is_task_shape(c)) {
 		/* What came along is not what the task named: another object touching
 		 * it was grasped, or the model lost part of it. */
@@ -516,7 +521,14 @@ void push_seat_finish(Controller *c)
 		if (!pushclear_begin(c, short_by))
 			goals_corner_failed(c, short_by);
 	}
-	else if (held_room_doubt(c)) {
+	else if (pushseen_check(c, short_by, &at)) {
+		/* The held squares that reach the corner, by the model, are not all
+		 * the last impression establishes (pushseen.h). */
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: its squares nearest it, about (%.1f, %.1f), are seen only in part or coarsely, and those the eye shows whole fall short",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
+	} else if (held_room_doubt(c)) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why,
 			 "Utak cannot tell the %s he pushed the %s into is of the room he started in: a wall between may be seen only coarsely",

@@ -251,7 +251,10 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
  * WORLDMODEL_DISPARITY_RADIUS of the predicted one, and along the commanded
  * straight line (a move may have halted), are tried, and the best match becomes
  * Utak's believed position. After a push every position is tried with the held
- * object beside it (it moves with Utak, halted or not); it is put down beside the
+ * object beside it (it moves with Utak, halted or not), and of those the eye cannot
+ * tell from the best (within WORLDMODEL_DISPARITY_MARGIN) the one that puts the
+ * fewest held squares on squares surely occupied wins (two things do not share a
+ * square); it is put down beside the
  * position found (with m->register_held, shifted by a square on either axis where
  * the impression shows it lagged or led his square: it rides with his point, not
  * his square, and a push halted a fraction of a square on, or gone astray, can

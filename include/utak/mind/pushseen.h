@@ -1,0 +1,41 @@
+/* pushseen.h - what the eye establishes of a pushed object's place before Utak
+ * claims it in a corner (paper 3.4.1: a cell's gray level is how many of its squares
+ * are occupied; 3.5: the held object's place is inferred from his own motion, and
+ * the impression is the only check on it; 2.3 task (v)). CONTROLLER SIDE: called by
+ * push.c's push_seat_finish.
+ *
+ * A cell of the retina over s x s squares has the level round(7 k / s^2) of the k of
+ * them occupied: for a fovea cell (1 x 1) and an intermediate one (2 x 2) every k
+ * has its own level, for a peripheral one (4 x 4) two k may share one. A square of
+ * the held set is ESTABLISHED when the last impression leaves no way for it to be
+ * floor: every count the level allows fills its whole cell. */
+#ifndef UTAK_PUSHSEEN_H
+#define UTAK_PUSHSEEN_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "utak/mind/controller.h"
+
+/* pushseen_counts(level, n, &kmin, &kmax): the least and most occupied squares of n
+ * (1, 4 or 16) a cell at this gray level may hold (eye_level(k, n) == level); false,
+ * and nothing set, when no count gives that level. */
+bool pushseen_counts(int level, int32_t n, int32_t *kmin, int32_t *kmax);
+
+/* pushseen_forced(level, n): every square of a cell of n squares at this level is
+ * occupied, by every count the level allows (a 1 x 1 or 2 x 2 cell at level 7; a
+ * 4 x 4 cell never: level 7 is 15 of 16 as well). WHY not fewer, with the cell's
+ * squares the model knows floor set aside: that knowledge may be older than the
+ * object's arrival, and a finer look is not overwritten by a coarser one. */
+bool pushseen_forced(int level, int32_t n);
+
+/* pushseen_check(c, short_by, at): after seating, whether the last impression
+ * fails to establish that the held object reaches within CONTROLLER_CORNER_SLACK of
+ * the corner (short_by: goals_corner_shortfall, by all the held squares): true
+ * when the held squares it establishes (pushseen_forced) fall short of the best
+ * floor seen in the start's room by more than the slack, or it establishes none;
+ * at is then set to the held square the model has nearest the corner. Holding
+ * nothing (the subject is Utak's own square) it is false. */
+bool pushseen_check(const Controller *c, int64_t short_by, Vec2 *at);
+
+#endif
