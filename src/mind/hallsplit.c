@@ -575,6 +575,11 @@ static bool hs_faint_look(Controller *c, Vec2 p, Vec2 sq)
 	return true;
 }
 
+bool hallsplit_faint_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
+{
+	return hs_faint_parts(c, p, np, at);
+}
+
 /* hs_settle(c, p, at): hallsplit_settle without the verdict's check (hs_beaten);
  * also asked on reaching a trip's goal (hallsplit_arrive). */
 static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)

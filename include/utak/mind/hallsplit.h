@@ -169,6 +169,12 @@ bool hallsplit_parts(const struct Controller *c, Vec2 p, Vec2 *at);
  * the judge counts the object's squares in the start's room, not Utak's (push.c). */
 bool hallsplit_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
 
+/* hallsplit_faint_parts_all(c, p, n, at): FAINT's question for n points: whether a
+ * set of faint squares (or all of them), taken for wall, parts the start from every
+ * one of them; *at the square of that set nearest Utak not looked at from a goal
+ * reached. For task (v) (the held object's squares that reach the corner), as
+ * hallsplit_parts_all; not yet asked by push.c. */
+bool hallsplit_faint_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
 /* hallsplit_settle(c, p, at): task (i), Utak at p, arrived at the corner: HALL_CLEAR
  * when no blob parts the start from p; else a trip to touch the nearest such blob
  * (by steps) that has a reachable free square beside it not yet reached, begun
