@@ -25,6 +25,10 @@
  * square along it from Utak that can be looked at is gone to. And before the
  * hidden-floor doubt (roomdoubt_hidden), a look at the coarse squares that may join
  * that floor to the start's room (hallsplit_hidden_look); both within HALL_LOOKS.
+ * Faint squares (hs_faint_parts, FAINT in hallsplit.h): their 8-connected sets
+ * (a depth-first labelling), each alone and all at once taken for wall as the
+ * rule takes a node (hs_joint_parts_cells); a look at the nearest square of the
+ * first that parts (hs_faint_look), within HALL_FAINT_LOOKS.
  * MEMORY: one room map of the screen at a time, freed before the next; the
  * watershed 17 bytes a screen cell while it works.
  * COMPLEXITY: the rule O(w h log(w h)) for each object node not felt; settling
@@ -81,6 +85,8 @@ static bool hs_in_blob(const Controller *c, int32_t x, int32_t y)
 static bool hs_suspect(const Controller *c, int32_t k);
 static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, const Vec2 *p,
 			   int32_t np);
+static bool hs_joint_parts_cells(const Controller *c, const bool *wall, const int32_t *comp, int32_t k, int32_t si,
+				 int32_t sj, const Vec2 *p, int32_t np);
 static Vec2 hs_first(const Controller *c, int32_t k, Box *box);
 
 /* hs_unfelt_parts(c, si, sj, p, np, at): whether an object node not held, not felt
@@ -177,13 +183,23 @@ static bool hs_suspect(const Controller *c, int32_t k)
 static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, int32_t sj, const Vec2 *p,
 			   int32_t np)
 {
+	return hs_joint_parts_cells(c, wall, NULL, -1, si, sj, p, np);
+}
+
+/* hs_joint_parts_cells(c, wall, comp, k, si, sj, p, np): hs_joint_parts with, besides
+ * the nodes wall marks, the screen cells comp marks k (or marks at all, k < 0) taken
+ * for wall too (comp NULL: none). */
+static bool hs_joint_parts_cells(const Controller *c, const bool *wall, const int32_t *comp, int32_t k, int32_t si,
+				 int32_t sj, const Vec2 *p, int32_t np)
+{
 	const Screen *s = &c->screen;
 	int64_t n = (int64_t)s->w * s->h;
 	RoomMap rm;
 	grid_init(&rm.known, s->w, s->h, GRID_BLOCKED);
 	for (int64_t q = 0; q < n; q++) {
 		int32_t l = s->label[q];
-		if (l != SCREEN_UNKNOWN && !(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE)
+		if (l != SCREEN_UNKNOWN && !(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE &&
+		    !(comp && comp[q] >= 0 && (k < 0 || comp[q] == k)))
 			rm.known.cells[q] = GRID_FREE;
 	}
 	goals_roommap_find(&rm);
@@ -205,7 +221,8 @@ static bool hs_joint_parts(const Controller *c, const bool *wall, int32_t si, in
 			grid_init(&g, s->w, s->h, GRID_BLOCKED);
 			for (int64_t q = 0; q < n; q++) {
 				int32_t l = s->label[q];
-				if (!(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE)
+				if (!(l >= 0 && wall[l]) && s->fixed.cells[q] == GRID_FREE &&
+				    !(comp && comp[q] >= 0 && (k < 0 || comp[q] == k)))
 					g.cells[q] = GRID_FREE;
 			}
 			room = util_alloc((size_t)(n > 0 ? n : 1), sizeof *room);
@@ -256,7 +273,7 @@ static bool hs_way(const Controller *c, int32_t k, const int32_t *dist, Vec2 *ne
 	return goals_beside(c, k, dist, near);
 }
 
-/* hs_beaten(c, p, beat): once a trip has been made, whether p is not in the start's
+/* hs_beaten(c, p, beat): whether p is not in the start's
  * room by the verdict's watershed restated on the screen's fixed space
  * (carryroom_watershed: walls touch has shown are verge there, objects and the
  * unseen space; *out set), or floor seen in that room scores more than
@@ -435,6 +452,134 @@ static bool hs_unseen_look(Controller *c, Vec2 p, Vec2 beat)
 	return begun;
 }
 
+/* hs_faint(c, q): screen cell q is space on the model read only by the 2 x 2 or
+ * 4 x 4 cells, and by one that was not zero (worldmodel.c: a cell not zero says
+ * something in it is occupied, not which squares; a wall one square thick across
+ * a coarse cell leaves all its squares below half occupied, so floor, faint). */
+static bool hs_faint(const Controller *c, int64_t q)
+{
+	const Screen *s = &c->screen;
+	if (s->label[q] != SCREEN_SPACE)
+		return false;
+	Evidence e = worldmodel_evidence(&c->model, s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w));
+	return e.res > WORLDMODEL_UNSEEN && e.res < WORLDMODEL_RES_FOVEA && e.p > 0;
+}
+
+/* hs_faint_parts(c, p, np, at): FAINT (hallsplit.h): whether some 8-connected set
+ * of faint squares (hs_faint), taken for wall alone, or all of them at once, parts
+ * the start from every one of the np points p as a node taken for wall would (on
+ * the room map merged keeping every narrowing that may be a door, or on the
+ * verdict's watershed restated: hs_joint_parts_cells); *at, the square of the
+ * first such set nearest Utak and not looked at from a goal reached (else the
+ * nearest). COMPLEXITY: O(w h) the labelling, and a room map and a watershed for
+ * each set, O(F w h log(w h)) for F sets. */
+static bool hs_faint_parts(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
+{
+	const Screen *s = &c->screen;
+	int32_t si, sj;
+	if (np <= 0 || !goals_cell_of(s, c->start, &si, &sj))
+		return false;
+	int64_t n = (int64_t)s->w * s->h;
+	int32_t *comp = util_alloc((size_t)n, sizeof *comp), ncomp = 0;
+	int64_t *stack = util_alloc((size_t)n, sizeof *stack);
+	for (int64_t q = 0; q < n; q++)
+		comp[q] = -1;
+	for (int64_t q = 0; q < n; q++) {
+		if (comp[q] >= 0 || !hs_faint(c, q))
+			continue;
+		int64_t top = 0;
+		comp[q] = ncomp;
+		stack[top++] = q;
+		while (top > 0) {
+			int64_t r = stack[--top];
+			int32_t i = (int32_t)(r % s->w), j = (int32_t)(r / s->w);
+			for (int dj = -1; dj <= 1; dj++)
+				for (int di = -1; di <= 1; di++) {
+					int32_t x = i + di, y = j + dj;
+					if (x < 0 || y < 0 || x >= s->w || y >= s->h)
+						continue;
+					int64_t t = (int64_t)y * s->w + x;
+					if (comp[t] < 0 && hs_faint(c, t)) {
+						comp[t] = ncomp;
+						stack[top++] = t;
+					}
+				}
+		}
+		ncomp++;
+	}
+	free(stack);
+	bool parted = false;
+	int32_t which = -1;
+	int32_t nn = c->model.node_count;
+	bool *none = util_alloc((size_t)(nn > 0 ? nn : 1), sizeof *none);
+	/* k == ncomp: all of them at once (the door rule is not monotone). */
+	for (int32_t k = 0; k <= ncomp && ncomp > 0 && !parted; k++) {
+		parted = hs_joint_parts_cells(c, none, comp, k == ncomp ? -1 : k, si, sj, p, np);
+		which = k;
+	}
+	free(none);
+	if (parted) {
+		double best = INFINITY;
+		for (int64_t q = 0; q < n; q++)
+			if (comp[q] >= 0 && which >= 0 && (which == ncomp || comp[q] == which)) {
+				Vec2 here = goals_centre(s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w));
+				/* the nearest Utak not yet looked at from a goal reached, else the nearest */
+				bool looked = false;
+				for (int v = 0; v < c->visited_count && !looked; v++)
+					looked = goals_distance(here, c->visited[v]) <= GOALS_LOOK + 1;
+				double d = goals_distance(here, c->model.utak) + (looked ? 1e6 : 0);
+				if (d < best) {
+					best = d;
+					*at = here;
+				}
+			}
+	}
+	free(comp);
+	return parted;
+}
+
+/* hs_faint_look(c, p, sq): FAINT (hallsplit.h): the faint squares at sq part the
+ * start from Utak's claim at p; a look from the reachable free cell nearest sq
+ * (within GOALS_LOOK of it, no goal reached within GOALS_LOOK + 1) is begun, at
+ * most HALL_FAINT_LOOKS a task (true; c->hall set). The fovea reads a square one
+ * wall thick as it is: the squares it sees are faint no more. */
+static bool hs_faint_look(Controller *c, Vec2 p, Vec2 sq)
+{
+	const Screen *s = &c->screen;
+	HallRun *h = &c->hall;
+	int32_t ui, uj;
+	if (h->faint_looks >= HALL_FAINT_LOOKS || !goals_cell_of(s, c->model.utak, &ui, &uj))
+		return false;
+	bool looked = false;
+	for (int v = 0; v < c->visited_count && !looked; v++)
+		looked = goals_distance(sq, c->visited[v]) <= GOALS_LOOK + 1;
+	if (looked)
+		return false;
+	int32_t *dist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *dist);
+	goals_reach(&s->free, ui, uj, dist);
+	Vec2 near;
+	bool ok = goals_near(c, sq, dist, &near) && goals_distance(near, sq) <= GOALS_LOOK &&
+		  goals_distance(near, c->model.utak) >= 0.5;
+	free(dist);
+	if (!ok)
+		return false;
+	h->going = h->look = true;
+	h->at = near;
+	h->claim = p;
+	h->faint_looks++;
+	c->have_plan = false;
+	size_t len = strlen(h->note);
+	snprintf(h->note + len, sizeof h->note - len,
+		 "; squares seen only coarsely, not empty, at (%.1f, %.1f) may be a wall that parts the room: going to look (hallsplit.h)",
+		 sq.x, sq.y);
+	return true;
+}
+
+bool hallsplit_faint_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
+{
+	return hs_faint_parts(c, p, np, at);
+}
+
 /* hs_settle(c, p, at): hallsplit_settle without the verdict's check (hs_beaten);
  * also asked on reaching a trip's goal (hallsplit_arrive). */
 static HallVerdict hs_settle(Controller *c, Vec2 p, Vec2 *at)
@@ -595,7 +740,15 @@ HallVerdict hallsplit_settle(Controller *c, Vec2 p, Vec2 *at)
 		snprintf(h->why, sizeof h->why, "an object touch has not settled, at (%.1f, %.1f), may be a wall that parts the room he started in",
 			 at->x, at->y);
 	bool out = false;
-	if (v == HALL_CLEAR && h->trips > 0 && hs_beaten(c, p, at, &out)) {
+	if (v == HALL_CLEAR && hs_faint_parts(c, &p, 1, at)) {
+		if (hs_faint_look(c, p, *at))
+			return HALL_GOING; /* a look at the faint squares (FAINT) */
+		snprintf(h->why, sizeof h->why,
+			 "squares seen only coarsely, not empty, at (%.1f, %.1f), may hold a wall that parts the room he started in",
+			 at->x, at->y);
+		return HALL_DOUBT;
+	}
+	if (v == HALL_CLEAR && hs_beaten(c, p, at, &out)) {
 		if (!out && hs_unseen_look(c, p, *at))
 			return HALL_GOING; /* a look at the unseen that joins the two (LOOKING) */
 		v = HALL_DOUBT;

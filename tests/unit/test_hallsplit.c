@@ -9,12 +9,31 @@
  * neighbours until nothing changes (Bellman-Ford, no queue, no levels), on random
  * grids of every density; and the way the search hands back is walked cell by cell
  * (each step to a 4-neighbour, each cell passable, its costly cells counted) and
- * must cost what it says. */
+ * must cost what it says.
+ *
+ * FAINT's premise (hallsplit.h): a free-standing wall stub seen only by the 2 x 2
+ * and 4 x 4 cells is read as floor where it fills under half a cell, but its
+ * squares keep an occupancy above 0 ("faint") wherever the cell's level is not
+ * zero; only a 4 x 4 cell holding a single occupied square reads zero. THE ORACLE
+ * is the simulator's TABLE: for random stubs 1 to 3 thick and 2 to 16 long in the
+ * eye's coarse zones, after Utak's first impression (facing north, so that his
+ * frame is the TABLE's), every stub square the model reads as floor must be faint
+ * exactly when its cell holds more occupied squares, by the TABLE, than round to
+ * level 0, and a coarse square read as floor with no occupancy at all must lie in
+ * a cell of at most one occupied square. This test is a helper that sees both sides
+ * of the wall (as test_worldmodel.c). */
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "test.h"
+#include "utak/base/eye.h"
+#include "utak/body/retina.h"
+#include "utak/body/table.h"
+#include "utak/body/world.h"
 #include "utak/mind/hallsplit.h"
+#include "utak/mind/worldmodel.h"
 
 static uint64_t rng = 0x9e3779b97f4a7c15u;
 
@@ -109,9 +128,72 @@ TEST_CASE(fewest_refuses_what_is_not_passable)
 	TEST_CHECK(hallsplit_fewest(3, 2, pass, costly, 0, 2, from) == -1);
 }
 
+TEST_CASE(faint_squares_cover_every_thin_stub_read_as_floor)
+{
+	int32_t floor_read = 0, faint = 0;
+	for (int trial = 0; trial < 200; trial++) {
+		/* Utak at (40.5, 40.5) facing north; a stub horizontal or vertical,
+		 * 1 to 3 thick, 2 to 16 long, within the eye's field (offsets -16..15)
+		 * and clear of the fovea and of Utak (offsets -5..4). */
+		int32_t th = 1 + (int32_t)(next() % 3), len = 2 + (int32_t)(next() % 15);
+		bool vertical = next() % 2;
+		int32_t ox, oy, wx = vertical ? th : len, wy = vertical ? len : th;
+		do {
+			ox = -16 + (int32_t)(next() % (uint32_t)(32 - wx + 1));
+			oy = -16 + (int32_t)(next() % (uint32_t)(32 - wy + 1));
+		} while (ox < 5 && ox + wx > -5 && oy < 5 && oy + wy > -5);
+		int32_t x0 = 40 + ox, y0 = 40 + oy, x1 = x0 + wx, y1 = y0 + wy;
+		char text[256];
+		snprintf(text, sizeof text, "table 80 80\nwall %d %d %d %d %d %d %d %d\nutak 40.5 40.5 north\n", x0, y0,
+			 x1, y0, x1, y1, x0, y1);
+		World w;
+		Table t;
+		Diag d;
+		TEST_CHECK(world_parse(&w, "test", text, strlen(text), &d) == 0);
+		TEST_CHECK(table_build(&t, &w, &d) == 0);
+		WorldModel m;
+		worldmodel_init(&m);
+		Impression imp;
+		retina_sense(&w, &t, &imp);
+		worldmodel_accommodate_first(&m, &imp);
+		for (int32_t i = 0; i < RETINA_CELLS; i++) {
+			EyeCell c = eye_cell(i);
+			if (c.zone == EYE_FOVEA)
+				continue;
+			int32_t occupied = 0, n = c.size * c.size;
+			for (int32_t dy = 0; dy < c.size; dy++)
+				for (int32_t dx = 0; dx < c.size; dx++)
+					occupied += table_owner(&t, 40 + c.ox + dx, 40 + c.oy + dy) == TABLE_VERGE;
+			for (int32_t dy = 0; dy < c.size; dy++)
+				for (int32_t dx = 0; dx < c.size; dx++) {
+					Evidence e = worldmodel_evidence(&m, c.ox + dx, c.oy + dy);
+					TEST_CHECK(e.res == (c.zone == EYE_INTERMEDIATE ? WORLDMODEL_RES_INTERMEDIATE
+											: WORLDMODEL_RES_PERIPHERAL));
+					if (e.p >= 0.5f)
+						continue;
+					/* read as floor: faint exactly when the cell's level is not zero */
+					TEST_CHECK((e.p > 0) == (eye_level(occupied, n) > 0));
+					TEST_CHECK(e.p > 0 || occupied <= 1);
+					if (table_owner(&t, 40 + c.ox + dx, 40 + c.oy + dy) == TABLE_VERGE) {
+						floor_read++;
+						faint += e.p > 0;
+					}
+				}
+		}
+		worldmodel_free(&m);
+		table_free(&t);
+		world_free(&w);
+	}
+	/* The case is not empty: thin stubs were read as floor, nearly all faint. */
+	printf("  stub squares read as floor: %d, faint: %d\n", floor_read, faint);
+	TEST_CHECK(floor_read > 100);
+	TEST_CHECK(faint * 10 >= floor_read * 9);
+}
+
 int main(void)
 {
 	TEST_RUN(fewest_costly_cells_agrees_with_brute_force);
 	TEST_RUN(fewest_refuses_what_is_not_passable);
+	TEST_RUN(faint_squares_cover_every_thin_stub_read_as_floor);
 	return TEST_EXIT();
 }

@@ -87,6 +87,25 @@
  * goal reached has looked at (a reachable cell within GOALS_LOOK of it), and
  * judges the corner again on return, at most HALL_LOOKS looks a task. A look only
  * adds what the eye saw: the claim is still made by hs_beaten's rule alone.
+ * FAINT (task (i); stub13). A free-standing stub one to three squares thick seen
+ * only by the 4 x 4 and 2 x 2 cells that straddle it reads as floor (its squares
+ * below half of each cell), so no node stands for it and the rule above never
+ * asks it; but a cell not zero says something in it is occupied (worldmodel.c),
+ * and its squares keep a probability above 0: FAINT squares. On 47 of 150
+ * hall-stub variants (/tmp/c11adv) Utak claimed the other half's corner. So, with
+ * no node left that parts the hall, each 8-connected set of faint squares alone,
+ * and all of them at once (the door rule is not monotone), is taken for wall, on
+ * the room map (carryroom_merge_maybe) and the watershed restated, as the rule
+ * above takes a node (hs_joint_parts); where one parts the start from p, Utak
+ * goes to look at its square nearest him not looked at from a goal reached (the
+ * fovea reads a wall one square thick as it is), at most HALL_FAINT_LOOKS a task,
+ * and judges the corner again; with none left to take, he doubts. And the claim
+ * is checked on the watershed (hs_beaten) from the first arrival, not only once
+ * a trip has been made: his own restated rule finding floor of his room that
+ * beats the corner (or his point out of that room) is reason enough to doubt.
+ * COST (stub13, one run each): 2 of 60 random corners doubted by FAINT (g61,
+ * g91: bits seen coarsely), 4 more by hs_beaten from the first arrival (g41,
+ * g241, g266, g291); none of 100 perturbed or 250 noisy corners changed.
  * COMPLEXITY: the rule O(w h) a room map of the screen for each object node seen
  * only coarsely; settling O(S w h log(w h)) for S suspects, per judgement;
  * looking, per judgement hs_beaten doubts, O(w h log(w h)) (the watershed), O(w h)
@@ -111,6 +130,9 @@
 /* Looks a task, at most, at unseen squares that alone join floor that beats the
  * corner to the start's room by the verdict's watershed (LOOKING below). */
 #define HALL_LOOKS 4
+/* Looks a task, at most, at faint squares that, taken for wall, part the hall
+ * (FAINT above). */
+#define HALL_FAINT_LOOKS 4
 
 /* A hall doubt being settled by touch (SETTLING above); in the Controller. */
 typedef struct HallRun {
@@ -124,6 +146,7 @@ typedef struct HallRun {
 	int looked_count;
 	bool look;		/* the trip on is a look at unseen squares (LOOKING), not a touch */
 	int looks;		/* such looks begun this task */
+	int faint_looks;	/* looks begun this task at faint squares (FAINT) */
 	char note[200];		/* a trip begun, for the trace (controller.c prints it) */
 	char why[200];		/* HALL_DOUBT: the doubt's words */
 } HallRun;
@@ -146,13 +169,21 @@ bool hallsplit_parts(const struct Controller *c, Vec2 p, Vec2 *at);
  * the judge counts the object's squares in the start's room, not Utak's (push.c). */
 bool hallsplit_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
 
+/* hallsplit_faint_parts_all(c, p, n, at): FAINT's question for n points: whether a
+ * set of faint squares (or all of them), taken for wall, parts the start from every
+ * one of them; *at the square of that set nearest Utak not looked at from a goal
+ * reached. For task (v) (the held object's squares that reach the corner), as
+ * hallsplit_parts_all; not yet asked by push.c. */
+bool hallsplit_faint_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
 /* hallsplit_settle(c, p, at): task (i), Utak at p, arrived at the corner: HALL_CLEAR
  * when no blob parts the start from p; else a trip to touch the nearest such blob
  * (by steps) that has a reachable free square beside it not yet reached, begun
  * (HALL_GOING, c->hall set, c->have_plan cleared), or, none such or no trip left,
- * HALL_DOUBT, its words in c->hall.why. Once a trip has been made, a claim left
- * clear is still doubted when floor seen in the start's room by the verdict's
- * rule restated whole (carryroom_watershed) beats p by more than the slack. */
+ * HALL_DOUBT, its words in c->hall.why. A claim left clear is then asked of the
+ * faint squares (FAINT: a look begun, HALL_GOING, or HALL_DOUBT), and still
+ * doubted when floor seen in the start's room by the verdict's rule restated
+ * whole (carryroom_watershed) beats p by more than the slack, or p is not in that
+ * room. */
 HallVerdict hallsplit_settle(struct Controller *c, Vec2 p, Vec2 *at);
 /* hallsplit_goal(c, dist, out): while a trip is on, its goal (exploring: arriving
  * is a look, then the corner is chosen and judged again); false when none is, or
