@@ -122,7 +122,9 @@ bool objects_touching_target(Controller *c);
  *   and this one was never probed: it may be such a piece (rival.h).
  *   NEARER THE START: the task's object is the one of its shape nearest the
  *   start; another object nearer may be it when its squares were never all seen
- *   in the fovea at once (EXAMINED; the floor round them need not be), or is of the shape but in doubt, or is a crumb left unnamed that spans 3
+ *   in the fovea at once (EXAMINED; the floor round them need not be), or is of
+ *   the shape, in doubt or not (a sure one nearer by less than OBJECTS_SWITCH
+ *   does not take the chosen one's place: objects_find_target), or is a crumb left unnamed that spans 3
  *   squares or more each way (a square two wide or more, unless its sides lie on
  *   the grid's lines, does) and has OBJECTS_CRUMB_LEAST squares or more (such a
  *   square covers no fewer). A crumb named another shape is taken at its name,
@@ -134,9 +136,26 @@ bool objects_touching_target(Controller *c);
  *   as long as wide (its squares are a rectangle's of those proportions too),
  *   a brick, and Utak passed it by for a square farther on, a false success in
  *   38 of 160 poses of 2.2 to 2.6 squares (tests/worlds/near-turned-square.w).
+ *   One read a brick but not seen whole (the floor round it not all seen in the
+ *   fovea) was never asked so, and may own squares where that floor was seen
+ *   only in cells of 4 or never (a cell of 4 x 4 over one occupied square reads
+ *   0): it may be the square unless its squares' extent could not grow to a
+ *   square's (within one square each way) on the sides where such floor lies
+ *   (may_grow_square; tests/worlds/near-tie-brick.w: a square 2.6 wide turned
+ *   0.3 radians, its far side seen coarsely, read a brick, and the farther
+ *   square pushed to the corner: a false success).
  *   A probe that shows it no square settles it (rival.h); for "the brick", one read a square
  *   longer than SHAPE_SQUARE_ASPECT (in the gap) may be the brick the same way,
  *   and no probe settles that (the probe's hypothesis is a square).
+ *   AS NEAR: the judge measures the distance to an object's area centroid, Utak
+ *   to the centroid of its squares, which may lie half a cell's diagonal from
+ *   it (cells of the coarsest resolution it was seen in: centroid_slack); so an
+ *   object not seen whole, a crumb or one of ANOTHER NAME counts as nearer when
+ *   its centroid is within the two slacks beyond the claimed one's too (one
+ *   seen whole read the shape there is ANOTHER OF THE SHAPE's doubt already).
+ *   Tests/worlds/near-tie.w: a square 2.6 wide seen from afar, read a brick
+ *   0.5 farther than the square he chose, was 0.3 nearer: he pushed the farther
+ *   square to the corner and believed it done.
  *   THE NEARER UNSEEN: where floor the model knows borders unseen squares nearer
  *   the start than the object's centroid (goals_unseen_within), an object of
  *   the shape may lie there; goals.c looks at such space before going to the
