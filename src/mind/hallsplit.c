@@ -39,6 +39,7 @@
 
 #include <assert.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -378,6 +379,35 @@ static bool hs_settled(const Controller *c, int64_t q)
 	       WORLDMODEL_RES_FOVEA;
 }
 
+/* hs_looked_at(c, here): a goal Utak has reached lies within GOALS_LOOK + 1 of here
+ * (roomdoubt.c's looks): he has looked at it from close by once already. */
+static bool hs_looked_at(const Controller *c, Vec2 here)
+{
+	for (int v = 0; v < c->visited_count; v++)
+		if (goals_distance(here, c->visited[v]) <= GOALS_LOOK + 1)
+			return true;
+	return false;
+}
+
+/* hs_begin_look(c, goal, p, count, fmt, ...): a look-trip begun: Utak goes to goal
+ * to look (c->hall set: going, look, the claim p it is for), *count (the budget it
+ * spends: HALL_LOOKS or HALL_FAINT_LOOKS) one more, the plan dropped, and the why
+ * (fmt) added to the task's note. Shared by hs_unseen_look and hs_faint_look. */
+static void hs_begin_look(Controller *c, Vec2 goal, Vec2 p, int *count, const char *fmt, ...)
+{
+	HallRun *h = &c->hall;
+	h->going = h->look = true;
+	h->at = goal;
+	h->claim = p;
+	(*count)++;
+	c->have_plan = false;
+	size_t len = strlen(h->note);
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(h->note + len, sizeof h->note - len, fmt, ap);
+	va_end(ap);
+}
+
 /* hs_unseen_look(c, p, beat): LOOKING (hallsplit.h): floor at beat beats Utak's claim
  * at p in the start's watershed room; if the way to it within that room that
  * crosses the fewest squares never seen crosses any, a look at the first of them
@@ -422,11 +452,8 @@ static bool hs_unseen_look(Controller *c, Vec2 p, Vec2 beat)
 				if (hs_settled(c, q))
 					continue;
 				Vec2 here = goals_centre(s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w)), near;
-				bool looked = false;
-				for (int v = 0; v < c->visited_count && !looked; v++)
-					looked = goals_distance(here, c->visited[v]) <= GOALS_LOOK + 1;
-				if (looked || !goals_near(c, here, dist, &near) || goals_distance(near, here) > GOALS_LOOK ||
-				    goals_distance(near, c->model.utak) < 0.5)
+				if (hs_looked_at(c, here) || !goals_near(c, here, dist, &near) ||
+				    goals_distance(near, here) > GOALS_LOOK || goals_distance(near, c->model.utak) < 0.5)
 					continue;
 				/* the last kept is the nearest Utak along the path */
 				found = true;
@@ -435,13 +462,8 @@ static bool hs_unseen_look(Controller *c, Vec2 p, Vec2 beat)
 			}
 			free(dist);
 			if (found) {
-				h->going = h->look = begun = true;
-				h->at = goal;
-				h->claim = p;
-				h->looks++;
-				c->have_plan = false;
-				size_t len = strlen(h->note);
-				snprintf(h->note + len, sizeof h->note - len,
+				begun = true;
+				hs_begin_look(c, goal, p, &h->looks,
 					 "; floor at (%.1f, %.1f) that would beat the corner joins his room only through squares not seen in the fovea: going to look at (%.1f, %.1f) (hallsplit.h)",
 					 beat.x, beat.y, sq.x, sq.y);
 			}
@@ -524,10 +546,7 @@ static bool hs_faint_parts(const Controller *c, const Vec2 *p, int32_t np, Vec2 
 			if (comp[q] >= 0 && which >= 0 && (which == ncomp || comp[q] == which)) {
 				Vec2 here = goals_centre(s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w));
 				/* the nearest Utak not yet looked at from a goal reached, else the nearest */
-				bool looked = false;
-				for (int v = 0; v < c->visited_count && !looked; v++)
-					looked = goals_distance(here, c->visited[v]) <= GOALS_LOOK + 1;
-				double d = goals_distance(here, c->model.utak) + (looked ? 1e6 : 0);
+				double d = goals_distance(here, c->model.utak) + (hs_looked_at(c, here) ? 1e6 : 0);
 				if (d < best) {
 					best = d;
 					*at = here;
@@ -550,10 +569,7 @@ static bool hs_faint_look(Controller *c, Vec2 p, Vec2 sq)
 	int32_t ui, uj;
 	if (h->faint_looks >= HALL_FAINT_LOOKS || !goals_cell_of(s, c->model.utak, &ui, &uj))
 		return false;
-	bool looked = false;
-	for (int v = 0; v < c->visited_count && !looked; v++)
-		looked = goals_distance(sq, c->visited[v]) <= GOALS_LOOK + 1;
-	if (looked)
+	if (hs_looked_at(c, sq))
 		return false;
 	int32_t *dist = util_alloc((size_t)s->w * (size_t)s->h, sizeof *dist);
 	goals_reach(&s->free, ui, uj, dist);
@@ -563,13 +579,7 @@ static bool hs_faint_look(Controller *c, Vec2 p, Vec2 sq)
 	free(dist);
 	if (!ok)
 		return false;
-	h->going = h->look = true;
-	h->at = near;
-	h->claim = p;
-	h->faint_looks++;
-	c->have_plan = false;
-	size_t len = strlen(h->note);
-	snprintf(h->note + len, sizeof h->note - len,
+	hs_begin_look(c, near, p, &h->faint_looks,
 		 "; squares seen only coarsely, not empty, at (%.1f, %.1f) may be a wall that parts the room: going to look (hallsplit.h)",
 		 sq.x, sq.y);
 	return true;

@@ -20,8 +20,8 @@
  * look), and only when one of the object's squares that reach the corner lies in
  * the start's room on his own room map and no object touch has not felt (seen
  * only coarsely or in the fovea), taken for wall, may part the start's hall from
- * all of them (hallsplit.h, as task (i) asks
- * of Utak: held_room_split); the survey does not yet make (i)'s looks; and only on
+ * all of them, nor may any set of faint squares (hallsplit.h FAINT, as task (i)
+ * asks of Utak: held_room_split); the survey does not yet make (i)'s looks; and only on
  * the held squares the last impression shows whole (pushseen.h). Seated
  * short, with another object in the way, Utak moves it out of the way first
  * (pushclear.h). */
@@ -440,7 +440,13 @@ static bool held_in_start_watershed(const Controller *c, const Vec2 *p, int32_t 
  * No object touch has not felt (seen only coarsely, or in the fovea: the eye reads
  * a stub as an object either way), taken for wall, parts the start from every one
  * of them, by task (i)'s rule (hallsplit.h): WHY, a free-standing stub read as an
- * object is space to his rooms and the wall that parts the hall to the judge's.
+ * object is space to his rooms and the wall that parts the hall to the judge's;
+ * nor does a set of faint squares (squares the coarse cells read as floor but not
+ * as empty), taken for wall (hallsplit_faint_parts_all, hallsplit.h FAINT): WHY, a
+ * stub one square thick straddled by 4 x 4 cells is no node at all, so (2) never
+ * asks it (/tmp/c11adv variant 27, tests/worlds/hall-stub-faint-push.w: the square
+ * pushed to the other half's corner and claimed, a false success). No look is
+ * made for it: the object would have to be let go of first.
  * And (3), between the two, one of them lies in the start's room by the judge's
  * watershed restated on his model, no floor seen in it beating them
  * (held_in_start_watershed). */
@@ -451,6 +457,7 @@ static bool held_room_split(Controller *c, int64_t short_by)
 	bool beat = false, beyond = !goals_in_start_room(c, p, n) || !held_in_start_watershed(c, p, n, &beat);
 	beat = !beyond && beat;
 	bool parted = !beyond && !beat && hallsplit_parts_all(c, p, n, &at);
+	bool faint = !beyond && !beat && !parted && hallsplit_faint_parts_all(c, p, n, &at);
 	free(p);
 	if (beyond) {
 		c->phase = PHASE_FAILED;
@@ -467,8 +474,13 @@ static bool held_room_split(Controller *c, int64_t short_by)
 		snprintf(c->why, sizeof c->why,
 			 "Utak cannot tell the %s is in the %s: an object touch has not felt, at (%.1f, %.1f), may be a wall that parts it from the room he started in",
 			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
+	} else if (faint) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: squares seen only coarsely, not empty, at (%.1f, %.1f), may hold a wall that parts it from the room he started in",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
 	}
-	return beyond || beat || parted;
+	return beyond || beat || parted || faint;
 }
 
 /* push_held_is_task_shape(c): what Utak holds is the task's shape: his held squares

@@ -173,7 +173,10 @@ bool hallsplit_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, V
  * set of faint squares (or all of them), taken for wall, parts the start from every
  * one of them; *at the square of that set nearest Utak not looked at from a goal
  * reached. For task (v) (the held object's squares that reach the corner), as
- * hallsplit_parts_all; not yet asked by push.c. */
+ * hallsplit_parts_all: push.c (held_room_split) doubts the corner when it parts,
+ * with no look (the object is let go of where it is; on /tmp/c11adv's 150 hall-stub
+ * variants, 1 of 13 push false successes closed, variant 27:
+ * tests/worlds/hall-stub-faint-push.w). */
 bool hallsplit_faint_parts_all(const struct Controller *c, const Vec2 *p, int32_t n, Vec2 *at);
 /* hallsplit_settle(c, p, at): task (i), Utak at p, arrived at the corner: HALL_CLEAR
  * when no blob parts the start from p; else a trip to touch the nearest such blob
