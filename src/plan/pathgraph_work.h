@@ -3,7 +3,8 @@
  * kept in a Pathgraph, and the length of a run of skeleton cells, which both the
  * build (an edge's length) and the queries (the pieces of a split edge) measure the
  * same way. Private to the pathgraph module: not installed under include/, and
- * nothing outside src/plan/pathgraph.c and pathfind.c includes it. */
+ * nothing outside src/plan/pathgraph.c, pathwalk.c (the build), pathfind.c and
+ * pathcheck.c includes it. */
 #ifndef UTAK_PATHGRAPH_WORK_H
 #define UTAK_PATHGRAPH_WORK_H
 
