@@ -19,17 +19,28 @@ static void span(void *ctx, int32_t y, int32_t x0, int32_t x1)
 	}
 }
 
+/* splitmix(seed): the next 64 bits of SplitMix64 (Steele, Lea and Flood 2014), as
+ * motion.h draws them. */
+static uint64_t splitmix(uint64_t *seed)
+{
+	uint64_t z = (*seed += 0x9e3779b97f4a7c15u);
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+	return z ^ (z >> 31);
+}
+
+/* uniform(seed): in [0, 1). */
+static double uniform(uint64_t *seed)
+{
+	return (double)(splitmix(seed) >> 11) / 9007199254740992.0;
+}
+
 /* gaussian(seed): a standard Gaussian (SplitMix64 and Box-Muller, as motion.h). */
 static double gaussian(uint64_t *seed)
 {
 	double u[2];
-	for (int i = 0; i < 2; i++) {
-		uint64_t z = (*seed += 0x9e3779b97f4a7c15u);
-		z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-		z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-		z ^= z >> 31;
-		u[i] = ((double)(z >> 11) + 0.5) / 9007199254740992.0;
-	}
+	for (int i = 0; i < 2; i++)
+		u[i] = ((double)(splitmix(seed) >> 11) + 0.5) / 9007199254740992.0;
 	return sqrt(-2 * log(u[0])) * cos(6.283185307179586 * u[1]);
 }
 

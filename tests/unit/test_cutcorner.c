@@ -64,16 +64,6 @@ static ProbeVerdict square_probe(const Polygon *p, double sigma, Vec2 f, uint64_
 	return probe_square_consistent(bx, by, nb, looks, 3, cells, nc, true, BUDGET);
 }
 
-/* uniform(seed): in [0, 1) (SplitMix64). */
-static double uniform(uint64_t *seed)
-{
-	uint64_t z = (*seed += 0x9e3779b97f4a7c15u);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-	z ^= z >> 31;
-	return (double)(z >> 11) / 9007199254740992.0;
-}
-
 /* raster(p, d, own): p moved by d, projected onto the FIELD x FIELD squares. */
 static void own_span(void *ctx, int32_t y, int32_t x0, int32_t x1)
 {

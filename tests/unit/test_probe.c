@@ -238,16 +238,6 @@ static double true_width(const Polygon *p)
 	return best;
 }
 
-/* uniform(seed): in [0, 1). */
-static double uniform(uint64_t *seed)
-{
-	uint64_t z = (*seed += 0x9e3779b97f4a7c15u);
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-	z ^= z >> 31;
-	return (double)(z >> 11) / 9007199254740992.0;
-}
-
 /* triangle(a, b, deg, cx, cy): a right triangle of legs a and b, turned. */
 static Polygon triangle(double a, double b, double deg, double cx, double cy)
 {
