@@ -444,8 +444,8 @@ static bool held_in_start_watershed(const Controller *c, const Vec2 *p, int32_t 
  * nor does a set of faint squares (squares the coarse cells read as floor but not
  * as empty), taken for wall (hallsplit_faint_parts_all, hallsplit.h FAINT): WHY, a
  * stub one square thick straddled by 4 x 4 cells is no node at all, so (2) never
- * asks it (/tmp/c11adv variant 27, tests/worlds/hall-stub-faint-push.w: the square
- * pushed to the other half's corner and claimed, a false success). No look is
+ * asks it (tests/worlds/hall-stub-faint-push.w: the square pushed to the other
+ * half's corner and claimed, a false success). No look is
  * made for it: the object would have to be let go of first.
  * And (3), between the two, one of them lies in the start's room by the judge's
  * watershed restated on his model, no floor seen in it beating them

@@ -11,7 +11,7 @@
  * eye's 2 x 2 cells. Utak claimed squares pushed 2 short of the corner (slack 1)
  * on the strength of a held square in a cell whose level said only 2 or 3 of its 4
  * squares were occupied (adversarial worlds with a pier near the corner, --noise
- * 0.05: /tmp/p11/adv/a14.w seed 2 and 4 more of 600 runs), and once with 4 held
+ * 0.05: tests/worlds/push-pier-noise.w seed 2 and 4 more of 600 runs), and once with 4 held
  * squares in a cell showing 1. The claim now rests only on held squares the last
  * impression leaves no room to be floor. */
 #include "utak/mind/pushseen.h"

@@ -465,7 +465,7 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
  * elsewhere may be far off, in coarse cells. The prediction then stood, and every
  * halted push read as a square gained: with --noise 0.05 Utak pushed a square
  * "into" the verge four times over and claimed a corner it was 2 short of
- * (/tmp/p11/adv/a14.w, seed 2; a pier far off in the periphery his only mark
+ * (tests/worlds/push-pier-noise.w, seed 2; a pier far off in the periphery his only mark
  * along the push). The object cannot have gone into a wall the eye has surely
  * seen; where the eye does tell (a margin's worth), it decides, so a wall the
  * model has a square off, or a square of the object left out of the held set
