@@ -22,6 +22,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/carryroom.h"
+#include "utak/mind/faint.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/roomdoubt.h"
@@ -915,8 +916,9 @@ void goals_choose(Controller *c, GoalResult *out)
 			 * the model has unseen space nearer the start than k's centroid,
 			 * a nearer one may lie, and Utak looks there before going to k
 			 * (objects.h, THE NEARER UNSEEN). */
-			if (k >= 0 && goals_frontier_within(c, dist, c->start, goals_distance(objects_read(c, k).centroid, c->start),
-							    &out->goal)) {
+			double nearer = k >= 0 ? goals_distance(objects_read(c, k).centroid, c->start) : 0;
+			if (k >= 0 && (goals_frontier_within(c, dist, c->start, nearer, &out->goal) ||
+				       faint_look(c, dist, c->start, nearer, &out->goal))) {
 				out->exploring = out->found = true;
 				break;
 			}
@@ -955,7 +957,8 @@ void goals_choose(Controller *c, GoalResult *out)
 			bool have_unseen = goals_frontier(c, dist, &unseen);
 			bool have_coarse = k < 0 && goals_inspect(c, dist, &coarse);
 			if (!have_unseen && !have_coarse && k < 0)
-				have_coarse = goals_inspect_joined(c, dist, &coarse) || goals_felt_tug(c, dist, &coarse) ||
+				have_coarse = faint_look(c, dist, c->start, INFINITY, &coarse) ||
+					      goals_inspect_joined(c, dist, &coarse) || goals_felt_tug(c, dist, &coarse) ||
 					      goals_probe_joined(c, dist, &coarse);
 			out->exploring = out->found = have_unseen || have_coarse;
 			if (have_unseen && have_coarse)
