@@ -152,6 +152,9 @@ typedef struct GridPathSearch {
 	GridPathQueue queue[GRIDPATH_QUEUES];
 	int32_t *at_stack; /* cells */
 	int at_stack_cap;
+	/* plain A*'s path, walked back once from the goal: the step into each cell */
+	uint8_t *walk;
+	int walk_cap;
 	/* y = c / pw for a padded index c as c div_mul >> div_shift (gridpath_init) */
 	uint64_t div_mul;
 	unsigned div_shift;
