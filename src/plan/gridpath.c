@@ -9,7 +9,8 @@
  * is consistent: a cell is final when it is first closed and is never reopened.
  * The open list uses lazy deletion: an improved cell is pushed again and stale
  * entries are skipped when popped (cheaper than decrease-key, whose position index
- * costs a random memory access per swap). Plain A* files its entries in five
+ * costs a random memory access per swap); plain A* pushes every offer to a cell not
+ * closed and keeps no f per cell (LAZY OFFERS). Plain A* files its entries in five
  * first-in first-out queues, one for each growth of f a step can make above zero
  * (FIFO QUEUES), and orders by exact integer keys (EXACT KEYS); the jump search
  * (gridjump.c), whose growths are arbitrary, files them in buckets of f, a page of
@@ -161,13 +162,30 @@
  * (gridpath_init, which checks that claim on every offset within 5 of the goal), so
  * a neighbour's f is its cell's f plus one load; 0 sends it to the stack.
  *
- * F RELATIVE: a node keeps only the low 32 bits of its f's key, and no g. An offer
- * to an open cell is compared by f (the same h, so f orders as g would): F, the f
- * being expanded, is the least in the list and never decreases, and every offer is
- * at most 2 sqrt 2 above the F of its time, so the open cell's f and the offer's, F
- * + df, both lie in [F, F + 2 sqrt 2], 3.71e9 of key, under 2^32: their low 32 bits
- * less F's, modulo 2^32, order them exactly. A closed cell, whose f may lie far
- * below F, is refused by its mark alone.
+ * F RELATIVE: an entry of the open list keeps only the low 32 bits of its f's key:
+ * F, the f being expanded, is the least in the list and never decreases, and every
+ * offer is at most 2 sqrt 2 above the F of its time, so every entry's f lies in [F,
+ * F + 2 sqrt 2], 3.71e9 of key, under 2^32: its low 32 bits less F's, modulo 2^32,
+ * give it exactly. (Until LAZY OFFERS a node kept these bits too, to compare an
+ * offer to an open cell with its best.)
+ *
+ * LAZY OFFERS: a cell's node is 4 bytes, its legal steps, the step that closed it
+ * and the round it was closed in, and nothing else: no f, no open mark. Every offer
+ * to a cell not closed is pushed, the step that made it kept in the entry (the cell
+ * index above 3 bits, below 2^29 cells: EXACT KEYS), and the first entry of a cell
+ * to leave the list closes it and writes its from; the later ones are stale,
+ * refused by the mark. This is the lazy deletion above with the comparison of an
+ * offer against the open cell's best left to the list's order: a cell's entries
+ * leave in order of f, its h fixed, so the first carries its least g (consistent
+ * h). A push writes no node (it reads the neighbour's mark, to refuse a closed
+ * one); an offer that the node's f would have refused becomes an entry more, rare
+ * after PARENT'S NEIGHBOURS (none in the maze, where every free cell is offered
+ * once; rects 142 581 -> 142 650 cells expanded, other ties). Nodes of 4 bytes, not
+ * 8, halve the lines a query touches (16 cells to a line) and the stores: the maze's
+ * query, its caches flushed before each query, 12.2-13.7 -> 9.4-9.8 ms at 1024
+ * (medians of 10, three runs alternated), warm 108 -> 86 ms at 4096, for about the
+ * same instructions (105.5 -> 107.9 M, callgrind). Where shortest paths tie,
+ * another may come out than when an equal offer was refused.
  *
  * FIFO QUEUES: a step's growth of f (EXACT KEYS) is 0 or one of five values, 2 -
  * sqrt 2, 2 sqrt 2 - 2, sqrt 2, 2 and 2 sqrt 2 (gridpath_init finds them in df and
@@ -193,11 +211,11 @@
  * (another path of the same length), Boston_0_1024 190 205 -> 190 559, den520d
  * 50 584 -> 50 682.
  *
- * INVARIANTS: node[c].info's round (bits 13-31) is this query's when c was reached
- * in it: then f holds the low bits of the key of its best known f and from (bits
- * 8-11) the step of that path, and bit 12 is set once c is closed, its cost final;
- * with an earlier round c is unseen. Bits 0-7, its legal steps, never change. The
- * border cells of the padded copy are never free.
+ * INVARIANTS: node[c]'s round (bits 12-31) is this query's once c is closed, its
+ * cost final, and then from (bits 8-11) is the step of a shortest path into it (8
+ * for the start); with an earlier round c is not closed. Bits 0-7, its legal
+ * steps, never change. Every entry's cell is free and was offered by a closed cell
+ * by the entry's step. The border cells of the padded copy are never free.
  *
  * MEMORY: see gridpath.h. COMPLEXITY: plain A* O(n) for n cells expanded, n <=
  * free cells (a push or a pop is O(1), FIFO QUEUES; the queues' arrays grow by
@@ -221,12 +239,16 @@
  * (p/q a convergent of sqrt 2). */
 #define GRIDPATH_KEY_ONE UINT64_C(1311738121)
 #define GRIDPATH_KEY_SQRT2 UINT64_C(1855077841)
-/* GridPathNode.info: the legal steps in bits 0-7, from in 8-11, closed in 12, the
- * round from 13 on (so any mark of this round exceeds any of an earlier one). */
+/* GridPathNode.info: the legal steps in bits 0-7, from in 8-11, the round the cell
+ * was closed in from 12 on (so any mark of this round exceeds any of an earlier
+ * one). */
 #define GRIDPATH_MOVES 0xffu
 #define GRIDPATH_FROM_SHIFT 8
-#define GRIDPATH_CLOSED (1u << 12)
-#define GRIDPATH_ROUND_SHIFT 13
+#define GRIDPATH_ROUND_SHIFT 12
+/* An entry of the open list (LAZY OFFERS): its cell above GRIDPATH_ENTRY_SHIFT, the
+ * step that offered it below (a cell index is below 2^29: EXACT KEYS). */
+#define GRIDPATH_ENTRY_SHIFT 3
+#define GRIDPATH_ENTRY_FROM 7u
 /* How many steps ahead the walk back fetches (WALK BACK). */
 #define GRIDPATH_WALK_AHEAD 8
 /* A queue's first array (FIFO QUEUES), a power of two. */
@@ -444,7 +466,7 @@ static void gridpath_next_round(GridPathSearch *s)
 		memset(s->node, 0, n * sizeof *s->node);
 		for (int32_t y = 1; y < s->ph - 1; y++)
 			for (int32_t x = 1; x < s->pw - 1; x++)
-				s->node[(size_t)y * s->pw + x].info = gridpath_moves(s, x, y);
+				s->node[(size_t)y * s->pw + x] = gridpath_moves(s, x, y);
 		s->region_x = util_alloc((size_t)s->pw, sizeof *s->region_x);
 		s->region_y = util_alloc((size_t)s->ph, sizeof *s->region_y);
 		s->region_d = util_alloc((size_t)s->pw + (size_t)s->ph + 1, sizeof *s->region_d);
@@ -457,7 +479,7 @@ static void gridpath_next_round(GridPathSearch *s)
 	if (s->round >= (UINT32_MAX >> GRIDPATH_ROUND_SHIFT) - 1) {
 		size_t n = (size_t)s->pw * (size_t)s->ph;
 		for (size_t i = 0; i < n; i++)
-			s->node[i].info &= GRIDPATH_MOVES;
+			s->node[i] &= GRIDPATH_MOVES;
 		s->round = 0;
 	}
 	s->round++;
@@ -481,18 +503,15 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	if ((int64_t)s->pw * s->ph >= GRIDPATH_MAX_CELLS)
 		return GRIDPATH_TOO_LARGE; /* the keys' proof holds below it: EXACT KEYS */
 
-	/* a step's offset in cells, and in bytes of nodes (no scaling in the loop) */
-	ptrdiff_t offset[8], node_step[9];
-	for (int d = 0; d < 8; d++) {
+	/* a step's offset in cells */
+	ptrdiff_t offset[8];
+	for (int d = 0; d < 8; d++)
 		offset[d] = (ptrdiff_t)gridpath_dy[d] * pw + gridpath_dx[d];
-		node_step[d] = offset[d] * (ptrdiff_t)sizeof(GridPathNode);
-	}
-	node_step[GRIDPATH_NO_PARENT] = 0;
 	gridpath_next_round(s);
-	/* the round's marks in info (see GridPathNode) */
-	const uint32_t open_mark = s->round << GRIDPATH_ROUND_SHIFT,
-	               closed_mark = open_mark | GRIDPATH_CLOSED;
-	GridPathNode *const node = s->node, *const goal_node = node + goal;
+	/* the round's mark in info (see GridPathNode): a cell is closed when its info
+	 * is at least it */
+	const uint32_t closed_mark = s->round << GRIDPATH_ROUND_SHIFT;
+	uint32_t *const node = s->node;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
 	int64_t *const region_x = s->region_x, *const region_y = s->region_y;
 	const uint16_t *const region_d = s->region_d + s->ph;
@@ -523,94 +542,39 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		q[i] = (GridPathQueue){s->queue[i].e, 0, 0, s->queue[i].mask};
 		hk[i] = UINT64_MAX;
 	}
-	/* the stack in locals, as the queues; sp its top. The start goes on it, f its
-	 * key. */
+	/* the stack in locals, as the queues; sp its top */
 	if (s->at_stack_cap == 0)
 		s->at_stack = util_grow(s->at_stack, &s->at_stack_cap, 1, sizeof *s->at_stack);
-	int32_t *stack = s->at_stack, *sp = stack;
+	uint32_t *stack = s->at_stack, *sp = stack;
 	int stack_cap = s->at_stack_cap;
-	/* the key of f of the cell expanded */
+	/* The start is closed first, its from GRIDPATH_NO_PARENT, all its legal steps
+	 * tried; every later cell comes out of an entry (LAZY OFFERS). f is the key of
+	 * f of the cell expanded. */
 	uint64_t f = gridpath_key_h(abs(goal_x - (sx + 1)), abs(goal_y - (sy + 1)));
-	node[start].info = (node[start].info & GRIDPATH_MOVES) | open_mark |
-	                   GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
-	node[start].f = (uint32_t)f;
-	*sp++ = start;
-	int64_t expanded = 0;
-	int found = 0;
-	for (;;) {
-		ptrdiff_t c;
-		if (sp != stack) { /* f is that of the cell that pushed it */
-			c = *--sp;
-		} else {
-			/* the queue whose head has the least f; on a tie the first (the
-			 * smaller growth: its entry was pushed from a larger f, later) */
-			_Static_assert(GRIDPATH_QUEUES == 5, "the tree below picks of five");
-			const uint64_t k0 = hk[0], k1 = hk[1], k2 = hk[2], k3 = hk[3], k4 = hk[4];
-			const bool l01 = k1 < k0, l23 = k3 < k2;
-			const uint64_t m01 = l01 ? k1 : k0, m23 = l23 ? k3 : k2;
-			const unsigned b01 = l01, b23 = 2 + (unsigned)l23;
-			const bool l03 = m23 < m01;
-			const uint64_t m03 = l03 ? m23 : m01;
-			const unsigned b03 = l03 ? b23 : b01;
-			const bool l04 = k4 < m03;
-			const uint64_t best = l04 ? k4 : m03;
-			const unsigned b = l04 ? 4 : b03;
-			if (best == UINT64_MAX)
-				break;
-			f = best;
-			GridPathQueue *const qb = &q[b];
-			c = qb->e[qb->head++ & qb->mask].cell;
-			/* the next head's key lies in [f, f + 2^32) (F RELATIVE) */
-			const GridPathQueueEntry next = qb->e[qb->head & qb->mask];
-			hk[b] = qb->head == qb->tail ? UINT64_MAX
-			                             : f + (uint32_t)(next.key - (uint32_t)f);
-			/* PREFETCH: the node of the queue's next head (a stale or free
-			 * slot's cell is a cell of the grid too) */
-			gridpath_prefetch(node + next.cell);
-		}
-		/* Stale entries need no test of their own: a cell's entries leave the list
-		 * in order of f, h is fixed per cell, so the first to leave carries the
-		 * best g, and it closes the cell; the later, stale ones meet the mark. */
-		GridPathNode *const nc = node + c;
-		const uint32_t cinfo = nc->info;
-		if (cinfo >= closed_mark)
-			continue;
-		nc->info = cinfo | GRIDPATH_CLOSED;
-		expanded++;
-		if (nc == goal_node) {
-			found = 1;
-			break;
-		}
-		/* the legal steps from one byte (gridpath_init), in order of d: the order
-		 * of pushes decides ties, and so the path */
-		unsigned m = cinfo & GRIDPATH_MOVES;
-		const unsigned from = cinfo >> GRIDPATH_FROM_SHIFT & 15;
-		{ /* the start's "parent" is itself (node_step[8] = 0), skip[8][] = 0 */
-			const GridPathNode *parent =
-			    (const GridPathNode *)((const char *)nc - node_step[from]);
-			m &= ~(unsigned)s->skip[from][parent->info & GRIDPATH_MOVES];
-		}
+	uint32_t c = (uint32_t)start, cinfo = node[start];
+	unsigned m = cinfo & GRIDPATH_MOVES;
+	node[start] = m | closed_mark | GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
+	int64_t expanded = 1;
+	int found = start == goal;
+	while (!found) {
 		const uint32_t f_low = (uint32_t)f;
 		/* the row of df of the cell's region (gridpath_region), by tables */
 		const ptrdiff_t y = (ptrdiff_t)((uint64_t)c * div_mul >> div_shift);
-		const int64_t rx = region_x[c - y * pw], ry = region_y[y];
+		const int64_t rx = region_x[(ptrdiff_t)c - y * pw], ry = region_y[y];
 		const uint64_t *df = (const uint64_t *)(df_rows + (rx & 4095) + (ry & 4095) +
 		                                        region_d[(rx >> 12) - (ry >> 12)]);
+		/* the legal steps not skipped, in order of d: the order of pushes decides
+		 * ties, and so the path */
 		for (; m; m &= m - 1) {
 			const unsigned d = (unsigned)gridpath_ctz64(m);
-			GridPathNode *const nn = (GridPathNode *)((char *)nc + node_step[d]);
-			/* a closed cell's cost is final; an open one's f, the same h plus its
-			 * g, is improved when lower (F RELATIVE) */
-			const uint64_t grow = df[d];
-			const uint32_t info = nn->info, dfd = (uint32_t)grow;
-			if (info >= closed_mark ||
-			    (info >= open_mark && dfd >= (uint32_t)(nn->f - f_low)))
+			const uint32_t n = c + (uint32_t)offset[d];
+			/* a closed cell's cost is final; any other is offered (LAZY OFFERS) */
+			if (node[n] >= closed_mark)
 				continue;
-			nn->info = (info & GRIDPATH_MOVES) | open_mark | d << GRIDPATH_FROM_SHIFT;
-			nn->f = f_low + dfd;
 			/* PREFETCH: the line of the cell beyond n, which n's expansion reads */
-			gridpath_prefetch((const char *)nn + node_step[d]);
-			const int32_t n = (int32_t)(nn - node);
+			gridpath_prefetch(node + n + offset[d]);
+			const uint64_t grow = df[d];
+			const uint32_t dfd = (uint32_t)grow, e = n << GRIDPATH_ENTRY_SHIFT | d;
 			if (dfd == 0) {
 				/* As good as the best open entry: expand it next, no queue. */
 				if (sp == stack + stack_cap) {
@@ -619,7 +583,7 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 					    util_grow(stack, &stack_cap, count + 1, sizeof *stack);
 					sp = stack + count;
 				}
-				*sp++ = n;
+				*sp++ = e;
 			} else {
 				/* its growth's queue, whose keys never decrease (FIFO QUEUES) */
 				const unsigned i = (unsigned)(grow >> 32);
@@ -628,10 +592,60 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 					*qi = gridpath_queue_grown(*qi);
 				if (qi->tail == qi->head)
 					hk[i] = f + dfd;
-				qi->e[qi->tail++ & qi->mask] = (GridPathQueueEntry){f_low + dfd, n};
+				qi->e[qi->tail++ & qi->mask] = (GridPathQueueEntry){f_low + dfd, e};
 			}
 		}
+		/* the next entry whose cell is not closed: a cell's entries leave the list in
+		 * order of f, h is fixed per cell, so the first to leave carries the best g
+		 * and closes it; the later, stale ones meet the mark */
+		uint32_t e;
+		for (;;) {
+			if (sp != stack) { /* f is that of the cell that pushed it */
+				e = *--sp;
+			} else {
+				/* the queue whose head has the least f; on a tie the first (the
+				 * smaller growth: its entry was pushed from a larger f, later) */
+				_Static_assert(GRIDPATH_QUEUES == 5, "the tree below picks of five");
+				const uint64_t k0 = hk[0], k1 = hk[1], k2 = hk[2], k3 = hk[3],
+				               k4 = hk[4];
+				const bool l01 = k1 < k0, l23 = k3 < k2;
+				const uint64_t m01 = l01 ? k1 : k0, m23 = l23 ? k3 : k2;
+				const unsigned b01 = l01, b23 = 2 + (unsigned)l23;
+				const bool l03 = m23 < m01;
+				const uint64_t m03 = l03 ? m23 : m01;
+				const unsigned b03 = l03 ? b23 : b01;
+				const bool l04 = k4 < m03;
+				const uint64_t best = l04 ? k4 : m03;
+				const unsigned b = l04 ? 4 : b03;
+				if (best == UINT64_MAX)
+					goto done;
+				f = best;
+				GridPathQueue *const qb = &q[b];
+				e = qb->e[qb->head++ & qb->mask].offer;
+				/* the next head's key lies in [f, f + 2^32) (F RELATIVE) */
+				const GridPathQueueEntry next = qb->e[qb->head & qb->mask];
+				hk[b] = qb->head == qb->tail
+				            ? UINT64_MAX
+				            : f + (uint32_t)(next.key - (uint32_t)f);
+				/* PREFETCH: the node of the queue's next head (a stale or free
+				 * slot's cell is a cell of the grid too) */
+				gridpath_prefetch(node + (next.offer >> GRIDPATH_ENTRY_SHIFT));
+			}
+			c = e >> GRIDPATH_ENTRY_SHIFT;
+			cinfo = node[c];
+			if (cinfo < closed_mark)
+				break;
+		}
+		/* close c, its from the entry's step */
+		const unsigned from = e & GRIDPATH_ENTRY_FROM;
+		node[c] = (cinfo & GRIDPATH_MOVES) | closed_mark | from << GRIDPATH_FROM_SHIFT;
+		expanded++;
+		found = c == (uint32_t)goal;
+		/* PARENT'S NEIGHBOURS: the steps the parent's offers make needless */
+		m = cinfo & GRIDPATH_MOVES &
+		    ~(unsigned)s->skip[from][node[c - (uint32_t)offset[from]] & GRIDPATH_MOVES];
 	}
+done:
 	for (int i = 0; i < GRIDPATH_QUEUES; i++)
 		s->queue[i] = q[i];
 	s->at_stack = stack;
@@ -645,16 +659,18 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	int32_t straight = 0, steps = 0;
 	uint8_t *walk = s->walk;
 	int walk_cap = s->walk_cap;
-	for (int32_t c = goal, d;
-	     (d = (int)(node[c].info >> GRIDPATH_FROM_SHIFT & 15)) != GRIDPATH_NO_PARENT;) {
+	c = (uint32_t)goal;
+	for (int d; (d = (int)(node[c] >> GRIDPATH_FROM_SHIFT & 15)) != GRIDPATH_NO_PARENT;) {
 		if (steps == walk_cap)
 			walk = util_grow(walk, &walk_cap, steps + 1, sizeof *walk);
 		walk[steps++] = (uint8_t)d;
 		straight += d < 4;
-		c -= offset[d];
+		c -= (uint32_t)offset[d];
 		/* WALK BACK: the node GRIDPATH_WALK_AHEAD steps on if the path runs
 		 * straight on (a hint: no effect on results) */
-		gridpath_prefetch(node + c - GRIDPATH_WALK_AHEAD * offset[d]);
+		gridpath_prefetch((const void *)((uintptr_t)(node + c) -
+		                                 (uintptr_t)(GRIDPATH_WALK_AHEAD * offset[d] *
+		                                             (ptrdiff_t)sizeof *node)));
 	}
 	s->walk = walk;
 	s->walk_cap = walk_cap;
