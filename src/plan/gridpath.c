@@ -86,9 +86,17 @@
  * the cell one more step d beyond it, a new row or column that no hardware
  * prefetcher foresees when the search runs along a column; gridpath_prefetch asks
  * for it at the push, and for the node of a queue's next head at each pop. The
- * nodes are 8 MB at 1024 (past the 1 MB L2 cache here, and flushed by the
- * benchmark's other jobs) and 134 MB at 4096 (past every cache). Further lines
- * (the cells beside the one beyond, or two steps beyond) gained nothing measurable.
+ * nodes were 8 MB at 1024 (past the 1 MB L2 cache here, and flushed by the
+ * benchmark's other jobs) and 134 MB at 4096 (past every cache); 4 and 67 MB since
+ * LAZY OFFERS. Further lines (the cells beside the one beyond, or two steps beyond)
+ * gained nothing measurable then. Since LAZY OFFERS a push also asks for the line
+ * GRIDPATH_PUSH_AHEAD = 4 steps beyond n: a run of growth 0 down a corridor goes by
+ * the stack, each cell expanded right after its push, too soon for the line one
+ * step on to arrive. Maze at 1024, caches flushed before each query (medians of 10,
+ * three runs alternated): 10.5-10.7 -> 9.9-10.0 ms; 6 or 8 steps the same within the
+ * noise, 2 steps half of it; the cells beside n, or the three lines about the
+ * queue's next head, nothing measurable. (How much is memory: the 256 maze, 264 KB
+ * of nodes, 9.8 ns a cell expanded, warm; 512, 1 MB, 13.7; 1024 15.4.)
  *
  * WALK BACK: the path is read back from the goal along each cell's from, a chain of
  * dependent loads, one node a step (45 298 steps on the 1024 maze, 303 414 at
@@ -211,6 +219,16 @@
  * (another path of the same length), Boston_0_1024 190 205 -> 190 559, den520d
  * 50 584 -> 50 682.
  *
+ * ROOM: a push tests no capacity. Before an expansion, which pushes at most 8
+ * entries, room (the least free slots of any queue and the stack, less 8 for each
+ * expansion since it was counted) is at least 8, else each queue or stack with
+ * fewer than GRIDPATH_ROOM free slots grows and room is counted again (about once in
+ * 30 expansions). Maze at 1024: 107.9 -> 94.0 M instructions (callgrind), the time
+ * the same within the noise (10.0-10.5 ms against 9.8-10.5, five runs alternated).
+ * Not kept: the head's key of a push's queue set by a minimum, a store on every
+ * push instead of a test (95.0 M, but 1.35 times slower: the pop's loads of the
+ * heads' keys run ahead of a store whose queue is known late, and are replayed).
+ *
  * INVARIANTS: node[c]'s round (bits 12-31) is this query's once c is closed, its
  * cost final, and then from (bits 8-11) is the step of a shortest path into it (8
  * for the start); with an earlier round c is not closed. Bits 0-7, its legal
@@ -249,8 +267,11 @@
  * step that offered it below (a cell index is below 2^29: EXACT KEYS). */
 #define GRIDPATH_ENTRY_SHIFT 3
 #define GRIDPATH_ENTRY_FROM 7u
-/* How many steps ahead the walk back fetches (WALK BACK). */
+/* How many steps ahead the walk back fetches (WALK BACK), and a push (PREFETCH). */
 #define GRIDPATH_WALK_AHEAD 8
+#define GRIDPATH_PUSH_AHEAD 4
+/* The least room ROOM makes in each queue and the stack, when it looks. */
+#define GRIDPATH_ROOM 256
 /* A queue's first array (FIFO QUEUES), a power of two. */
 #define GRIDPATH_QUEUE_FIRST 256
 _Static_assert(GRIDPATH_KEY_SQRT2 *GRIDPATH_KEY_SQRT2 ==
@@ -266,6 +287,13 @@ static inline void gridpath_prefetch(const void *p)
 #else
 	(void)p;
 #endif
+}
+
+/* gridpath_prefetch_near(p, k): gridpath_prefetch of p + k, which may lie outside
+ * p's array (the address is made as an integer, not by pointer arithmetic). */
+static inline void gridpath_prefetch_near(const uint32_t *p, ptrdiff_t k)
+{
+	gridpath_prefetch((const void *)((uintptr_t)p + (uintptr_t)(k * (ptrdiff_t)sizeof *p)));
 }
 
 /* gridpath_key_h(ax, ay): the key of the octile distance over (ax, ay) >= 0. */
@@ -439,7 +467,7 @@ void gridpath_free(GridPathSearch *s)
  * FIFO QUEUES (see the header): a queue per growth of f above zero, in the order
  * of the growths, smallest first; the stack takes the growths of zero. */
 
-/* gridpath_queue_grown(q): q, full, with an array twice as long, its entries moved
+/* gridpath_queue_grown(q): q with an array twice as long, its entries moved
  * to the front in order. By value, so that no queue's address escapes
  * gridpath_find (a store into a node could then alias it). */
 static GridPathQueue gridpath_queue_grown(GridPathQueue q)
@@ -543,8 +571,6 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		hk[i] = UINT64_MAX;
 	}
 	/* the stack in locals, as the queues; sp its top */
-	if (s->at_stack_cap == 0)
-		s->at_stack = util_grow(s->at_stack, &s->at_stack_cap, 1, sizeof *s->at_stack);
 	uint32_t *stack = s->at_stack, *sp = stack;
 	int stack_cap = s->at_stack_cap;
 	/* The start is closed first, its from GRIDPATH_NO_PARENT, all its legal steps
@@ -556,7 +582,25 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	node[start] = m | closed_mark | GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
 	int64_t expanded = 1;
 	int found = start == goal;
+	/* ROOM: every queue and the stack have room for room more entries */
+	int32_t room = 0;
 	while (!found) {
+		if (room < 8) { /* an expansion pushes at most 8 entries */
+			room = INT32_MAX;
+			for (int i = 0; i < GRIDPATH_QUEUES; i++) {
+				if (q[i].mask + 1 - (q[i].tail - q[i].head) < GRIDPATH_ROOM)
+					q[i] = gridpath_queue_grown(q[i]);
+				const uint32_t free_slots = q[i].mask + 1 - (q[i].tail - q[i].head);
+				room = free_slots < (uint32_t)room ? (int32_t)free_slots : room;
+			}
+			const int count = (int)(sp - stack);
+			if (stack_cap - count < GRIDPATH_ROOM) {
+				stack = util_grow(stack, &stack_cap, count + GRIDPATH_ROOM, sizeof *stack);
+				sp = stack + count;
+			}
+			room = stack_cap - count < room ? stack_cap - count : room;
+		}
+		room -= 8;
 		const uint32_t f_low = (uint32_t)f;
 		/* the row of df of the cell's region (gridpath_region), by tables */
 		const ptrdiff_t y = (ptrdiff_t)((uint64_t)c * div_mul >> div_shift);
@@ -571,25 +615,21 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 			/* a closed cell's cost is final; any other is offered (LAZY OFFERS) */
 			if (node[n] >= closed_mark)
 				continue;
-			/* PREFETCH: the line of the cell beyond n, which n's expansion reads */
+			/* PREFETCH: the line of the cell beyond n, which n's expansion reads,
+			 * and the one GRIDPATH_PUSH_AHEAD steps on */
 			gridpath_prefetch(node + n + offset[d]);
+			gridpath_prefetch_near(node + n, GRIDPATH_PUSH_AHEAD * offset[d]);
 			const uint64_t grow = df[d];
 			const uint32_t dfd = (uint32_t)grow, e = n << GRIDPATH_ENTRY_SHIFT | d;
 			if (dfd == 0) {
 				/* As good as the best open entry: expand it next, no queue. */
-				if (sp == stack + stack_cap) {
-					const int count = (int)(sp - stack);
-					stack =
-					    util_grow(stack, &stack_cap, count + 1, sizeof *stack);
-					sp = stack + count;
-				}
 				*sp++ = e;
 			} else {
 				/* its growth's queue, whose keys never decrease (FIFO QUEUES) */
 				const unsigned i = (unsigned)(grow >> 32);
 				GridPathQueue *const qi = &q[i];
-				if (qi->tail - qi->head > qi->mask)
-					*qi = gridpath_queue_grown(*qi);
+				/* its head's key: this one's if the queue is empty (hk[i] =
+				 * UINT64_MAX), else no more than it */
 				if (qi->tail == qi->head)
 					hk[i] = f + dfd;
 				qi->e[qi->tail++ & qi->mask] = (GridPathQueueEntry){f_low + dfd, e};
@@ -668,9 +708,7 @@ done:
 		c -= (uint32_t)offset[d];
 		/* WALK BACK: the node GRIDPATH_WALK_AHEAD steps on if the path runs
 		 * straight on (a hint: no effect on results) */
-		gridpath_prefetch((const void *)((uintptr_t)(node + c) -
-		                                 (uintptr_t)(GRIDPATH_WALK_AHEAD * offset[d] *
-		                                             (ptrdiff_t)sizeof *node)));
+		gridpath_prefetch_near(node + c, -GRIDPATH_WALK_AHEAD * offset[d]);
 	}
 	s->walk = walk;
 	s->walk_cap = walk_cap;
