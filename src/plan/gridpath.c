@@ -25,11 +25,13 @@
  * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
  * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
  * first = the tree before issue 16's work, which kept the paged heap for both
- * searches; then the second round's, the third's, then this, the fourth):
- *   plain A*    rooms 230 -> 145 -> 83 -> 35.4 M, rects 149 -> 93 -> 54 -> 20.8,
- *               maze 333 -> 209 -> 151 -> 105.3 (688 000 cells expanded: 485 ->
- *               304 -> 220 -> 153 instructions a cell), Boston_0_1024 192 -> 119 ->
- *               69 -> 28.7, den520d (x2) 51 -> 32 -> 19 -> 7.4;
+ * searches; then the second round's, the third's, the fourth's, then this, the
+ * fifth):
+ *   plain A*    rooms 230 -> 145 -> 83 -> 35.4 -> 32.1 M, rects 149 -> 93 -> 54 ->
+ *               20.8 -> 18.8, maze 333 -> 209 -> 151 -> 105.3 -> 96.1 (688 000
+ *               cells expanded: 485 -> 304 -> 220 -> 153 -> 140 instructions a
+ *               cell), Boston_0_1024 192 -> 119 -> 69 -> 28.7 -> 26.0, den520d (x2)
+ *               51 -> 32 -> 19 -> 7.4 -> 6.7;
  *   jump points: gridjump.c, PERFORMANCE.
  * The steps of the second round, maze plain A*: the parent's neighbours skipped 337
  * -> 292 M; the ring for the paged heap 292 -> 232; locals instead of fields re-read
@@ -60,7 +62,7 @@
  * 15.7 (1.86), Boston_0_1024 6.89 -> 2.73 (2.53), den520d 1.37 -> 0.62 (2.21);
  * maze at 4096, best of 3, 313-324 -> 160-175 ms. Without the prefetches it runs
  * 1.30-1.34 times slower at 1024, 1.35 at 4096 (211-216 against 158-160 ms).
- * Ratios to libtcod: see gridpath.h. Where the time goes now, in the maze: about
+ * Ratios to libtcod: see gridpath.h. Where the time went then, in the maze: about
  * 153 instructions a cell expanded (a pop about 40, a push about 23, the region and
  * the parent's steps about 30, one neighbour tried) and about 1.0 branch
  * misprediction (the queue of the least head, the loop's end). The search is bound
@@ -70,6 +72,25 @@
  * branches (the neighbours' tests, the queue of the least head) mispredicted a
  * fifth less but ran 1.1 to 1.3 times slower; so did a first pass for the mask of
  * taken neighbours, and buckets 4 or 16 times finer (153, 159 M).
+ * The fifth round (issue 16, margin on the maze), by memory more than instructions:
+ * WALK BACK, LAZY OFFERS (nodes of 4 bytes, no store at a push), ROOM and the push's
+ * second prefetch (PREFETCH). Time, a driver timing gridpath_find on the bench
+ * grids after writing 64 MB to flush the caches (thread CPU; the median of five
+ * runs, each the median of 10 queries, alternating with the fourth round's code
+ * in one session, load 8 on 2 cores; the ends as skelbench picks them): rooms 2.77
+ * -> 2.21 ms, rects 1.61 -> 1.27, maze 18.1 -> 10.2 (1.78 times faster; 26 -> 15 ns
+ * a cell expanded), Boston_0_1024 2.18 -> 1.70, den520d 0.52 -> 0.45; at 4096
+ * (medians of 5 queries, three runs alternated) maze 161-172 -> 96-98 ms, rooms
+ * 44-45 -> 35, rects 24.5-24.8 -> 19.4-19.9. The same paths, point for point, on
+ * all of them. Where the maze's time goes now: the 256 maze (nodes 264 KB, in the
+ * L2 cache) costs 9.8 ns a cell expanded, the 1024 about 15 (nodes 4 MB): a third
+ * is memory; the rest the chain from a pop to its node to the next push and pop,
+ * with about 1 branch misprediction a cell (callgrind's model: the loop's end,
+ * the least head's queue). Tried and not kept this round, each no faster or slower
+ * on the maze: the first legal step pushed without a branch (the stack's and the
+ * queue's slot both written, one pointer advanced: 2-4% slower), the stack's top
+ * kept in a register (the same), the code built for x86-64-v3 (2-3% faster: not
+ * worth a clone), the walk back fetching 16 steps ahead too (1%).
  *
  * SCALING (issue 16's scaling round, `skelbench --scaling`, every side timed in each
  * round, medians of 7 and 9, three runs, loaded): corner to corner on rooms, rects

@@ -28,8 +28,8 @@
  * bit for the jump search (a record index and a seen bit); plus the open list (for
  * plain A* five queues of 8-byte entries, each a power of two of at least 256
  * entries and at most twice the most it held at once, 4 bytes per entry of its
- * stack and a byte per step of its last path; for the jump search 16 bytes per pushed entry; at most 8 pushes per cell,
- * far fewer in practice), for plain A* 18 bytes per column and per row (its region
+ * stack and a byte per step of its last path; for the jump search 16 bytes per
+ * pushed entry; at most 8 pushes per cell, far fewer in practice), for plain A* 18 bytes per column and per row (its region
  * tables), and for the jump search 28 bytes per jump point seen, all kept
  * between queries.
  *
@@ -51,6 +51,16 @@
  * times libtcod for plain A* is met on every map at 1024 and on the three run at
  * 4096 (the maze 5.63 and 5.93, at about 153 instructions a cell expanded, see
  * gridpath.c); the Moving AI maps at 4096 were not run this round.
+ * After the fifth round (gridpath.c: WALK BACK, LAZY OFFERS, ROOM, PREFETCH), two
+ * runs of bench/compare.py --side 1024 each beside one of the fourth round's code
+ * (skelbench built with it), alternating, on 2026-11-27 at load 10-14 on 2 cores:
+ * plain A* rooms 2.23-2.26 ms, rects 1.29-1.34, maze 10.33-10.44 (19.25-19.49 with
+ * the fourth round's), Boston_0_1024 1.76-1.77, den520d 0.45-0.52; libtcod over it
+ * 104-112, 139-145, 7.18-7.53 (3.98-4.05), 98-107 and 80-97 times. At 4096
+ * (skelbench --compare --side 4096, two runs each alternating, medians of 5; then
+ * libtcod's tcodpath on the same grids, medians of 3): the maze 92.7-99.1 ms
+ * against 162.8-167.5, libtcod (770 ms) over it 7.77-8.30 (4.60-4.73); see README,
+ * Benchmarks, for the other grids.
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
