@@ -9,7 +9,8 @@
  * is consistent: a cell is final when it is first closed and is never reopened.
  * The open list uses lazy deletion: an improved cell is pushed again and stale
  * entries are skipped when popped (cheaper than decrease-key, whose position index
- * costs a random memory access per swap). Plain A* files its entries in five
+ * costs a random memory access per swap); plain A* pushes every offer to a cell not
+ * closed and keeps no f per cell (LAZY OFFERS). Plain A* files its entries in five
  * first-in first-out queues, one for each growth of f a step can make above zero
  * (FIFO QUEUES), and orders by exact integer keys (EXACT KEYS); the jump search
  * (gridjump.c), whose growths are arbitrary, files them in buckets of f, a page of
@@ -24,11 +25,13 @@
  * PERFORMANCE (issue 16; instructions by callgrind, exact, of one warm corner-to-
  * corner query at 1024 as skelbench picks the ends, gridpath_find inclusive;
  * first = the tree before issue 16's work, which kept the paged heap for both
- * searches; then the second round's, the third's, then this, the fourth):
- *   plain A*    rooms 230 -> 145 -> 83 -> 35.4 M, rects 149 -> 93 -> 54 -> 20.8,
- *               maze 333 -> 209 -> 151 -> 105.3 (688 000 cells expanded: 485 ->
- *               304 -> 220 -> 153 instructions a cell), Boston_0_1024 192 -> 119 ->
- *               69 -> 28.7, den520d (x2) 51 -> 32 -> 19 -> 7.4;
+ * searches; then the second round's, the third's, the fourth's, then this, the
+ * fifth):
+ *   plain A*    rooms 230 -> 145 -> 83 -> 35.4 -> 32.1 M, rects 149 -> 93 -> 54 ->
+ *               20.8 -> 18.8, maze 333 -> 209 -> 151 -> 105.3 -> 96.1 (688 000
+ *               cells expanded: 485 -> 304 -> 220 -> 153 -> 140 instructions a
+ *               cell), Boston_0_1024 192 -> 119 -> 69 -> 28.7 -> 26.0, den520d (x2)
+ *               51 -> 32 -> 19 -> 7.4 -> 6.7;
  *   jump points: gridjump.c, PERFORMANCE.
  * The steps of the second round, maze plain A*: the parent's neighbours skipped 337
  * -> 292 M; the ring for the paged heap 292 -> 232; locals instead of fields re-read
@@ -59,7 +62,7 @@
  * 15.7 (1.86), Boston_0_1024 6.89 -> 2.73 (2.53), den520d 1.37 -> 0.62 (2.21);
  * maze at 4096, best of 3, 313-324 -> 160-175 ms. Without the prefetches it runs
  * 1.30-1.34 times slower at 1024, 1.35 at 4096 (211-216 against 158-160 ms).
- * Ratios to libtcod: see gridpath.h. Where the time goes now, in the maze: about
+ * Ratios to libtcod: see gridpath.h. Where the time went then, in the maze: about
  * 153 instructions a cell expanded (a pop about 40, a push about 23, the region and
  * the parent's steps about 30, one neighbour tried) and about 1.0 branch
  * misprediction (the queue of the least head, the loop's end). The search is bound
@@ -69,6 +72,25 @@
  * branches (the neighbours' tests, the queue of the least head) mispredicted a
  * fifth less but ran 1.1 to 1.3 times slower; so did a first pass for the mask of
  * taken neighbours, and buckets 4 or 16 times finer (153, 159 M).
+ * The fifth round (issue 16, margin on the maze), by memory more than instructions:
+ * WALK BACK, LAZY OFFERS (nodes of 4 bytes, no store at a push), ROOM and the push's
+ * second prefetch (PREFETCH). Time, a driver timing gridpath_find on the bench
+ * grids after writing 64 MB to flush the caches (thread CPU; the median of five
+ * runs, each the median of 10 queries, alternating with the fourth round's code
+ * in one session, load 8 on 2 cores; the ends as skelbench picks them): rooms 2.77
+ * -> 2.21 ms, rects 1.61 -> 1.27, maze 18.1 -> 10.2 (1.78 times faster; 26 -> 15 ns
+ * a cell expanded), Boston_0_1024 2.18 -> 1.70, den520d 0.52 -> 0.45; at 4096
+ * (medians of 5 queries, three runs alternated) maze 161-172 -> 96-98 ms, rooms
+ * 44-45 -> 35, rects 24.5-24.8 -> 19.4-19.9. The same paths, point for point, on
+ * all of them. Where the maze's time goes now: the 256 maze (nodes 264 KB, in the
+ * L2 cache) costs 9.8 ns a cell expanded, the 1024 about 15 (nodes 4 MB): a third
+ * is memory; the rest the chain from a pop to its node to the next push and pop,
+ * with about 1 branch misprediction a cell (callgrind's model: the loop's end,
+ * the least head's queue). Tried and not kept this round, each no faster or slower
+ * on the maze: the first legal step pushed without a branch (the stack's and the
+ * queue's slot both written, one pointer advanced: 2-4% slower), the stack's top
+ * kept in a register (the same), the code built for x86-64-v3 (2-3% faster: not
+ * worth a clone), the walk back fetching 16 steps ahead too (1%).
  *
  * SCALING (issue 16's scaling round, `skelbench --scaling`, every side timed in each
  * round, medians of 7 and 9, three runs, loaded): corner to corner on rooms, rects
@@ -85,9 +107,26 @@
  * the cell one more step d beyond it, a new row or column that no hardware
  * prefetcher foresees when the search runs along a column; gridpath_prefetch asks
  * for it at the push, and for the node of a queue's next head at each pop. The
- * nodes are 8 MB at 1024 (past the 1 MB L2 cache here, and flushed by the
- * benchmark's other jobs) and 134 MB at 4096 (past every cache). Further lines
- * (the cells beside the one beyond, or two steps beyond) gained nothing measurable.
+ * nodes were 8 MB at 1024 (past the 1 MB L2 cache here, and flushed by the
+ * benchmark's other jobs) and 134 MB at 4096 (past every cache); 4 and 67 MB since
+ * LAZY OFFERS. Further lines (the cells beside the one beyond, or two steps beyond)
+ * gained nothing measurable then. Since LAZY OFFERS a push also asks for the line
+ * GRIDPATH_PUSH_AHEAD = 4 steps beyond n: a run of growth 0 down a corridor goes by
+ * the stack, each cell expanded right after its push, too soon for the line one
+ * step on to arrive. Maze at 1024, caches flushed before each query (medians of 10,
+ * three runs alternated): 10.5-10.7 -> 9.9-10.0 ms; 6 or 8 steps the same within the
+ * noise, 2 steps half of it; the cells beside n, or the three lines about the
+ * queue's next head, nothing measurable. (How much is memory: the 256 maze, 264 KB
+ * of nodes, 9.8 ns a cell expanded, warm; 512, 1 MB, 13.7; 1024 15.4.)
+ *
+ * WALK BACK: the path is read back from the goal along each cell's from, a chain of
+ * dependent loads, one node a step (45 298 steps on the 1024 maze, 303 414 at
+ * 4096), each a miss past the caches. It is walked once, its steps kept in a byte
+ * array (walk) from which the points are written (it was walked twice: 15% of the
+ * maze's query at 1024, 26% at 4096 by perf), and each step asks for the node
+ * GRIDPATH_WALK_AHEAD steps on as if the path ran straight on (a corridor), which
+ * overlaps the misses: the 4096 maze's query 150 -> 120 ms (warm, best of 3), the
+ * walk 26% -> 9% of it; 4 or 16 steps ahead were no better.
  *
  * PARENT'S NEIGHBOURS: an expansion of a cell c reached from its parent p (the
  * cell whose offer set c's cost, closed before c) need not try the steps of three
@@ -152,13 +191,30 @@
  * (gridpath_init, which checks that claim on every offset within 5 of the goal), so
  * a neighbour's f is its cell's f plus one load; 0 sends it to the stack.
  *
- * F RELATIVE: a node keeps only the low 32 bits of its f's key, and no g. An offer
- * to an open cell is compared by f (the same h, so f orders as g would): F, the f
- * being expanded, is the least in the list and never decreases, and every offer is
- * at most 2 sqrt 2 above the F of its time, so the open cell's f and the offer's, F
- * + df, both lie in [F, F + 2 sqrt 2], 3.71e9 of key, under 2^32: their low 32 bits
- * less F's, modulo 2^32, order them exactly. A closed cell, whose f may lie far
- * below F, is refused by its mark alone.
+ * F RELATIVE: an entry of the open list keeps only the low 32 bits of its f's key:
+ * F, the f being expanded, is the least in the list and never decreases, and every
+ * offer is at most 2 sqrt 2 above the F of its time, so every entry's f lies in [F,
+ * F + 2 sqrt 2], 3.71e9 of key, under 2^32: its low 32 bits less F's, modulo 2^32,
+ * give it exactly. (Until LAZY OFFERS a node kept these bits too, to compare an
+ * offer to an open cell with its best.)
+ *
+ * LAZY OFFERS: a cell's node is 4 bytes, its legal steps, the step that closed it
+ * and the round it was closed in, and nothing else: no f, no open mark. Every offer
+ * to a cell not closed is pushed, the step that made it kept in the entry (the cell
+ * index above 3 bits, below 2^29 cells: EXACT KEYS), and the first entry of a cell
+ * to leave the list closes it and writes its from; the later ones are stale,
+ * refused by the mark. This is the lazy deletion above with the comparison of an
+ * offer against the open cell's best left to the list's order: a cell's entries
+ * leave in order of f, its h fixed, so the first carries its least g (consistent
+ * h). A push writes no node (it reads the neighbour's mark, to refuse a closed
+ * one); an offer that the node's f would have refused becomes an entry more, rare
+ * after PARENT'S NEIGHBOURS (none in the maze, where every free cell is offered
+ * once; rects 142 581 -> 142 650 cells expanded, other ties). Nodes of 4 bytes, not
+ * 8, halve the lines a query touches (16 cells to a line) and the stores: the maze's
+ * query, its caches flushed before each query, 12.2-13.7 -> 9.4-9.8 ms at 1024
+ * (medians of 10, three runs alternated), warm 108 -> 86 ms at 4096, for about the
+ * same instructions (105.5 -> 107.9 M, callgrind). Where shortest paths tie,
+ * another may come out than when an equal offer was refused.
  *
  * FIFO QUEUES: a step's growth of f (EXACT KEYS) is 0 or one of five values, 2 -
  * sqrt 2, 2 sqrt 2 - 2, sqrt 2, 2 and 2 sqrt 2 (gridpath_init finds them in df and
@@ -184,11 +240,21 @@
  * (another path of the same length), Boston_0_1024 190 205 -> 190 559, den520d
  * 50 584 -> 50 682.
  *
- * INVARIANTS: node[c].info's round (bits 13-31) is this query's when c was reached
- * in it: then f holds the low bits of the key of its best known f and from (bits
- * 8-11) the step of that path, and bit 12 is set once c is closed, its cost final;
- * with an earlier round c is unseen. Bits 0-7, its legal steps, never change. The
- * border cells of the padded copy are never free.
+ * ROOM: a push tests no capacity. Before an expansion, which pushes at most 8
+ * entries, room (the least free slots of any queue and the stack, less 8 for each
+ * expansion since it was counted) is at least 8, else each queue or stack with
+ * fewer than GRIDPATH_ROOM free slots grows and room is counted again (about once in
+ * 30 expansions). Maze at 1024: 107.9 -> 94.0 M instructions (callgrind), the time
+ * the same within the noise (10.0-10.5 ms against 9.8-10.5, five runs alternated).
+ * Not kept: the head's key of a push's queue set by a minimum, a store on every
+ * push instead of a test (95.0 M, but 1.35 times slower: the pop's loads of the
+ * heads' keys run ahead of a store whose queue is known late, and are replayed).
+ *
+ * INVARIANTS: node[c]'s round (bits 12-31) is this query's once c is closed, its
+ * cost final, and then from (bits 8-11) is the step of a shortest path into it (8
+ * for the start); with an earlier round c is not closed. Bits 0-7, its legal
+ * steps, never change. Every entry's cell is free and was offered by a closed cell
+ * by the entry's step. The border cells of the padded copy are never free.
  *
  * MEMORY: see gridpath.h. COMPLEXITY: plain A* O(n) for n cells expanded, n <=
  * free cells (a push or a pop is O(1), FIFO QUEUES; the queues' arrays grow by
@@ -212,12 +278,21 @@
  * (p/q a convergent of sqrt 2). */
 #define GRIDPATH_KEY_ONE UINT64_C(1311738121)
 #define GRIDPATH_KEY_SQRT2 UINT64_C(1855077841)
-/* GridPathNode.info: the legal steps in bits 0-7, from in 8-11, closed in 12, the
- * round from 13 on (so any mark of this round exceeds any of an earlier one). */
+/* GridPathNode.info: the legal steps in bits 0-7, from in 8-11, the round the cell
+ * was closed in from 12 on (so any mark of this round exceeds any of an earlier
+ * one). */
 #define GRIDPATH_MOVES 0xffu
 #define GRIDPATH_FROM_SHIFT 8
-#define GRIDPATH_CLOSED (1u << 12)
-#define GRIDPATH_ROUND_SHIFT 13
+#define GRIDPATH_ROUND_SHIFT 12
+/* An entry of the open list (LAZY OFFERS): its cell above GRIDPATH_ENTRY_SHIFT, the
+ * step that offered it below (a cell index is below 2^29: EXACT KEYS). */
+#define GRIDPATH_ENTRY_SHIFT 3
+#define GRIDPATH_ENTRY_FROM 7u
+/* How many steps ahead the walk back fetches (WALK BACK), and a push (PREFETCH). */
+#define GRIDPATH_WALK_AHEAD 8
+#define GRIDPATH_PUSH_AHEAD 4
+/* The least room ROOM makes in each queue and the stack, when it looks. */
+#define GRIDPATH_ROOM 256
 /* A queue's first array (FIFO QUEUES), a power of two. */
 #define GRIDPATH_QUEUE_FIRST 256
 _Static_assert(GRIDPATH_KEY_SQRT2 *GRIDPATH_KEY_SQRT2 ==
@@ -233,6 +308,13 @@ static inline void gridpath_prefetch(const void *p)
 #else
 	(void)p;
 #endif
+}
+
+/* gridpath_prefetch_near(p, k): gridpath_prefetch of p + k, which may lie outside
+ * p's array (the address is made as an integer, not by pointer arithmetic). */
+static inline void gridpath_prefetch_near(const uint32_t *p, ptrdiff_t k)
+{
+	gridpath_prefetch((const void *)((uintptr_t)p + (uintptr_t)(k * (ptrdiff_t)sizeof *p)));
 }
 
 /* gridpath_key_h(ax, ay): the key of the octile distance over (ax, ay) >= 0. */
@@ -393,6 +475,7 @@ void gridpath_free(GridPathSearch *s)
 		free(s->queue[i].e);
 	free(s->stack);
 	free(s->at_stack);
+	free(s->walk);
 	free(s->region_x);
 	free(s->region_y);
 	free(s->region_d);
@@ -405,7 +488,7 @@ void gridpath_free(GridPathSearch *s)
  * FIFO QUEUES (see the header): a queue per growth of f above zero, in the order
  * of the growths, smallest first; the stack takes the growths of zero. */
 
-/* gridpath_queue_grown(q): q, full, with an array twice as long, its entries moved
+/* gridpath_queue_grown(q): q with an array twice as long, its entries moved
  * to the front in order. By value, so that no queue's address escapes
  * gridpath_find (a store into a node could then alias it). */
 static GridPathQueue gridpath_queue_grown(GridPathQueue q)
@@ -432,7 +515,7 @@ static void gridpath_next_round(GridPathSearch *s)
 		memset(s->node, 0, n * sizeof *s->node);
 		for (int32_t y = 1; y < s->ph - 1; y++)
 			for (int32_t x = 1; x < s->pw - 1; x++)
-				s->node[(size_t)y * s->pw + x].info = gridpath_moves(s, x, y);
+				s->node[(size_t)y * s->pw + x] = gridpath_moves(s, x, y);
 		s->region_x = util_alloc((size_t)s->pw, sizeof *s->region_x);
 		s->region_y = util_alloc((size_t)s->ph, sizeof *s->region_y);
 		s->region_d = util_alloc((size_t)s->pw + (size_t)s->ph + 1, sizeof *s->region_d);
@@ -445,7 +528,7 @@ static void gridpath_next_round(GridPathSearch *s)
 	if (s->round >= (UINT32_MAX >> GRIDPATH_ROUND_SHIFT) - 1) {
 		size_t n = (size_t)s->pw * (size_t)s->ph;
 		for (size_t i = 0; i < n; i++)
-			s->node[i].info &= GRIDPATH_MOVES;
+			s->node[i] &= GRIDPATH_MOVES;
 		s->round = 0;
 	}
 	s->round++;
@@ -469,18 +552,15 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	if ((int64_t)s->pw * s->ph >= GRIDPATH_MAX_CELLS)
 		return GRIDPATH_TOO_LARGE; /* the keys' proof holds below it: EXACT KEYS */
 
-	/* a step's offset in cells, and in bytes of nodes (no scaling in the loop) */
-	ptrdiff_t offset[8], node_step[9];
-	for (int d = 0; d < 8; d++) {
+	/* a step's offset in cells */
+	ptrdiff_t offset[8];
+	for (int d = 0; d < 8; d++)
 		offset[d] = (ptrdiff_t)gridpath_dy[d] * pw + gridpath_dx[d];
-		node_step[d] = offset[d] * (ptrdiff_t)sizeof(GridPathNode);
-	}
-	node_step[GRIDPATH_NO_PARENT] = 0;
 	gridpath_next_round(s);
-	/* the round's marks in info (see GridPathNode) */
-	const uint32_t open_mark = s->round << GRIDPATH_ROUND_SHIFT,
-	               closed_mark = open_mark | GRIDPATH_CLOSED;
-	GridPathNode *const node = s->node, *const goal_node = node + goal;
+	/* the round's mark in info (see GridPathNode): a cell is closed when its info
+	 * is at least it */
+	const uint32_t closed_mark = s->round << GRIDPATH_ROUND_SHIFT;
+	uint32_t *const node = s->node;
 	const int32_t goal_x = gx + 1, goal_y = gy + 1;
 	int64_t *const region_x = s->region_x, *const region_y = s->region_y;
 	const uint16_t *const region_d = s->region_d + s->ph;
@@ -511,115 +591,122 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 		q[i] = (GridPathQueue){s->queue[i].e, 0, 0, s->queue[i].mask};
 		hk[i] = UINT64_MAX;
 	}
-	/* the stack in locals, as the queues; sp its top. The start goes on it, f its
-	 * key. */
-	if (s->at_stack_cap == 0)
-		s->at_stack = util_grow(s->at_stack, &s->at_stack_cap, 1, sizeof *s->at_stack);
-	int32_t *stack = s->at_stack, *sp = stack;
+	/* the stack in locals, as the queues; sp its top */
+	uint32_t *stack = s->at_stack, *sp = stack;
 	int stack_cap = s->at_stack_cap;
-	/* the key of f of the cell expanded */
+	/* The start is closed first, its from GRIDPATH_NO_PARENT, all its legal steps
+	 * tried; every later cell comes out of an entry (LAZY OFFERS). f is the key of
+	 * f of the cell expanded. */
 	uint64_t f = gridpath_key_h(abs(goal_x - (sx + 1)), abs(goal_y - (sy + 1)));
-	node[start].info = (node[start].info & GRIDPATH_MOVES) | open_mark |
-	                   GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
-	node[start].f = (uint32_t)f;
-	*sp++ = start;
-	int64_t expanded = 0;
-	int found = 0;
-	for (;;) {
-		ptrdiff_t c;
-		if (sp != stack) { /* f is that of the cell that pushed it */
-			c = *--sp;
-		} else {
-			/* the queue whose head has the least f; on a tie the first (the
-			 * smaller growth: its entry was pushed from a larger f, later) */
-			_Static_assert(GRIDPATH_QUEUES == 5, "the tree below picks of five");
-			const uint64_t k0 = hk[0], k1 = hk[1], k2 = hk[2], k3 = hk[3], k4 = hk[4];
-			const bool l01 = k1 < k0, l23 = k3 < k2;
-			const uint64_t m01 = l01 ? k1 : k0, m23 = l23 ? k3 : k2;
-			const unsigned b01 = l01, b23 = 2 + (unsigned)l23;
-			const bool l03 = m23 < m01;
-			const uint64_t m03 = l03 ? m23 : m01;
-			const unsigned b03 = l03 ? b23 : b01;
-			const bool l04 = k4 < m03;
-			const uint64_t best = l04 ? k4 : m03;
-			const unsigned b = l04 ? 4 : b03;
-			if (best == UINT64_MAX)
-				break;
-			f = best;
-			GridPathQueue *const qb = &q[b];
-			c = qb->e[qb->head++ & qb->mask].cell;
-			/* the next head's key lies in [f, f + 2^32) (F RELATIVE) */
-			const GridPathQueueEntry next = qb->e[qb->head & qb->mask];
-			hk[b] = qb->head == qb->tail ? UINT64_MAX
-			                             : f + (uint32_t)(next.key - (uint32_t)f);
-			/* PREFETCH: the node of the queue's next head (a stale or free
-			 * slot's cell is a cell of the grid too) */
-			gridpath_prefetch(node + next.cell);
+	uint32_t c = (uint32_t)start, cinfo = node[start];
+	unsigned m = cinfo & GRIDPATH_MOVES;
+	node[start] = m | closed_mark | GRIDPATH_NO_PARENT << GRIDPATH_FROM_SHIFT;
+	int64_t expanded = 1;
+	int found = start == goal;
+	/* ROOM: every queue and the stack have room for room more entries */
+	int32_t room = 0;
+	while (!found) {
+		if (room < 8) { /* an expansion pushes at most 8 entries */
+			room = INT32_MAX;
+			for (int i = 0; i < GRIDPATH_QUEUES; i++) {
+				if (q[i].mask + 1 - (q[i].tail - q[i].head) < GRIDPATH_ROOM)
+					q[i] = gridpath_queue_grown(q[i]);
+				const uint32_t free_slots = q[i].mask + 1 - (q[i].tail - q[i].head);
+				room = free_slots < (uint32_t)room ? (int32_t)free_slots : room;
+			}
+			const int count = (int)(sp - stack);
+			if (stack_cap - count < GRIDPATH_ROOM) {
+				stack = util_grow(stack, &stack_cap, count + GRIDPATH_ROOM, sizeof *stack);
+				sp = stack + count;
+			}
+			room = stack_cap - count < room ? stack_cap - count : room;
 		}
-		/* Stale entries need no test of their own: a cell's entries leave the list
-		 * in order of f, h is fixed per cell, so the first to leave carries the
-		 * best g, and it closes the cell; the later, stale ones meet the mark. */
-		GridPathNode *const nc = node + c;
-		const uint32_t cinfo = nc->info;
-		if (cinfo >= closed_mark)
-			continue;
-		nc->info = cinfo | GRIDPATH_CLOSED;
-		expanded++;
-		if (nc == goal_node) {
-			found = 1;
-			break;
-		}
-		/* the legal steps from one byte (gridpath_init), in order of d: the order
-		 * of pushes decides ties, and so the path */
-		unsigned m = cinfo & GRIDPATH_MOVES;
-		const unsigned from = cinfo >> GRIDPATH_FROM_SHIFT & 15;
-		{ /* the start's "parent" is itself (node_step[8] = 0), skip[8][] = 0 */
-			const GridPathNode *parent =
-			    (const GridPathNode *)((const char *)nc - node_step[from]);
-			m &= ~(unsigned)s->skip[from][parent->info & GRIDPATH_MOVES];
-		}
+		room -= 8;
 		const uint32_t f_low = (uint32_t)f;
 		/* the row of df of the cell's region (gridpath_region), by tables */
 		const ptrdiff_t y = (ptrdiff_t)((uint64_t)c * div_mul >> div_shift);
-		const int64_t rx = region_x[c - y * pw], ry = region_y[y];
+		const int64_t rx = region_x[(ptrdiff_t)c - y * pw], ry = region_y[y];
 		const uint64_t *df = (const uint64_t *)(df_rows + (rx & 4095) + (ry & 4095) +
 		                                        region_d[(rx >> 12) - (ry >> 12)]);
+		/* the legal steps not skipped, in order of d: the order of pushes decides
+		 * ties, and so the path */
 		for (; m; m &= m - 1) {
 			const unsigned d = (unsigned)gridpath_ctz64(m);
-			GridPathNode *const nn = (GridPathNode *)((char *)nc + node_step[d]);
-			/* a closed cell's cost is final; an open one's f, the same h plus its
-			 * g, is improved when lower (F RELATIVE) */
-			const uint64_t grow = df[d];
-			const uint32_t info = nn->info, dfd = (uint32_t)grow;
-			if (info >= closed_mark ||
-			    (info >= open_mark && dfd >= (uint32_t)(nn->f - f_low)))
+			const uint32_t n = c + (uint32_t)offset[d];
+			/* a closed cell's cost is final; any other is offered (LAZY OFFERS) */
+			if (node[n] >= closed_mark)
 				continue;
-			nn->info = (info & GRIDPATH_MOVES) | open_mark | d << GRIDPATH_FROM_SHIFT;
-			nn->f = f_low + dfd;
-			/* PREFETCH: the line of the cell beyond n, which n's expansion reads */
-			gridpath_prefetch((const char *)nn + node_step[d]);
-			const int32_t n = (int32_t)(nn - node);
+			/* PREFETCH: the line of the cell beyond n, which n's expansion reads,
+			 * and the one GRIDPATH_PUSH_AHEAD steps on */
+			gridpath_prefetch(node + n + offset[d]);
+			gridpath_prefetch_near(node + n, GRIDPATH_PUSH_AHEAD * offset[d]);
+			const uint64_t grow = df[d];
+			const uint32_t dfd = (uint32_t)grow, e = n << GRIDPATH_ENTRY_SHIFT | d;
 			if (dfd == 0) {
 				/* As good as the best open entry: expand it next, no queue. */
-				if (sp == stack + stack_cap) {
-					const int count = (int)(sp - stack);
-					stack =
-					    util_grow(stack, &stack_cap, count + 1, sizeof *stack);
-					sp = stack + count;
-				}
-				*sp++ = n;
+				*sp++ = e;
 			} else {
 				/* its growth's queue, whose keys never decrease (FIFO QUEUES) */
 				const unsigned i = (unsigned)(grow >> 32);
 				GridPathQueue *const qi = &q[i];
-				if (qi->tail - qi->head > qi->mask)
-					*qi = gridpath_queue_grown(*qi);
+				/* its head's key: this one's if the queue is empty (hk[i] =
+				 * UINT64_MAX), else no more than it */
 				if (qi->tail == qi->head)
 					hk[i] = f + dfd;
-				qi->e[qi->tail++ & qi->mask] = (GridPathQueueEntry){f_low + dfd, n};
+				qi->e[qi->tail++ & qi->mask] = (GridPathQueueEntry){f_low + dfd, e};
 			}
 		}
+		/* the next entry whose cell is not closed: a cell's entries leave the list in
+		 * order of f, h is fixed per cell, so the first to leave carries the best g
+		 * and closes it; the later, stale ones meet the mark */
+		uint32_t e;
+		for (;;) {
+			if (sp != stack) { /* f is that of the cell that pushed it */
+				e = *--sp;
+			} else {
+				/* the queue whose head has the least f; on a tie the first (the
+				 * smaller growth: its entry was pushed from a larger f, later) */
+				_Static_assert(GRIDPATH_QUEUES == 5, "the tree below picks of five");
+				const uint64_t k0 = hk[0], k1 = hk[1], k2 = hk[2], k3 = hk[3],
+				               k4 = hk[4];
+				const bool l01 = k1 < k0, l23 = k3 < k2;
+				const uint64_t m01 = l01 ? k1 : k0, m23 = l23 ? k3 : k2;
+				const unsigned b01 = l01, b23 = 2 + (unsigned)l23;
+				const bool l03 = m23 < m01;
+				const uint64_t m03 = l03 ? m23 : m01;
+				const unsigned b03 = l03 ? b23 : b01;
+				const bool l04 = k4 < m03;
+				const uint64_t best = l04 ? k4 : m03;
+				const unsigned b = l04 ? 4 : b03;
+				if (best == UINT64_MAX)
+					goto done;
+				f = best;
+				GridPathQueue *const qb = &q[b];
+				e = qb->e[qb->head++ & qb->mask].offer;
+				/* the next head's key lies in [f, f + 2^32) (F RELATIVE) */
+				const GridPathQueueEntry next = qb->e[qb->head & qb->mask];
+				hk[b] = qb->head == qb->tail
+				            ? UINT64_MAX
+				            : f + (uint32_t)(next.key - (uint32_t)f);
+				/* PREFETCH: the node of the queue's next head (a stale or free
+				 * slot's cell is a cell of the grid too) */
+				gridpath_prefetch(node + (next.offer >> GRIDPATH_ENTRY_SHIFT));
+			}
+			c = e >> GRIDPATH_ENTRY_SHIFT;
+			cinfo = node[c];
+			if (cinfo < closed_mark)
+				break;
+		}
+		/* close c, its from the entry's step */
+		const unsigned from = e & GRIDPATH_ENTRY_FROM;
+		node[c] = (cinfo & GRIDPATH_MOVES) | closed_mark | from << GRIDPATH_FROM_SHIFT;
+		expanded++;
+		found = c == (uint32_t)goal;
+		/* PARENT'S NEIGHBOURS: the steps the parent's offers make needless */
+		m = cinfo & GRIDPATH_MOVES &
+		    ~(unsigned)s->skip[from][node[c - (uint32_t)offset[from]] & GRIDPATH_MOVES];
 	}
+done:
 	for (int i = 0; i < GRIDPATH_QUEUES; i++)
 		s->queue[i] = q[i];
 	s->at_stack = stack;
@@ -628,22 +715,32 @@ GridPathStatus gridpath_find(GridPathSearch *s, int32_t sx, int32_t sy, int32_t 
 	if (!found)
 		return GRIDPATH_NO_PATH;
 
-	/* Walk back along the marks' from to count the steps, then again to write the
-	 * points from the goal: the path runs start to goal. */
-	int32_t straight = 0, diagonal = 0;
-	for (int32_t c = goal, d;
-	     (d = (int)(node[c].info >> GRIDPATH_FROM_SHIFT & 15)) != GRIDPATH_NO_PARENT;
-	     c -= offset[d])
-		*(d < 4 ? &straight : &diagonal) += 1;
-	const int32_t steps = straight + diagonal;
+	/* Walk back once along the marks' from, keeping each step in walk, then write
+	 * the points from walk (WALK BACK): the path runs start to goal. */
+	int32_t straight = 0, steps = 0;
+	uint8_t *walk = s->walk;
+	int walk_cap = s->walk_cap;
+	c = (uint32_t)goal;
+	for (int d; (d = (int)(node[c] >> GRIDPATH_FROM_SHIFT & 15)) != GRIDPATH_NO_PARENT;) {
+		if (steps == walk_cap)
+			walk = util_grow(walk, &walk_cap, steps + 1, sizeof *walk);
+		walk[steps++] = (uint8_t)d;
+		straight += d < 4;
+		c -= (uint32_t)offset[d];
+		/* WALK BACK: the node GRIDPATH_WALK_AHEAD steps on if the path runs
+		 * straight on (a hint: no effect on results) */
+		gridpath_prefetch_near(node + c, -GRIDPATH_WALK_AHEAD * offset[d]);
+	}
+	s->walk = walk;
+	s->walk_cap = walk_cap;
+	const int32_t diagonal = steps - straight;
 	path->pts = util_grow(path->pts, &path->cap, steps + 1, sizeof *path->pts);
-	path->count = steps + 1;                  /* every point is written below */
-	int32_t c = goal, x = goal_x, y = goal_y; /* c = y pw + x: no division */
+	path->count = steps + 1; /* every point is written below */
+	int32_t x = goal_x, y = goal_y;
 	for (int32_t i = steps; i >= 0; i--) {
 		path->pts[i] = vec2((double)(x - 1) + 0.5, (double)(y - 1) + 0.5);
 		if (i > 0) {
-			const int d = (int)(node[c].info >> GRIDPATH_FROM_SHIFT & 15);
-			c -= offset[d];
+			const int d = walk[steps - i];
 			x -= gridpath_dx[d];
 			y -= gridpath_dy[d];
 		}

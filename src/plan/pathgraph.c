@@ -213,7 +213,21 @@
  *    and new alternating twice in one session (load 7 on 2 cores), pg ns a cell,
  *    old / new: 4096 rooms 0.51 0.51 / 0.52 0.53, rects 0.71 0.72 / 0.70 0.70, maze
  *    2.52 2.62 / 2.49 2.62; 1024 rooms 0.41 0.39 / 0.38 0.42, rects 0.50 0.53 / 0.57
- *    0.57, maze 1.83 1.90 / 1.83 2.03: within the noise. */
+ *    0.57, maze 1.83 1.90 / 1.83 2.03: within the noise.
+ *    Then VERTEX AHEAD (issue 16's fifth round of plain A*, 2026-11-27): perf put 7%
+ *    of a driver's samples (skeleton_compute then pathgraph_build on the 1024 maze)
+ *    in builder_vertex_at, 70% of them on the load of the vertex's dist2 in
+ *    builder_add_vertex, a miss for each candidate (they lie far apart in row-major
+ *    order); step (1)'s loop over the candidates now asks for the dist2 of the one 8
+ *    on: 2.8% of the samples. pathgraph_build's thread CPU after each
+ *    skeleton_compute, medians of 10 builds, six rounds alternating with the build
+ *    before, load 12 on 2 cores: maze 1024 1.75-1.84 ms (median 1.80) -> 1.60-1.85
+ *    (1.70); 4 on 1.73, 16 on 1.81 (three rounds). Three rounds: maze 4096 40.2-41.0 ->
+ *    38.0-39.1, rooms 4096 8.4-8.8 -> 7.4-7.9, rooms 1024 0.34-0.42 -> 0.28-0.41,
+ *    Boston_0_1024 0.23-0.33 -> 0.28-0.33 (within the noise). The same graph (a
+ *    prefetch changes no value). Still: the walk (builder_edge_from) 58% of the
+ *    build, and builder_root_path's read of the far vertex's set_size, a miss at
+ *    the end of each walk (65% of that function). */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
@@ -351,6 +365,10 @@ static void builder_junction_set(Builder *b, int32_t seed, int32_t seed_cb, int3
 	pg->vertices[v].dist2 = b->s->dist2[root];
 }
 
+/* How many candidates ahead builder_vertices asks for a vertex's dist2 (VERTEX AHEAD,
+ * MEASURED). */
+#define PATHGRAPH_VERTEX_AHEAD 8
+
 /* builder_vertex_at(b, i, cb, rk, d): the vertex whose first cell is i (plane bit cb,
  * rank rk), of degree d != 2. */
 static void builder_vertex_at(Builder *b, int32_t i, int32_t cb, int32_t rk, int d)
@@ -411,6 +429,12 @@ PATHGRAPH_CLONES static void builder_vertices(Builder *b, IntList *cand)
 	memset(cell, 0xff, (size_t)rank * sizeof *cell); /* all PATHGRAPH_REF_NONE */
 	for (int k = 0; k < cand->count; k += 3) {
 		const int32_t i = cand->v[k], cb = cand->v[k + 1], rk = cand->v[k + 2];
+#if defined(__GNUC__)
+		/* VERTEX AHEAD (MEASURED): the dist2 that the vertex of the candidate
+		 * PATHGRAPH_VERTEX_AHEAD on will read (a hint: no effect on the graph) */
+		if (k + 3 * PATHGRAPH_VERTEX_AHEAD < cand->count)
+			__builtin_prefetch(b->s->dist2 + cand->v[k + 3 * PATHGRAPH_VERTEX_AHEAD]);
+#endif
 		if (b->cell[rk].ref == PATHGRAPH_REF_NONE)
 			builder_vertex_at(
 			    b, i, cb, rk,

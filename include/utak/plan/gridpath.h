@@ -24,12 +24,12 @@
  *
  * MEMORY: per cell of the grid with a one-cell border, 2 bits (the grid's copies
  * rows and cols; 64 cells to a word, so up to 63 bits more a line), and from the
- * first query of either method, 8 bytes more for plain A* (the node) and 4 and a
+ * first query of either method, 4 bytes more for plain A* (the node) and 4 and a
  * bit for the jump search (a record index and a seen bit); plus the open list (for
  * plain A* five queues of 8-byte entries, each a power of two of at least 256
- * entries and at most twice the most it held at once, and 4 bytes per entry of its
- * stack; for the jump search 16 bytes per pushed entry; at most 8 pushes per cell,
- * far fewer in practice), for plain A* 18 bytes per column and per row (its region
+ * entries and at most twice the most it held at once, 4 bytes per entry of its
+ * stack and a byte per step of its last path; for the jump search 16 bytes per
+ * pushed entry; at most 8 pushes per cell, far fewer in practice), for plain A* 18 bytes per column and per row (its region
  * tables), and for the jump search 28 bytes per jump point seen, all kept
  * between queries.
  *
@@ -51,6 +51,16 @@
  * times libtcod for plain A* is met on every map at 1024 and on the three run at
  * 4096 (the maze 5.63 and 5.93, at about 153 instructions a cell expanded, see
  * gridpath.c); the Moving AI maps at 4096 were not run this round.
+ * After the fifth round (gridpath.c: WALK BACK, LAZY OFFERS, ROOM, PREFETCH), two
+ * runs of bench/compare.py --side 1024 each beside one of the fourth round's code
+ * (skelbench built with it), alternating, on 2026-11-27 at load 10-14 on 2 cores:
+ * plain A* rooms 2.23-2.26 ms, rects 1.29-1.34, maze 10.33-10.44 (19.25-19.49 with
+ * the fourth round's), Boston_0_1024 1.76-1.77, den520d 0.45-0.52; libtcod over it
+ * 104-112, 139-145, 7.18-7.53 (3.98-4.05), 98-107 and 80-97 times. At 4096
+ * (skelbench --compare --side 4096, two runs each alternating, medians of 5; then
+ * libtcod's tcodpath on the same grids, medians of 3): the maze 92.7-99.1 ms
+ * against 162.8-167.5, libtcod (770 ms) over it 7.77-8.30 (4.60-4.73); see README,
+ * Benchmarks, for the other grids.
  * Instructions a query (callgrind): gridpath.c and gridjump.c, PERFORMANCE. */
 #ifndef UTAK_GRIDPATH_H
 #define UTAK_GRIDPATH_H
@@ -100,22 +110,12 @@ typedef struct GridPathBucket {
 	int count, cap;
 } GridPathBucket;
 
-/* The state of one cell for plain A*, kept together so that a visit touches one
- * cache line (the jump search keeps records of its own, gridjump.c). */
-typedef struct GridPathNode {
-	uint32_t f;    /* the low 32 bits of the key of f of the cell's best known path
-	                  (gridpath.c, EXACT KEYS and F RELATIVE) */
-	uint32_t info; /* the legal steps from the cell (bits 0-7: bit d for step d of
-	                  gridpath.c, no corner cutting; 0 for blocked and border
-	                  cells), the step that reached it (8-11; 8 for the start),
-	                  closed (12), the round it was reached in (13-31) */
-} GridPathNode;
-
 /* One entry of a queue of plain A* (gridpath.c): the low 32 bits of its f's key,
- * and the cell. */
+ * and the offer: the cell above 3 bits, the step that offered it in them
+ * (gridpath.c, LAZY OFFERS). */
 typedef struct GridPathQueueEntry {
 	uint32_t key;
-	int32_t cell;
+	uint32_t offer;
 } GridPathQueueEntry;
 
 /* One queue of plain A* (opaque): a circular array of mask + 1 entries, a power of
@@ -130,7 +130,12 @@ typedef struct GridPathQueue {
 typedef struct GridPathSearch {
 	int32_t w, h;       /* size of the grid searched, in cells */
 	int32_t pw;         /* padded width: w + 2 */
-	GridPathNode *node; /* (w + 2) (h + 2) cells, plain A*'s; NULL before its first query */
+	/* Plain A*'s state of each of the (w + 2) (h + 2) cells, NULL before its first
+	 * query: the legal steps from the cell (bits 0-7: bit d for step d of
+	 * gridpath.c, no corner cutting; 0 for blocked and border cells), the step that
+	 * reached it (8-11; 8 for the start), the round it was closed in (12-31); 4
+	 * bytes a cell, so that a cache line holds 16 (gridpath.c, LAZY OFFERS). */
+	uint32_t *node;
 	uint32_t round;     /* plain A*'s query counter; marks of other rounds mean "unseen" */
 	/* The jump search's open list: buckets of f, GRIDPATH_BUCKETS_PER_UNIT per unit of length
 	 * from the start's f; the current bucket is a binary heap, later ones are unsorted. Only a
@@ -150,8 +155,11 @@ typedef struct GridPathSearch {
 	/* Plain A*'s open list: its queues (gridpath.c, FIFO QUEUES), and the stack of
 	 * cells whose f equals the one being expanded. */
 	GridPathQueue queue[GRIDPATH_QUEUES];
-	int32_t *at_stack; /* cells */
+	uint32_t *at_stack; /* offers, as GridPathQueueEntry.offer */
 	int at_stack_cap;
+	/* plain A*'s path, walked back once from the goal: the step into each cell */
+	uint8_t *walk;
+	int walk_cap;
 	/* y = c / pw for a padded index c as c div_mul >> div_shift (gridpath_init) */
 	uint64_t div_mul;
 	unsigned div_shift;
