@@ -205,6 +205,13 @@ typedef struct Controller {
 	 * pushes made along it, and where the last one set off. */
 	int seat_axis, seat_pushes, seat_misses;
 	Vec2 seat_from;
+	/* Squaring a slanted object up to the corner's walls (pushturn.h): the stage,
+	 * tries made, the squares still to draw it back, the turn, and where the last
+	 * push back set off. */
+	int turn_stage, turn_tries, turn_back_x, turn_back_y;
+	double turn_deg;
+	Vec2 turn_from;
+	bool turn_first;
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
 	/* A tug (tug.h): its stage (0 none, 1 grasped, 2 pulling), the direction
