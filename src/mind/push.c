@@ -541,7 +541,10 @@ void push_seat_finish(Controller *c)
 		if (!pushclear_begin(c, short_by) && !pushturn_begin(c))
 			goals_corner_failed(c, short_by);
 	}
-	else if (pushseen_check(c, short_by, &at)) {
+	else if (pushturn_begin(c)) {
+		/* Within the slack by his model, but held at a slant: squared up
+		 * first (pushturn.h), and judged again after. */
+	} else if (pushseen_check(c, short_by, &at)) {
 		/* The held squares that reach the corner, by the model, are not all
 		 * the last impression establishes (pushseen.h). */
 		c->phase = PHASE_FAILED;
@@ -576,6 +579,7 @@ bool push_touch_blocked(const Controller *c, int dx, int dy)
 /* push_seat_begin(c): see push.h. */
 void push_seat_begin(Controller *c)
 {
+	c->turn_watch = false; /* seating pushes halt, and the disparity places him */
 	c->phase = PHASE_SEAT;
 	c->seat_axis = c->seat_pushes = c->seat_misses = 0;
 }
@@ -604,6 +608,8 @@ bool push_seat_here(Controller *c)
  * trusted to say the object is where it should be. */
 bool push_in_circles(Controller *c)
 {
+	if (pushturn_watch(c))
+		return true; /* the model set him off after a turn: let go, fetch it again */
 	int32_t ux, uy, visits = 1;
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	for (int i = 0; i < c->pushed_count; i++)

@@ -6,10 +6,12 @@
  * against both walls of a corner, touches each with one vertex and leaves the
  * corner's own squares empty: 2 to 21 squares short on random worlds (slants of
  * 25 to 65 degrees). Seated short with what he holds reading at a slant, Utak
- * draws it back out of the corner until a circle round his point as wide as the
- * object's farthest square is clear on his model, turns it (it rotates about his
- * point) by the angle that puts its sides along the axes, and pushes it into the
- * corner again. */
+ * draws it back out of the corner until the turn's sweep round his point is clear
+ * on his model, turns it (it rotates about his point) by the angle that puts its
+ * sides along the axes, and pushes it into the corner again: holding on where,
+ * turned, it still leads him toward both walls, else letting go and fetching it
+ * again from the side best for the corner (push_grasp_side); so too when the
+ * disparity corrects his place on a push after the turn. */
 #ifndef UTAK_PUSHTURN_H
 #define UTAK_PUSHTURN_H
 
@@ -28,6 +30,13 @@
 #define PUSHTURN_MAX_BACK 8
 /* The turn's sweep is checked on the model every this many degrees. */
 #define PUSHTURN_SWEEP_STEP 1.0
+/* The slant read when seated short and the one read at the grasp agree within
+ * this (degrees): the staircase's error of a small square (test_pushturn.c: 11). */
+#define PUSHTURN_AGREE 12.0
+/* Grasped again, the object's held squares' centre lies within this (squares) of
+ * where it was let go: grasped from another side, the held set gains or loses a
+ * row at most. */
+#define PUSHTURN_SAME 2.0
 
 /* pushturn_angle(x, y, n, deg): the turn (degrees, counter-clockwise, in [-45, 45])
  * that puts the sides of the rectangle read from the n squares (x, y) along the
@@ -43,5 +52,17 @@ bool pushturn_begin(Controller *c);
 bool pushturn_command(Controller *c, MotorCommand *cmd);
 /* pushturn_active(c): a squaring up is under way. */
 bool pushturn_active(const Controller *c);
+/* pushturn_watch(c): after a push into the corner that follows a turn he kept hold
+ * through: when the disparity corrected Utak's place, he lets go (PHASE_RELEASE)
+ * to fetch the object again; true if so. */
+bool pushturn_watch(Controller *c);
+/* pushturn_released(c): after a release: whether it was the squaring up's (if so
+ * the task goes on: Utak fetches the object again, PHASE_TRAVEL). */
+bool pushturn_released(Controller *c);
+/* pushturn_grasped(c): after a grasp: the slant the held squares read at (a turn
+ * is made only for one they read at when grasped, pushturn_begin); fetching the object turned square, what he
+ * holds must lie where he let it go (its held squares' centre within
+ * PUSHTURN_SAME): else the task fails, for it is another object. */
+void pushturn_grasped(Controller *c);
 
 #endif
