@@ -36,6 +36,7 @@
 #include "utak/mind/push.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/pushclear.h"
+#include "utak/mind/pushturn.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/round.h"
@@ -454,18 +455,20 @@ static void arrive(Controller *c)
 			c->phase = PHASE_RELEASE;
 		else if (objects_touching_target(c) && objects_misread(c, objects_find_target(c)) && goals_more_to_see(c)) {
 			/* Beside one he would doubt: a look further first (goals.c). */
-		} else if (objects_touching_target(c) && c->clear_tries == 0 &&
+		} else if (objects_touching_target(c) && c->clear_tries == 0 && c->turn_tries == 0 &&
 			   objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt) &&
 			   rival_begin(c, objects_find_target(c))) {
 			/* A doubt over another object: settled before the object to push is
 			 * chosen (rival.h), then back to its grasp side. */
 		} else if (objects_touching_target(c)) {
 			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
-			/* Fetched again after clearing the way (pushclear.h), the doubt is
+			/* Fetched again after clearing the way (pushclear.h) or squaring it
+			 * up (pushturn.h), the doubt is
 			 * the one judged at the first grasp, with the object where it began:
 			 * the task means the one nearest the start then, and he has moved it
 			 * and the other since. */
-			if (c->clear_tries == 0 && !objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt))
+			if (c->clear_tries == 0 && c->turn_tries == 0 &&
+			    !objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt))
 				c->doubt[0] = '\0';
 		}
 		else
@@ -593,7 +596,7 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 			cmd->kind = MOTOR_RELEASE;
 			/* Letting go to move an object out of the way, or having moved it,
 			 * the task goes on (pushclear.h). */
-			c->phase = pushclear_released(c) ? PHASE_TRAVEL : PHASE_DONE;
+			c->phase = pushclear_released(c) || pushturn_released(c) ? PHASE_TRAVEL : PHASE_DONE;
 			return true;
 		case PHASE_SEAT:
 			if (push_seat_command(c, cmd))
@@ -670,8 +673,10 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	/* Only the corner push judges the object by its held squares (push_seat_finish). */
 	c->model.register_held = c->has_task && c->task.kind == TASK_PUSH_CORNER && !rival_probing(c);
 	worldmodel_accommodate(&c->model, cmd, imp);
-	if (cmd->kind == MOTOR_GRASP)
+	if (cmd->kind == MOTOR_GRASP) {
 		c->grasp_shape = shape_of_squares(c->model.held_dx, c->model.held_dy, c->model.held_count);
+		pushturn_grasped(c); /* fetched again after squaring it up: the same object? */
+	}
 	if (round_recognise_home(c))
 		c->model.report.corrected = true; /* placed by the first impression: re-plan */
 	path_push(&c->trail, c->model.utak);

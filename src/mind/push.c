@@ -37,6 +37,7 @@
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/pushseen.h"
+#include "utak/mind/pushturn.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
 #include "utak/plan/cspace.h"
@@ -304,6 +305,8 @@ bool push_grasp_side(const Controller *c, int32_t k, const int32_t *dist, const 
  * cannot go that way. */
 bool push_seat_command(Controller *c, MotorCommand *cmd)
 {
+	if (pushturn_active(c))
+		return pushturn_command(c, cmd); /* false: the push goes on (PHASE_PUSH) */
 	int sx, sy;
 	task_corner_signs(c->task.corner, &sx, &sy);
 	while (c->seat_axis < 2) {
@@ -329,6 +332,8 @@ bool push_seat_command(Controller *c, MotorCommand *cmd)
  * (paper 3.5: Utak knows his motion errs, by the disparity, not which way). */
 void push_seat(Controller *c)
 {
+	if (pushturn_active(c))
+		return; /* squaring the object up: its pushes back are its own (pushturn.h) */
 	bool headway = goals_distance(c->model.utak, c->seat_from) >= 0.5;
 	if (c->seat_pushes < CONTROLLER_SEAT_PUSHES) {
 		if (headway) {
@@ -520,6 +525,8 @@ static bool push_held_is_task_shape(const Controller *c)
  * else he doubts the corner. */
 void push_seat_finish(Controller *c)
 {
+	if (c->phase != PHASE_SEAT)
+		return; /* squared up, the push into the corner goes on (pushturn.h) */
 	int64_t short_by = goals_corner_shortfall(c);
 	Vec2 at = c->model.utak;
 	if (!push_held_is_task_shape(c)) {
@@ -529,11 +536,15 @@ void push_seat_finish(Controller *c)
 		snprintf(c->why, sizeof c->why, "what Utak pushed into the %s is not the %s",
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
 	} else if (short_by > CONTROLLER_CORNER_SLACK) {
-		/* Another object in the way: moved out of it first (pushclear.h). */
-		if (!pushclear_begin(c, short_by))
+		/* Another object in the way: moved out of it first (pushclear.h); else,
+		 * held at a slant, squared up to the walls (pushturn.h). */
+		if (!pushclear_begin(c, short_by) && !pushturn_begin(c))
 			goals_corner_failed(c, short_by);
 	}
-	else if (pushseen_check(c, short_by, &at)) {
+	else if (pushturn_begin(c)) {
+		/* Within the slack by his model, but held at a slant: squared up
+		 * first (pushturn.h), and judged again after. */
+	} else if (pushseen_check(c, short_by, &at)) {
 		/* The held squares that reach the corner, by the model, are not all
 		 * the last impression establishes (pushseen.h). */
 		c->phase = PHASE_FAILED;
@@ -568,6 +579,7 @@ bool push_touch_blocked(const Controller *c, int dx, int dy)
 /* push_seat_begin(c): see push.h. */
 void push_seat_begin(Controller *c)
 {
+	c->turn_watch = false; /* seating pushes halt, and the disparity places him */
 	c->phase = PHASE_SEAT;
 	c->seat_axis = c->seat_pushes = c->seat_misses = 0;
 }
@@ -596,6 +608,8 @@ bool push_seat_here(Controller *c)
  * trusted to say the object is where it should be. */
 bool push_in_circles(Controller *c)
 {
+	if (pushturn_watch(c))
+		return true; /* the model set him off after a turn: let go, fetch it again */
 	int32_t ux, uy, visits = 1;
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	for (int i = 0; i < c->pushed_count; i++)

@@ -205,6 +205,19 @@ typedef struct Controller {
 	 * pushes made along it, and where the last one set off. */
 	int seat_axis, seat_pushes, seat_misses;
 	Vec2 seat_from;
+	/* Squaring a slanted object up to the corner's walls (pushturn.h): the stage,
+	 * tries made, the squares still to draw it back, the turn, and where the last
+	 * push back set off; then fetching it again. */
+	int turn_stage, turn_tries, turn_back_x, turn_back_y;
+	double turn_deg;
+	Vec2 turn_from;
+	bool turn_first;
+	bool turn_grasp_slant;	/* the held squares read at a slant when grasped, */
+	double turn_grasp_deg;	/* ... the turn that would square them up then */
+	bool turn_keep;		/* turned, he keeps hold (it still leads him) */
+	bool turn_watch;	/* ... and the push after is watched (pushturn_watch) */
+	bool turn_fetch;	/* let go of, turned: being fetched again */
+	Vec2 turn_at;		/* ... its held squares' centre when let go of */
 	Vec2 last_position;
 	int32_t seen_before;	/* squares seen before the last impression */
 	/* A tug (tug.h): its stage (0 none, 1 grasped, 2 pulling), the direction
