@@ -196,8 +196,8 @@ bool objects_touching_target(Controller *c);
  *   success's, the other way round. Perturbed worlds/ (300 runs): 2 more
  *   doubted (two squares); no golden run changes. Counting guesses or not
  *   changes little (without them: false 9 -> 7, doubted 45 -> 53).
- *   MERGED: a square within one square of another object shares squares with it
- *   (each owns those the gap's open interior lets both meet), and the model holds
+ *   MERGED: a square within one square of another object owns squares beside
+ *   that object's (no square is owned by two: utak(5)), and the model holds
  *   the two as one object, seen whole, that reads no shape, or an L (a square
  *   beside a bar), which the rules above pass by: he claimed a farther square
  *   (near13b's adversarial worlds: 14 false successes of 332 runs;
