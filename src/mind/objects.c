@@ -478,6 +478,138 @@ bool objects_pieces_shown(Controller *c, int32_t k)
 	return objects_read(c, k).confirmed && pieces_shown(c, k);
 }
 
+/* MAY HOLD A SQUARE (objects.h): the distance from the start of the nearest place a
+ * square the judge would name (2 wide or more, OBJECTS_NAMED_WIDTH) may have its
+ * centroid while it owns only squares of node j, INFINITY when it can own none.
+ * Such a square holds the disc of radius 1 round its centroid; the grid point
+ * nearest the centroid lies within sqrt(0.5) < 1 of it, inside that disc, so the
+ * square owns the 4 squares round that point (their open interiors meet its own):
+ * a 2 x 2 block of j's squares whose shared corner is within sqrt(0.5) of the
+ * centroid. So the centroid lies no nearer the start than that corner less
+ * sqrt(0.5), the least over j's 2 x 2 blocks. A bound only: that a block is there
+ * shows no square is (tests/unit/test_nearer.c checks the bound against squares
+ * at every angle and offset). */
+static double hold_square_near(const Controller *c, int32_t j)
+{
+	const WorldModel *m = &c->model;
+	const Box *r = &m->node[j].rect;
+	double best = INFINITY;
+	for (int32_t y = (int32_t)floor(r->lo.y); y + 1 < (int32_t)ceil(r->hi.y); y++)
+		for (int32_t x = (int32_t)floor(r->lo.x); x + 1 < (int32_t)ceil(r->hi.x); x++)
+			if (worldmodel_node_at(m, x, y) == j && worldmodel_node_at(m, x + 1, y) == j &&
+			    worldmodel_node_at(m, x, y + 1) == j && worldmodel_node_at(m, x + 1, y + 1) == j)
+				best = fmin(best, goals_distance(vec2(x + 1, y + 1), c->start) - sqrt(0.5));
+	return best;
+}
+
+/* cross(o, a, b): the z of (a - o) x (b - o), on squares' coordinates. */
+static int64_t cross(int32_t ox, int32_t oy, int32_t ax, int32_t ay, int32_t bx, int32_t by)
+{
+	return (int64_t)(ax - ox) * (by - oy) - (int64_t)(ay - oy) * (bx - ox);
+}
+
+/* notched(c, j): some square whose centre lies strictly inside the convex hull of
+ * the centres of node j's squares is not one of them; then no single convex
+ * polygon owns exactly j's squares (objects.h, MERGED: a convex polygon P's
+ * squares' centres lie in P grown by the unit square, so their hull does, and a
+ * square centred strictly inside meets P's interior). */
+static bool notched(const Controller *c, int32_t j)
+{
+	const WorldModel *m = &c->model;
+	const Box *r = &m->node[j].rect;
+	int32_t x0 = (int32_t)floor(r->lo.x), y0 = (int32_t)floor(r->lo.y);
+	int32_t x1 = (int32_t)ceil(r->hi.x), y1 = (int32_t)ceil(r->hi.y);
+	int64_t cap = (int64_t)(x1 - x0) * (y1 - y0);
+	if (cap <= 0)
+		return false;
+	/* Andrew's monotone chain over the squares in x-then-y order: the leftmost
+	 * and rightmost square of each row are enough (the rest lie between). */
+	int32_t *hx = util_alloc((size_t)(4 * (y1 - y0) + 2), sizeof *hx), *hy = util_alloc((size_t)(4 * (y1 - y0) + 2), sizeof *hy);
+	int32_t *px = util_alloc((size_t)(2 * (y1 - y0)), sizeof *px), *py = util_alloc((size_t)(2 * (y1 - y0)), sizeof *py);
+	int n = 0;
+	for (int32_t y = y0; y < y1; y++) {
+		int32_t lo = INT32_MAX, hi = INT32_MIN;
+		for (int32_t x = x0; x < x1; x++)
+			if (worldmodel_node_at(m, x, y) == j) {
+				lo = x < lo ? x : lo;
+				hi = x > hi ? x : hi;
+			}
+		if (lo == INT32_MAX)
+			continue;
+		px[n] = lo, py[n++] = y;
+		if (hi != lo)
+			px[n] = hi, py[n++] = y;
+	}
+	/* sort by (x, y): insertion, n is a few dozen */
+	for (int a = 1; a < n; a++)
+		for (int b = a; b > 0 && (px[b - 1] > px[b] || (px[b - 1] == px[b] && py[b - 1] > py[b])); b--) {
+			int32_t tx = px[b], ty = py[b];
+			px[b] = px[b - 1], py[b] = py[b - 1];
+			px[b - 1] = tx, py[b - 1] = ty;
+		}
+	int h = 0;
+	for (int pass = 0; pass < 2; pass++) {
+		int start = h;
+		for (int a = 0; a < n; a++) {
+			int i = pass ? n - 1 - a : a;
+			while (h >= start + 2 && cross(hx[h - 2], hy[h - 2], hx[h - 1], hy[h - 1], px[i], py[i]) <= 0)
+				h--;
+			hx[h] = px[i], hy[h++] = py[i];
+		}
+		h--; /* the last point of each chain is the first of the other */
+	}
+	bool notch = false;
+	for (int32_t y = y0; y < y1 && !notch && h >= 3; y++)
+		for (int32_t x = x0; x < x1 && !notch; x++) {
+			if (worldmodel_node_at(m, x, y) == j)
+				continue;
+			bool inside = true; /* the hull runs counter-clockwise */
+			for (int e = 0; e < h && inside; e++)
+				inside = cross(hx[e], hy[e], hx[(e + 1) % h], hy[(e + 1) % h], x, y) > 0;
+			notch = inside;
+		}
+	free(hx);
+	free(hy);
+	free(px);
+	free(py);
+	return notch;
+}
+
+/* merged(c, j, q, d): node j (read q), seen whole and named neither the task's
+ * square nor a brick a rectangle fits exactly, may hold the square the task means
+ * merged with a neighbour (objects.h, MERGED): its squares hold a 2 x 2 block
+ * where a square 2 wide may lie with its centroid under d from the start. */
+static bool merged(const Controller *c, int32_t j, const ObjectReading *q, double d)
+{
+	if (c->task.shape != SHAPE_SQUARE || q->shape == SHAPE_SQUARE || q->squares < OBJECTS_CRUMB_LEAST)
+		return false;
+	if (q->shape == SHAPE_BRICK && q->reading.fit_error[FIT_RECT] == 0)
+		return false;
+	return hold_square_near(c, j) < d && notched(c, j);
+}
+
+/* merged_near(c, k, d): the node of an object other than node k (not felt to be
+ * wall) that merged() holds may hold the square under d from the start, -1 when
+ * there is none. */
+static int32_t merged_near(Controller *c, int32_t k, double d)
+{
+	for (int32_t j = 0; j < c->model.node_count; j++) {
+		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j))
+			continue;
+		ObjectReading q = objects_read(c, j);
+		if (merged(c, j, &q, d))
+			return j;
+	}
+	return -1;
+}
+
+bool objects_merged(Controller *c, int32_t k)
+{
+	ObjectReading o = objects_read(c, k);
+	return o.confirmed && c->task.shape == SHAPE_SQUARE &&
+	       merged_near(c, k, goals_distance(o.centroid, c->start) + centroid_slack(&o)) >= 0;
+}
+
 /* doubt_of(c, k, why, size, &rival): objects_doubt, and the node of the other
  * object the doubt names (-1 when it names none). */
 static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *rival)
@@ -544,7 +676,13 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 	else if ((*rival = another_of_shape(c, k, &other)) >= 0)
 		snprintf(why, size, "another object, at (%.1f, %.1f), reads a %s too: this one may be a polygon of more corners over the same squares, and that one the %s",
 			 other.x, other.y, shape, shape);
-	else
+	else if ((*rival = merged_near(c, k, d + centroid_slack(&o))) >= 0) {
+		ObjectReading q = objects_read(c, *rival);
+		snprintf(why, size, "an object nearer the start, at (%.1f, %.1f), %d squares read %s%s, may hold a %s merged in the model with a neighbour",
+			 q.centroid.x, q.centroid.y, (int)q.squares, q.shape == SHAPE_NONE ? "no shape" : q.shape == SHAPE_LSHAPE ? "an " : "a ",
+			 q.shape == SHAPE_NONE ? "" : task_shape_name(q.shape), shape);
+		*rival = -1; /* nothing Utak can do settles it (objects.h, MERGED) */
+	} else
 		return false;
 	return true;
 }

@@ -11,7 +11,13 @@
  *     or take one; a cell of 2 x 2 over one occupied square never reads 0, a cell
  *     of 4 x 4 does (two or more never), and a turned square seen beyond a row only
  *     in cells of 4 that read 0 may own more than two rows there: no bound is
- *     taken where the floor was seen only so. */
+ *     taken where the floor was seen only so;
+ *   - MERGED (hold_square_near): a square 2 wide or more owns a 2 x 2 block of
+ *     squares whose shared corner lies within sqrt(0.5) of its centroid, and (notched)
+ *     a convex polygon owns every square whose centre lies strictly inside the
+ *     convex hull of the centres of those it owns (the hull by brute force here:
+ *     a point is strictly inside a finite set's hull unless some line through it
+ *     and one of the points has them all on one closed side). */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -183,11 +189,101 @@ TEST_CASE(coarse_cells_hide_rows)
 	TEST_CHECK(worst > 2);
 }
 
+/* MERGED: every square 2, 2.3, 3 and 4.1 wide, every 3 degrees, offsets in tenths
+ * of a square, owns a 2 x 2 block whose corner is within sqrt(0.5) of its centroid. */
+TEST_CASE(square_holds_block_near_centroid)
+{
+	static const double sides[] = {2.0, 2.3, 3.0, 4.1};
+	int cases = 0;
+	for (int k = 0; k < 4; k++)
+		for (int deg = 0; deg < 90; deg += 3)
+			for (int oy = 0; oy < 10; oy++)
+				for (int ox = 0; ox < 10; ox++) {
+					double h = sides[k] / 2, xy[8] = {-h, -h, h, -h, h, h, -h, h};
+					Polygon p = place(xy, 4, deg, ox / 10.0, oy / 10.0);
+					Vec2 c = judge_shape_centroid(&p);
+					double best = INFINITY;
+					for (int y = 0; y + 1 < FIELD; y++)
+						for (int x = 0; x + 1 < FIELD; x++)
+							if (owned[y * FIELD + x] && owned[y * FIELD + x + 1] &&
+							    owned[(y + 1) * FIELD + x] && owned[(y + 1) * FIELD + x + 1])
+								best = fmin(best, hypot(x + 1 - c.x, y + 1 - c.y));
+					TEST_CHECK(best <= sqrt(0.5) + 1e-9);
+					cases++;
+				}
+	TEST_CHECK(cases == 4 * 30 * 100);
+}
+
+/* strictly_inside(cx, cy, xs, ys, n): (cx, cy) lies strictly inside the convex hull
+ * of the n points, by brute force (above). */
+static bool strictly_inside(int cx, int cy, const int *xs, const int *ys, int n)
+{
+	for (int i = 0; i < n; i++) {
+		int pos = 0, neg = 0;
+		for (int j = 0; j < n; j++) {
+			long z = (long)(xs[i] - cx) * (ys[j] - cy) - (long)(ys[i] - cy) * (xs[j] - cx);
+			pos += z > 0;
+			neg += z < 0;
+		}
+		if (!pos || !neg)
+			return false;
+	}
+	return n >= 3;
+}
+
+/* MERGED, notched: convex polygons (a square, a brick, a triangle, a hexagon and
+ * a thin sliver) every 7 degrees at offsets in fifths of a square own every square
+ * centred strictly inside the hull of their squares' centres; a square 2.6 wide
+ * beside a bar 0.6 from it, as tests/worlds/near-merged.w has them, is notched. */
+TEST_CASE(convex_owns_hull)
+{
+	static const double square[] = {-1.5, -1.5, 1.5, -1.5, 1.5, 1.5, -1.5, 1.5};
+	static const double brick[] = {-3, -1.2, 3, -1.2, 3, 1.2, -3, 1.2};
+	static const double tri[] = {-3, -2, 3, -1.5, 0.5, 3};
+	static const double hex[] = {-2, 0, -1, -1.8, 1.2, -1.7, 2.3, 0.2, 1, 2, -1.1, 1.6};
+	static const double sliver[] = {-4, -0.2, 4, 0.1, 4, 0.5, -4, 0.3};
+	static const struct { const double *xy; int n; } shapes[] = {{square, 4}, {brick, 4}, {tri, 3}, {hex, 6}, {sliver, 4}};
+	static int xs[MOST], ys[MOST];
+	int cases = 0;
+	for (int k = 0; k < 5; k++)
+		for (int deg = 0; deg < 180; deg += 7)
+			for (int o = 0; o < 25; o++) {
+				place(shapes[k].xy, shapes[k].n, deg, (o % 5) / 5.0, (o / 5) / 5.0);
+				int n = 0;
+				for (int i = 0; i < MOST; i++)
+					if (owned[i])
+						xs[n] = i % FIELD, ys[n++] = i / FIELD;
+				for (int y = 8; y < 32; y++)
+					for (int x = 8; x < 32; x++)
+						if (!owned[y * FIELD + x])
+							TEST_CHECK(!strictly_inside(x, y, xs, ys, n));
+				cases++;
+			}
+	TEST_CHECK(cases == 5 * 26 * 25);
+	/* Two apart, merged in the model: a notch between them. */
+	double h = 1.3, sq[8] = {-h, -h, h, -h, h, h, -h, h};
+	place(sq, 4, 30, 0, 0);
+	uint8_t both[MOST];
+	memcpy(both, owned, sizeof both);
+	double bar[8] = {-3, 2.45, 3, 2.45, 3, 3.45, -3, 3.45};
+	place(bar, 4, 0, 0, 0);
+	int n = 0, notches = 0;
+	for (int i = 0; i < MOST; i++)
+		if ((owned[i] |= both[i]))
+			xs[n] = i % FIELD, ys[n++] = i / FIELD;
+	for (int y = 8; y < 32; y++)
+		for (int x = 8; x < 32; x++)
+			notches += !owned[y * FIELD + x] && strictly_inside(x, y, xs, ys, n);
+	TEST_CHECK(notches > 0);
+}
+
 int main(void)
 {
 	TEST_RUN(centroid_within_slack);
 	TEST_RUN(square_spans_alike_each_way);
 	TEST_RUN(coarse_cells_hide_one_square_only);
 	TEST_RUN(coarse_cells_hide_rows);
+	TEST_RUN(square_holds_block_near_centroid);
+	TEST_RUN(convex_owns_hull);
 	return TEST_EXIT();
 }

@@ -196,6 +196,37 @@ bool objects_touching_target(Controller *c);
  *   success's, the other way round. Perturbed worlds/ (300 runs): 2 more
  *   doubted (two squares); no golden run changes. Counting guesses or not
  *   changes little (without them: false 9 -> 7, doubted 45 -> 53).
+ *   MERGED: a square within one square of another object owns squares beside
+ *   that object's (no square is owned by two: utak(5)), and the model holds
+ *   the two as one object, seen whole, that reads no shape, or an L (a square
+ *   beside a bar), which the rules above pass by: he claimed a farther square
+ *   (near13b's adversarial worlds: 14 false successes of 332 runs;
+ *   tests/worlds/near-merged.w, near-merged-l.w). So an object of the model
+ *   nearer the start, seen whole or not, not read the square, of
+ *   OBJECTS_CRUMB_LEAST squares or more (fewer are no square's off the grid's
+ *   lines, above), is a doubt where (1) its squares hold a 2 x 2 block whose
+ *   shared corner lies under sqrt(0.5) beyond the claimed one's distance plus
+ *   its centroid_slack (a square 2 wide or more owns the 4 squares round the grid
+ *   point nearest its centroid, which lies within sqrt(0.5) of it: the judge's
+ *   square's centroid can lie no nearer; checked against squares at every angle,
+ *   test_nearer.c), and (2) they are no convex polygon's: some square centred
+ *   strictly inside the hull of their centres is not one of them (a convex
+ *   polygon owns every such square, test_nearer.c; one object with a notch, or
+ *   two with a cleft between). Not doubted: a brick a rectangle fits exactly
+ *   (a square end to end with a bar may read so, and so may a square and a
+ *   neighbour whose squares together are a convex polygon's: the doubt would
+ *   fall on every brick and convex piece nearer the start, which cells alone
+ *   never tell from such a pair). Nothing Utak does settles it: a look shows
+ *   the squares he has, and a probe asks whether ONE square owns them all (a
+ *   pair is disproved as one); telling the pair apart would take a push that
+ *   moves one and leaves the other, not made. The doubt is asked last (the
+ *   doubts before it name rivals and probes that may settle the claim), and
+ *   it asks for the OWN FIRST probe of the object claimed (rival.h): shown no
+ *   square, that one is dropped and the task goes on. Cost, random square
+ *   tasks of tests/rates.sh (182 runs): 9 achieved runs doubted (50 -> 41 achieved
+ *   without a doubt), none failed. Without (2), and with L-shapes and triangles
+ *   an L or a triangle fits exactly left out too: 15 doubted, and 3 of the 14 left
+ *   false (j11, j15: an L fits a square beside a slanted bar exactly).
  * What it cannot tell, and no eye can at this scale: a polygon of more corners
  * whose cut corners fall within the squares of a rectangle's (a hexagon with
  * corners cut by under a square reads as the rectangle). */
@@ -239,6 +270,9 @@ bool objects_narrow(Controller *c, int32_t k);
  * object read a square to be none, and k was not probed: a doubt a probe of k
  * settles (objects_doubt, rival.h). */
 bool objects_pieces_shown(Controller *c, int32_t k);
+/* objects_merged(c, k): node k, confirmed, is doubted for an object nearer the
+ * start that may hold a square merged with its neighbour (MERGED, objects_doubt). */
+bool objects_merged(Controller *c, int32_t k);
 /* objects_misread(c, k): node k is seen whole and its own reading puts its name in
  * doubt (in the gap, or inexact), not only its width (a crumb read squarely the
  * task's shape, most often a small one of it). Before going to such a one Utak
