@@ -9,7 +9,9 @@
  * nearest reachable cell beside one (goals_beside). nextroom_jambs: the same
  * watershed with clearances; round each door cell bordering the room, the faces
  * within its doorway not seen in the fovea, the nearest to Utak looked at from the
- * nearest reachable cell (goals_near).
+ * nearest reachable cell (goals_near). nextroom_felt: the space seen less every
+ * object not felt, carryroom_beyond on it, the objects within a door cell's
+ * doorway, the nearest reachable cell beside one.
  * COMPLEXITY: O(w h log(w h)) a watershed, O(D r^2) the doorways (D door cells, r
  * a doorway's reach). MEMORY: a screen's grid, rooms and clearances (12 bytes a
  * cell), freed before returning. */

@@ -55,15 +55,16 @@ bool nextroom_unfelt(const Controller *c, const Grid *g, const RoomMap *rm, int3
  * borders at's room (a cell of it within 2), and the squares within its doorway
  * (its clearance, read up to CARRYROOM_CHAMFER over, and CARRYROOM_DOORWAY_REACH)
  * that are not floor and face floor (4-adjacent): each seen in the fovea. A wall
- * seen only coarsely may lie a square or more off, or be none (random g277: a coarse phantom beside a hall made
- * a door of nothing); the door rule weighs its clearance. True with *goal the
+ * seen only coarsely may lie a square or more off, or be none (random g277: a
+ * coarse phantom beside a hall made a door of nothing); the door rule weighs its
+ * clearance. True with *goal the
  * reachable cell nearest the nearest such square (goals_near), not yet reached;
  * when one is left that cannot be looked at so, *keep is set to -1 (no claim). */
 bool nextroom_jambs(const Controller *c, const Grid *g, const RoomMap *rm, int32_t at, const int32_t *dist,
 		    Vec2 *goal, int32_t *keep);
 
-/* nextroom_felt(c, dist, si, sj, goal): roomdoubt_felt's second reading (roomdoubt.h): every
- * object node not felt (nor held) taken for wall at once, the space seen cut by
+/* nextroom_felt(c, dist, si, sj, goal): roomdoubt_felt's second reading
+ * (roomdoubt.h): every object node not felt (nor held) taken for wall at once, the space seen cut by
  * the verdict's watershed (carryroom_watershed): where the start's room (of cell
  * (si, sj)) then has floor beyond a door line of another room (carryroom_beyond),
  * the nodes within a door cell's doorway (its clearance, read up to
