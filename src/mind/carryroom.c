@@ -301,7 +301,9 @@ static int ws_cmp(const void *pa, const void *pb)
 	return (a > b) - (a < b);
 }
 
-void carryroom_watershed(const Grid *g, int32_t *room)
+/* ws_flood(g, room, clear): carryroom_watershed, and with clear (w h of them) each
+ * cell's clearance (0 blocked) kept for the caller. */
+static void ws_flood(const Grid *g, int32_t *room, float *clear)
 {
 	int32_t w = g->w, h = g->h;
 	int64_t n = (int64_t)w * h;
@@ -384,9 +386,84 @@ void carryroom_watershed(const Grid *g, int32_t *room)
 	}
 	for (int32_t i = 0; i < n; i++)
 		room[i] = state[i] == 1 ? cr_find(parent, i) : -1;
+	if (clear)
+		memcpy(clear, cl, (size_t)n * sizeof *clear);
 	free(state);
 	free(peak);
 	free(parent);
 	free(order);
 	free(cl);
+}
+
+void carryroom_watershed(const Grid *g, int32_t *room)
+{
+	ws_flood(g, room, NULL);
+}
+
+void carryroom_watershed_clear(const Grid *g, int32_t *room, float *clear)
+{
+	ws_flood(g, room, clear);
+}
+
+/* ---- beyond the door line (carryroom_beyond) ------------------------------------ */
+
+int64_t carryroom_beyond(const Grid *g, int32_t si, int32_t sj, bool *out)
+{
+	int32_t w = g->w, h = g->h;
+	int64_t n = (int64_t)w * h, got = 0;
+	int32_t *room = util_alloc((size_t)(n > 0 ? n : 1), sizeof *room);
+	float *cl = util_alloc((size_t)(n > 0 ? n : 1), sizeof *cl);
+	ws_flood(g, room, cl);
+	/* The start's rooms: the room of the nearest cell in one (the judge's
+	 * judge_rooms_nearest: a start in a doorway counts in the nearest room), and,
+	 * when the start lies within a door cell's doorway (as the judge's), every
+	 * room within 2 of that door cell: the judge's doorway is not the model's,
+	 * and its nearest room may be either side. Marked in `mark` (by region root). */
+	uint8_t *mark = util_alloc((size_t)(n > 0 ? n : 1), 1);
+	memset(mark, 0, (size_t)(n > 0 ? n : 1));
+	bool any = false;
+	double best = INFINITY;
+	int32_t start = -1;
+	for (int64_t i = 0; i < n; i++) {
+		double d = hypot((double)(i % w) - si, (double)(i / w) - sj);
+		if (room[i] >= 0 && d < best)
+			best = d, start = room[i];
+	}
+	if (start >= 0)
+		mark[start] = any = true;
+	for (int64_t i = 0; i < n; i++) {
+		if (g->cells[i] != GRID_FREE || room[i] >= 0)
+			continue;
+		int32_t x0 = (int32_t)(i % w), y0 = (int32_t)(i / w);
+		if (hypot(x0 - si, y0 - sj) > CARRYROOM_CHAMFER * cl[i] + CARRYROOM_DOORWAY_REACH)
+			continue;
+		for (int32_t y = y0 - 2; y <= y0 + 2; y++)
+			for (int32_t x = x0 - 2; x <= x0 + 2; x++)
+				if (x >= 0 && y >= 0 && x < w && y < h && room[(int64_t)y * w + x] >= 0)
+					mark[room[(int64_t)y * w + x]] = 1;
+	}
+	for (int64_t i = 0; i < n; i++) {
+		out[i] = any && room[i] >= 0 && !mark[room[i]];
+		got += out[i];
+	}
+	free(mark);
+	/* Every door cell's doorway, widened: within its clearance (read up to
+	 * CARRYROOM_CHAMFER over by the chamfer), the judge's reach and the margin. */
+	for (int64_t i = 0; i < n && got > 0; i++) {
+		if (g->cells[i] != GRID_FREE || room[i] >= 0)
+			continue;
+		int32_t x0 = (int32_t)(i % w), y0 = (int32_t)(i / w);
+		double reach = CARRYROOM_CHAMFER * cl[i] + CARRYROOM_DOORWAY_REACH + CARRYROOM_DOORWAY_MARGIN;
+		int32_t R = (int32_t)ceil(reach);
+		for (int32_t y = y0 - R; y <= y0 + R; y++)
+			for (int32_t x = x0 - R; x <= x0 + R; x++)
+				if (x >= 0 && y >= 0 && x < w && y < h && out[(int64_t)y * w + x] &&
+				    hypot(x - x0, y - y0) <= reach) {
+					out[(int64_t)y * w + x] = false;
+					got--;
+				}
+	}
+	free(cl);
+	free(room);
+	return got;
 }

@@ -24,6 +24,7 @@
 #include "utak/mind/carryroom.h"
 #include "utak/mind/faint.h"
 #include "utak/mind/hallsplit.h"
+#include "utak/mind/nextroom.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/round.h"
@@ -665,6 +666,13 @@ static bool in_doorway(const RoomMap *rm, int32_t i, int32_t j)
  * first (kept until reached), and with nothing left to look at it is gone through,
  * exploring, once; a door kept only because a side of it is seen in part
  * (carryroom_merge_seen, undecided) is a place to look from, once, not to claim.
+ * Every cell claimed (here, or a goal reached) must lie beyond a door line by the
+ * verdict's own watershed too (nextroom_beyond): rooms.h's doors, merged, may lie
+ * at another narrowing than the judge's (random g197: another row of piers). Where
+ * rooms.h's doors give nothing to go to and nothing is left to see, the goal is
+ * the nearest cell beyond a door line by the watershed alone, once the objects
+ * in its room and the start's have been touched (nextroom_unfelt) and the faces
+ * in its doors' doorways seen in the fovea (nextroom_jambs): random g257, g292.
  * Returns whether out's goal is such a look at an unsettled door's side. */
 static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
 		      int32_t sj, int32_t ui, int32_t uj, GoalResult *out)
@@ -684,7 +692,10 @@ static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 	Vec2 look;
 	bool jamb = roomdoubt_next(c, rm, &sure, start_room, dist, &look) == ROOMDOUBT_LOOK;
 	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room], pp = plain.merged[start_room];
-	bool past = here_room >= 0 && sure.merged[here_room] != sp;
+	int64_t cells = (int64_t)g->w * g->h;
+	bool *ok = util_alloc((size_t)cells, sizeof *ok);
+	nextroom_beyond(c, g, rm, si, sj, ok);
+	bool past = here_room >= 0 && sure.merged[here_room] != sp && ok[uj * g->w + ui];
 
 	double best_d[3] = {INFINITY, INFINITY, INFINITY};
 	int32_t best[3] = {-1, -1, -1};
@@ -719,7 +730,7 @@ static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 				continue;
 			/* A goal he would claim on reaching: a cell of another room than
 			 * the start's by `sure`, and not in a doorway (as for `past`). */
-			if (kind == 0 && (sure.merged[r] == sp || in_doorway(rm, i, j)))
+			if (kind == 0 && (sure.merged[r] == sp || in_doorway(rm, i, j) || !ok[k]))
 				continue;
 			double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
 			if (dd < best_d[kind]) {
@@ -731,6 +742,19 @@ static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 	carryroom_free(&sure);
 	carryroom_free(&plain);
 	carryroom_free(&seen);
+	/* No such goal through rooms.h's doors: the nearest cell beyond a door line
+	 * by the watershed alone (nextroom_cell). */
+	int32_t ws = best[0] < 0 && !past ? nextroom_cell(g, dist, ok) : -1;
+	free(ok);
+	bool touch = false;
+	Vec2 feel;
+	/* Only when nothing is left to see (goals_frontier, as goals_choose tries
+	 * next): the rule's own doubts come first. */
+	if (ws >= 0 && (best[0] >= 0 || best[1] >= 0 || best[2] >= 0 || jamb || goals_frontier(c, dist, &feel)))
+		ws = -1;
+	if (ws >= 0)
+		touch = nextroom_unfelt(c, g, rm, si, sj, ws, dist, &feel, &ws) ||
+			nextroom_jambs(c, g, rm, ws, dist, &feel, &ws);
 	int32_t pick = best[0] >= 0 ? best[0] : best[2] >= 0 ? best[2] : best[1];
 	if (past) { /* already through a door and past its doorway: here will do */
 		out->found = true;
@@ -739,6 +763,12 @@ static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, c
 		out->found = out->exploring = true;
 		out->goal = look;
 		return true;
+	} else if (pick < 0 && touch) {
+		out->found = out->exploring = true;
+		out->goal = feel;
+	} else if (pick < 0 && ws >= 0) {
+		out->found = true;
+		out->goal = goals_centre(s->x0 + ws % g->w, s->y0 + ws / g->w);
 	} else if (pick >= 0) {
 		out->found = true;
 		out->exploring = best[0] < 0;

@@ -15,7 +15,7 @@
  * run. roomdoubt_frontier: the unseen squares beside the start's room, each marking
  * the cells within view of it, then the nearest such cell of the room by steps.
  * roomdoubt_felt: for each object node not yet felt, a room map with it taken for
- * wall. roomdoubt_next: for each door of the merged map, its jambs (the verge
+ * wall; then all of them at once, cut by the watershed (nextroom_felt). roomdoubt_next: for each door of the merged map, its jambs (the verge
  * squares beyond its run's ends and, for a run much longer than twice its
  * clearance, the faces within a square of that clearance of its cell) each
  * flooded over squares seen in the fovea within ROOMDOUBT_VIEW, then the squares
@@ -35,6 +35,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/nextroom.h"
 #include "utak/mind/objects.h"
 
 /* doubtful(m, x, y): the square is seen only coarsely and occupied, or floor beside
@@ -587,6 +588,8 @@ RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal)
 		*goal = near;
 		verdict = ROOMDOUBT_LOOK;
 	}
+	if (verdict == ROOMDOUBT_NONE)
+		verdict = nextroom_felt(c, dist, si, sj, goal);
 	return verdict;
 }
 

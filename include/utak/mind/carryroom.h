@@ -108,5 +108,31 @@ bool carryroom_bend(const CarryRooms *cr, const RoomMap *rm, int32_t room, Carry
  * Doorways are not marked. COMPLEXITY: O(w h log(w h)). MEMORY: 17 bytes a cell
  * while it works. */
 void carryroom_watershed(const Grid *g, int32_t *room);
+/* carryroom_watershed_clear(g, room, clear): the same, and each cell's clearance
+ * (the chamfer's; 0 blocked) in clear (w h of them). */
+void carryroom_watershed_clear(const Grid *g, int32_t *room, float *clear);
+
+#define CARRYROOM_DOORWAY_REACH 1.0  /* judgerooms.h's JUDGE_DOORWAY_REACH */
+#define CARRYROOM_DOORWAY_MARGIN 2.0 /* squares more: a wall on the model may lie a square or two off */
+#define CARRYROOM_CHAMFER 1.08	     /* the chamfer's clearance over the Euclidean, at most */
+
+/* carryroom_beyond(g, si, sj, out): per cell of g (w h of them in out), whether it
+ * lies beyond the door line of a room other than the start's by the verdict's
+ * watershed restated on g (carryroom_watershed): in a region other than the one
+ * of the free cell nearest (si, sj) that is in a region (the judge's start room,
+ * judge_rooms_nearest) and, when (si, sj) lies within a door cell's doorway (its
+ * clearance, CARRYROOM_CHAMFER over, and CARRYROOM_DOORWAY_REACH), other than
+ * every region within 2 of that door cell (the judge's nearest room to a start in
+ * its doorway may be either side); and farther from every door cell than
+ * CARRYROOM_CHAMFER times its clearance, CARRYROOM_DOORWAY_REACH and
+ * CARRYROOM_DOORWAY_MARGIN (the judge's doorway, judgerooms.h, lies within the
+ * door square's clearance and JUDGE_DOORWAY_REACH of it; its other bounds only
+ * shrink it). Returns how many cells are. WHY: "in the next room" is claimed by
+ * the verdict's own meaning of a room (issue 13: rooms.h's doors merged by
+ * carryroom_merge may lie at another narrowing than the judge's, or find none
+ * where it finds one, random g197 g297; nextroom.h).
+ * COMPLEXITY: O(w h log(w h)) the watershed, O(w h) the start, O(doors r^2) the
+ * doorways (r the doorway's reach). MEMORY: 22 bytes a cell while it works. */
+int64_t carryroom_beyond(const Grid *g, int32_t si, int32_t sj, bool *out);
 
 #endif

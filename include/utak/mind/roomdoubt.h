@@ -139,8 +139,12 @@ RoomDoubt roomdoubt_frontier(const Controller *c, const int32_t *dist, Vec2 towa
  * too, and only touch tells them apart (paper 3.4.2: an object's letter is not B;
  * objects_feel keeps the walls, screen.c counts them as verge). If so, *goal is the
  * reachable cell beside such a node nearest Utak by steps, not yet reached
- * (goals_beside); ROOMDOUBT_STUCK when none can be reached. COMPLEXITY: a room map
- * of the screen for each object node. */
+ * (goals_beside); ROOMDOUBT_STUCK when none can be reached. When no one node
+ * does, all of them at once are taken for wall, and the space seen cut by the
+ * verdict's watershed (carryroom_watershed): if the start's room then has floor
+ * beyond a door line (carryroom_beyond), the nodes within a door cell's doorway
+ * are the ones to touch (a room cut off by three piers in a row, random g292).
+ * COMPLEXITY: a room map of the screen for each object node, and a watershed. */
 RoomDoubt roomdoubt_felt(const Controller *c, const int32_t *dist, Vec2 *goal);
 
 /* roomdoubt_next(c, rm, cr, room, dist, goal): for "go next-room", the doors of cr
