@@ -4,7 +4,8 @@
  * A corner is the reachable space of Utak's starting room extreme in that compass
  * direction (his frame: north is +y), judged as the judge judges it (judge.h) on
  * the world model. The next room is reached through a door of the room
- * segmentation (rooms.c): the goal is the other room's centre. An object is named
+ * segmentation (rooms.c): the goal is the other room's centre (nextroom.c,
+ * nextroom_goal, asked from goals_choose). An object is named
  * by its shape (shape.c), the nearest of that shape if several; going to it means
  * standing beside it (it shows in touch). When the goal is not yet seen, Utak
  * explores: the nearest frontier of the unseen, or the nearest object seen only
@@ -609,174 +610,6 @@ bool goals_more_to_see(Controller *c)
 	return more;
 }
 
-/* run_distance(d, i, j): the distance from cell (i, j) to the run across door d.
- * The judge's doorway is the free space within a door square's clearance and a
- * square of it (judgerooms.h), and its door squares lie all along the narrowing,
- * from face to face: near either end as near the middle. */
-static double run_distance(const RoomsDoor *d, int32_t i, int32_t j)
-{
-	double dx = d->bx - d->ax, dy = d->by - d->ay, l2 = dx * dx + dy * dy;
-	double t = l2 > 0 ? ((i - d->ax) * dx + (j - d->ay) * dy) / l2 : 0;
-	t = t < 0 ? 0 : t > 1 ? 1 : t;
-	return hypot(i - (d->ax + t * dx), j - (d->ay + t * dy));
-}
-
-/* doorway_reach(rm, d, i, j): how far from the run across door d of rm cell (i, j)
- * may still be in its doorway: half its width and GOALS_DOORWAY; and where the
- * cell's clearance is no more than the door's (its chamfer's 8% and a square of the
- * eye's slack over), GOALS_DOORWAY_LOW more. The judge's doorway is the low
- * ground within a door square's clearance and a square of it, round EVERY door
- * square (judgerooms.h): its door squares run along the line where the two floods
- * meet, which need not be the straight run the model draws, and along a wall's or
- * the verge's face every square is low, so the doorway runs on along the face
- * (an open hall's edge: 13 squares and more). The judge's doorway holds no square
- * higher than its door square's clearance and 0.2 (JUDGE_DOORWAY_SLACK), so the
- * longer reach is only for cells no higher than that (with a square of slack),
- * and no door square is higher than the door's saddle. */
-static double doorway_reach(const RoomMap *rm, const RoomsDoor *d, int32_t i, int32_t j)
-{
-	int32_t w = rm->rooms.w;
-	double c = sqrt((double)rm->skeleton.dist2[d->y * w + d->x]);
-	double here = sqrt((double)rm->skeleton.dist2[j * w + i]);
-	double reach = d->width / 2.0 + GOALS_DOORWAY;
-	return here <= GOALS_DOORWAY_CHAMFER * c + GOALS_DOORWAY_SLACK ? reach + GOALS_DOORWAY_LOW : reach;
-}
-
-/* in_doorway(rm, i, j): cell (i, j) within doorway_reach of the run across a door,
- * for any door of rm. */
-static bool in_doorway(const RoomMap *rm, int32_t i, int32_t j)
-{
-	for (int32_t d = 0; d < rm->rooms.door_count; d++)
-		if (run_distance(&rm->rooms.doors[d], i, j) <= doorway_reach(rm, &rm->rooms.doors[d], i, j))
-			return true;
-	return false;
-}
-
-/* THE NEXT ROOM, as the judge counts rooms (judge.h, judgerooms.h): a door is a
- * narrowing between two spaces that each widen well beyond it. rooms.c cuts the
- * space at gentler narrowings (ROOMS_DOOR_RATIO), which suits the planner; its rooms
- * are merged by the verdict's rule restated on the model (carryroom.h, the same
- * code the carrying tasks use), so a bay or a wall stub is no next room. "In the
- * next room" means in another merged room (carryroom_merge: a side seen in part,
- * still narrow, counts as the same room; so does a door whose width the eye has not
- * settled, roomdoubt_next) and past the door line: farther from the run across each
- * such door than half its width and GOALS_DOORWAY squares (the judge counts the
- * doorway, the passage between the faces of the narrowing, in no room). The goal
- * is the centre of the room beyond a door; an unsettled door's sides are looked at
- * first (kept until reached), and with nothing left to look at it is gone through,
- * exploring, once; a door kept only because a side of it is seen in part
- * (carryroom_merge_seen, undecided) is a place to look from, once, not to claim.
- * Every cell claimed (here, or a goal reached) must lie beyond a door line by the
- * verdict's own watershed too (nextroom_beyond): rooms.h's doors, merged, may lie
- * at another narrowing than the judge's (random g197: another row of piers). Where
- * rooms.h's doors give nothing to go to and nothing is left to see, the goal is
- * the nearest cell beyond a door line by the watershed alone, once the objects
- * in its room and the start's have been touched (nextroom_unfelt) and the faces
- * in its doors' doorways seen in the fovea (nextroom_jambs): random g257, g292.
- * Returns whether out's goal is such a look at an unsettled door's side. */
-static bool next_room(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si,
-		      int32_t sj, int32_t ui, int32_t uj, GoalResult *out)
-{
-	const Screen *s = &c->screen;
-	int32_t start_room = rooms_at(&rm->rooms, si, sj), here_room = rooms_at(&rm->rooms, ui, uj);
-	if (start_room < 0)
-		return false;
-	CarryRooms sure, seen, plain;
-	carryroom_merge(rm, &sure);
-	carryroom_merge(rm, &plain);
-	carryroom_merge_seen(rm, s, &seen);
-	/* A door whose width the eye has not settled is none to claim by: its sides
-	 * are one room to `sure` (roomdoubt_next), and Utak looks at them first.
-	 * When nothing is left to look at, he still heads through it as through a
-	 * door (`plain`), exploring, once. */
-	Vec2 look;
-	bool jamb = roomdoubt_next(c, rm, &sure, start_room, dist, &look) == ROOMDOUBT_LOOK;
-	int32_t sp = sure.merged[start_room], ss = seen.merged[start_room], pp = plain.merged[start_room];
-	int64_t cells = (int64_t)g->w * g->h;
-	bool *ok = util_alloc((size_t)cells, sizeof *ok);
-	nextroom_beyond(c, g, rm, si, sj, ok);
-	bool past = here_room >= 0 && sure.merged[here_room] != sp && ok[uj * g->w + ui];
-
-	double best_d[3] = {INFINITY, INFINITY, INFINITY};
-	int32_t best[3] = {-1, -1, -1};
-	for (int32_t d = 0; d < rm->rooms.door_count; d++) {
-		const RoomsDoor *door = &rm->rooms.doors[d];
-		int32_t pa = sure.merged[door->room_a], pb = sure.merged[door->room_b];
-		int32_t qa = plain.merged[door->room_a], qb = plain.merged[door->room_b];
-		int32_t ga = seen.merged[door->room_a], gb = seen.merged[door->room_b];
-		bool is_sure = pa != pb && (pa == sp || pb == sp), is_seen = ga != gb && (ga == ss || gb == ss);
-		bool is_plain = qa != qb && (qa == pp || qb == pp);
-		if (!is_sure && !is_seen && !is_plain)
-			continue; /* inside a room, or not a door of the starting room */
-		if (run_distance(door, ui, uj) <= doorway_reach(rm, door, ui, uj))
-			past = false;
-		if (!is_seen)
-			continue;
-		const RoomsRoom *room = &rm->rooms.rooms[ga == ss ? door->room_b : door->room_a];
-		int32_t other = ga == ss ? gb : ga, kind = is_sure ? 0 : is_plain ? 2 : 1;
-		if (kind >= 1) { /* a look beyond an undecided or unsettled door: once */
-			/* Beyond an unsettled door, standing near its room's centre counts
-			 * too: the centre moves with the map as he comes near. */
-			Vec2 centre = goals_centre(s->x0 + room->x, s->y0 + room->y);
-			bool looked = kind == 2 && goals_distance(centre, c->model.utak) <= GOALS_LOOK + 1;
-			for (int v = 0; v < c->visited_count && !looked; v++)
-				looked = goals_distance(centre, c->visited[v]) <= GOALS_LOOK + 1;
-			if (looked)
-				continue;
-		}
-		for (int32_t k = 0; k < g->w * g->h; k++) {
-			int32_t i = k % g->w, j = k / g->w, r = rooms_at(&rm->rooms, i, j);
-			if (dist[k] < 0 || r < 0 || seen.merged[r] != other)
-				continue;
-			/* A goal he would claim on reaching: a cell of another room than
-			 * the start's by `sure`, and not in a doorway (as for `past`). */
-			if (kind == 0 && (sure.merged[r] == sp || in_doorway(rm, i, j) || !ok[k]))
-				continue;
-			double dd = hypot(i - room->x, j - room->y) + 1e-3 * dist[k];
-			if (dd < best_d[kind]) {
-				best_d[kind] = dd;
-				best[kind] = k;
-			}
-		}
-	}
-	carryroom_free(&sure);
-	carryroom_free(&plain);
-	carryroom_free(&seen);
-	/* No such goal through rooms.h's doors: the nearest cell beyond a door line
-	 * by the watershed alone (nextroom_cell). */
-	int32_t ws = best[0] < 0 && !past ? nextroom_cell(g, dist, ok) : -1;
-	free(ok);
-	bool touch = false;
-	Vec2 feel;
-	/* Only when nothing is left to see (goals_frontier, as goals_choose tries
-	 * next): the rule's own doubts come first. */
-	if (ws >= 0 && (best[0] >= 0 || best[1] >= 0 || best[2] >= 0 || jamb || goals_frontier(c, dist, &feel)))
-		ws = -1;
-	if (ws >= 0)
-		touch = nextroom_unfelt(c, g, rm, si, sj, ws, dist, &feel, &ws) ||
-			nextroom_jambs(c, g, rm, ws, dist, &feel, &ws);
-	int32_t pick = best[0] >= 0 ? best[0] : best[2] >= 0 ? best[2] : best[1];
-	if (past) { /* already through a door and past its doorway: here will do */
-		out->found = true;
-		out->goal = goals_centre(s->x0 + ui, s->y0 + uj);
-	} else if (best[0] < 0 && jamb) {
-		out->found = out->exploring = true;
-		out->goal = look;
-		return true;
-	} else if (pick < 0 && touch) {
-		out->found = out->exploring = true;
-		out->goal = feel;
-	} else if (pick < 0 && ws >= 0) {
-		out->found = true;
-		out->goal = goals_centre(s->x0 + ws % g->w, s->y0 + ws / g->w);
-	} else if (pick >= 0) {
-		out->found = true;
-		out->exploring = best[0] < 0;
-		out->goal = goals_centre(s->x0 + pick % g->w, s->y0 + pick / g->w);
-	}
-	return false;
-}
-
 /* unexamined(c, k, nearer, dist, goal): the reachable cell nearest a square not yet
  * seen in the fovea of an object never seen whole (objects.h, examined) other than
  * node k, nearer the start than k (centroid to start) when `nearer`, the nearest
@@ -879,7 +712,7 @@ void goals_choose(Controller *c, GoalResult *out)
 			out->exploring = out->found = true;
 			break;
 		}
-		c->room_look = next_room(c, g, dist, &rm, si, sj, ui, uj, out);
+		c->room_look = nextroom_goal(c, g, dist, &rm, si, sj, ui, uj, out);
 		if (c->room_look)
 			c->room_look_at = out->goal;
 		if (!out->found) {

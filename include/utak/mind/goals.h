@@ -130,7 +130,7 @@ bool goals_more_to_see(Controller *c);
  * door's half width from the run across it (face to face). */
 #define GOALS_DOORWAY 2.0
 /* ...and this many squares more where the ground is no higher than the door's
- * (goals.c, doorway_reach): the judge's doorway runs along a face from every door
+ * (nextroom.c, doorway_reach): the judge's doorway runs along a face from every door
  * square, not only from the middle of the run. */
 #define GOALS_DOORWAY_LOW 2.0
 /* "No higher than the door's": a clearance at most this times the door's and

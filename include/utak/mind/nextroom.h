@@ -73,4 +73,11 @@ bool nextroom_jambs(const Controller *c, const Grid *g, const RoomMap *rm, int32
  * by no one of them alone. */
 RoomDoubt nextroom_felt(const Controller *c, const int32_t *dist, int32_t si, int32_t sj, Vec2 *goal);
 
+/* nextroom_goal(c, g, dist, rm, si, sj, ui, uj, out): task (ii)'s goal on this
+ * cycle's grid g (dist: steps from Utak's cell (ui, uj); rm: its room map; the
+ * start at (si, sj)), into out, by THE NEXT ROOM (nextroom.c); returns whether the
+ * goal is a look at an unsettled door's side. goals_choose asks it. */
+bool nextroom_goal(const Controller *c, const Grid *g, const int32_t *dist, const RoomMap *rm, int32_t si, int32_t sj,
+		   int32_t ui, int32_t uj, GoalResult *out);
+
 #endif
