@@ -10,11 +10,10 @@
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 
-/* cell_faint(m, s, k): screen cell k is faint: believed floor, read only in cells of
- * 2 x 2 or 4 x 4 squares, and its estimate not zero, which a cell that was not
- * zero left (worldmodel.c wm_update: the estimate is the mean of the readings, so
- * one reading above zero keeps it above zero until a finer one replaces it). */
-static bool cell_faint(const WorldModel *m, const Screen *s, int64_t k)
+/* faint_cell: faint.h. The estimate is the mean of the readings (worldmodel.c
+ * wm_update), so one reading above zero keeps it above zero until a finer one
+ * replaces it. */
+bool faint_cell(const WorldModel *m, const Screen *s, int64_t k)
 {
 	if (s->label[k] != SCREEN_SPACE)
 		return false;
@@ -59,7 +58,7 @@ uint8_t *faint_marks(const WorldModel *m, const Screen *s, Vec2 centre, double r
 	uint8_t *mark = util_alloc((size_t)n, 1);
 	int64_t *stack = util_alloc((size_t)n, sizeof *stack);
 	for (int64_t k = 0; k < n; k++)
-		mark[k] = cell_faint(m, s, k) ? 2 : 0; /* 2: faint, not yet labelled */
+		mark[k] = faint_cell(m, s, k) ? 2 : 0; /* 2: faint, not yet labelled */
 	for (int64_t k0 = 0; k0 < n; k0++) {
 		if (mark[k0] != 2)
 			continue;

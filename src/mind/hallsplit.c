@@ -47,6 +47,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/controller.h"
+#include "utak/mind/faint.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/roomdoubt.h"
@@ -474,17 +475,13 @@ static bool hs_unseen_look(Controller *c, Vec2 p, Vec2 beat)
 	return begun;
 }
 
-/* hs_faint(c, q): screen cell q is space on the model read only by the 2 x 2 or
- * 4 x 4 cells, and by one that was not zero (worldmodel.c: a cell not zero says
+/* hs_faint(c, q): screen cell q is faint (faint.h, faint_cell): space on the model
+ * read only by the 2 x 2 or 4 x 4 cells, and by one that was not zero (worldmodel.c: a cell not zero says
  * something in it is occupied, not which squares; a wall one square thick across
  * a coarse cell leaves all its squares below half occupied, so floor, faint). */
 static bool hs_faint(const Controller *c, int64_t q)
 {
-	const Screen *s = &c->screen;
-	if (s->label[q] != SCREEN_SPACE)
-		return false;
-	Evidence e = worldmodel_evidence(&c->model, s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w));
-	return e.res > WORLDMODEL_UNSEEN && e.res < WORLDMODEL_RES_FOVEA && e.p > 0;
+	return faint_cell(&c->model, &c->screen, q);
 }
 
 /* hs_faint_parts(c, p, np, at): FAINT (hallsplit.h): whether some 8-connected set

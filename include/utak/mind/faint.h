@@ -48,6 +48,10 @@ struct Controller;
  * heading: its squares are those at offsets -4..3 (eye.h, EYE_FOVEA_HALF). */
 #define FAINT_FOVEA_REACH 3
 
+/* faint_cell(m, s, k): screen cell k (of s, built from m) is faint: believed floor,
+ * read only in cells of 2 x 2 or 4 x 4 squares, and its estimate not zero, which
+ * a cell that was not zero left. hallsplit.h's FAINT asks the same. */
+bool faint_cell(const WorldModel *m, const Screen *s, int64_t k);
 /* faint_marks(m, s, centre, radius): a w x h array over screen s (built from model
  * m), 1 where the cell is faint (FAINT), its centre lies under radius from centre
  * (INFINITY: any), and its 8-connected set of faint cells touches no cell s holds
