@@ -32,7 +32,13 @@
  *   skelbench --scaling [REPEATS [LARGEST]]
  * Each job's ns a cell on the rooms, rects and maze grids at every side from 256 to
  * LARGEST (4096), medians of REPEATS rounds (7, at least 5) that time every side in
- * turn, beside the machine's floor at each size (read passes): see bench_scaling. */
+ * turn, beside the machine's floor at each size (read passes): see bench_scaling.
+ *
+ *   skelbench --pgfloor [REPEATS [MAP...]]
+ * What any pathgraph build must read (the skeleton's bit plane, each skeleton cell's
+ * dist2) and write (the graph's arrays), each timed alone, beside pathgraph_build, at
+ * 1024 and 4096 on rooms, rects, maze and each MAP (issue 16's 2 ms): see
+ * bench_pgfloor. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -750,12 +756,178 @@ static int bench_scaling(int repeats, int32_t largest)
 	return 0;
 }
 
+/* ---------------------------------------------------------------- --pgfloor */
+
+/* bench_load64(p): the plane's 64 bits at p, bit k being bit k & 7 of byte p[k >> 3]
+ * (Skeleton.plane's order). */
+static uint64_t bench_load64(const unsigned char *p)
+{
+	uint64_t v;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+	memcpy(&v, p, sizeof v);
+#else
+	v = 0;
+	for (int k = 7; k >= 0; k--)
+		v = v << 8 | p[k];
+#endif
+	return v;
+}
+
+/* bench_ctz64(v): the index of the lowest bit set in v != 0. */
+static int bench_ctz64(uint64_t v)
+{
+#if defined(__GNUC__)
+	return __builtin_ctzll(v);
+#else
+	int k = 0;
+	while (!(v & 1)) {
+		v >>= 1;
+		k++;
+	}
+	return k;
+#endif
+}
+
+/* skelbench --pgfloor [REPEATS [MAP...]] (issue 16, "pathgraph build <= 2 ms
+ * everywhere"): what any build of the pathgraph must read and write, timed on its own,
+ * beside pathgraph_build, on the rooms, rects and maze grids and each MAP (bench_fit)
+ * at 1024 and 4096 cells a side. The build must read the skeleton (its bit plane,
+ * Skeleton.plane: an eighth of a byte a cell) and the dist2 of every skeleton cell (an
+ * edge's clearance is the least dist2 of its cells, a vertex's its cell's), and write
+ * the graph: cells and cell_edge (4 + 4 bytes an edge cell) and a 4-byte record a
+ * skeleton cell (the cell_ref by rank). Timed after each skeleton_compute, as the
+ * build is (its caches as the build finds them), medians of REPEATS (default 7, at
+ * least 3), thread CPU ms: plane, one read pass over the plane's words; gather, each
+ * skeleton cell's dist2 loaded in row-major order (ascending addresses, the order of
+ * a build that streams the rows) and its least kept; write, a memset of the graph's
+ * bytes; floor, their sum; pg, pathgraph_build; and the lines of 64 bytes of dist2
+ * that hold a skeleton cell (each a line fetched from memory once the grid outgrows
+ * the caches). The build also reads dist2 at turns (the cut corner's fourth cell),
+ * and has its vertices, their junction sets and the incidence lists besides. Where
+ * the skeleton is dense (rooms, rects, the maze) the floor is what reading and
+ * writing that much costs streamed; where it is sparse (a few cells a row, as on the
+ * Moving AI maps scaled to 4096) the gather waits on a line at a time and the build's
+ * walk, which fetches dist2 16 rows ahead, can beat it: there the floor is no bound
+ * (measured: pathgraph.c's MEASURED, FLOOR). */
+static int bench_pgfloor(int repeats, char **maps, int count)
+{
+	static const char *const names[] = {"rooms", "rects", "maze"};
+	void (*const make[])(Grid *, int32_t) = {bench_rooms, bench_rects, bench_maze};
+	static const int32_t sides[] = {1024, 4096};
+	printf("# --pgfloor: thread CPU ms, medians of %d, each after a skeleton_compute: "
+	       "plane (read pass), gather (each skeleton cell's dist2, row-major), write "
+	       "(the graph's 8 bytes an edge cell and 4 a skeleton cell), floor (their sum), "
+	       "pg (pathgraph_build)\n",
+	       repeats);
+	printf("%-14s %5s %9s %9s %8s %8s %8s | %7s %7s %7s %7s %7s %6s\n", "grid", "side",
+	       "skel", "edgecell", "lines", "plane MB", "out MB", "plane", "gather", "write",
+	       "floor", "pg", "pg/fl");
+	double *t = malloc(sizeof *t * (size_t)repeats * 4);
+	for (int z = 0; z < 2; z++)
+		for (int k = 0; k < 3 + count; k++) {
+			Grid g;
+			char name[256];
+			if (k < 3) {
+				bench_seed = 2026;
+				make[k](&g, sides[z]);
+				snprintf(name, sizeof name, "%s", names[k]);
+			} else {
+				if (!bench_load_map(maps[k - 3], &g)) {
+					fprintf(stderr, "skelbench: %s: not a readable .map file\n",
+					        maps[k - 3]);
+					free(t);
+					return 2;
+				}
+				bench_fit(&g, sides[z]);
+				const char *base = strrchr(maps[k - 3], '/');
+				snprintf(name, sizeof name, "%s", base ? base + 1 : maps[k - 3]);
+				char *dot = strrchr(name, '.');
+				if (dot && strcmp(dot, ".map") == 0)
+					*dot = '\0';
+			}
+			Skeleton s;
+			Pathgraph pg;
+			skeleton_init(&s);
+			pathgraph_init(&pg);
+			skeleton_compute(&s, &g);
+			pathgraph_build(&pg, &s, &g);
+			const int32_t w = s.w, h = s.h, words = skeleton_plane_words(w);
+			const size_t plane_bytes = (size_t)(h + 2) * (size_t)words * 8;
+			int64_t lines = 0;
+			for (int32_t y = 0; y < h; y++) {
+				uintptr_t last = 0;
+				for (int32_t x = 0; x < w; x++) {
+					const int64_t cb = skeleton_plane_bit(w, x, y);
+					if (!(s.plane[cb >> 3] >> (cb & 7) & 1))
+						continue;
+					const uintptr_t line = (uintptr_t)(s.dist2 + (size_t)y * w + x) >> 6;
+					lines += line != last;
+					last = line;
+				}
+			}
+			const size_t out_bytes = (size_t)pg.cell_count * 8 + (size_t)s.count * 4;
+			unsigned char *out = malloc(out_bytes + 1);
+			volatile uint64_t sink = 0;
+			for (int r = -1; r < repeats; r++) { /* round -1: first touches */
+				double c[4];
+				skeleton_compute(&s, &g);
+				c[0] = bench_now_ms();
+				sink += bench_read_words(s.plane, plane_bytes);
+				c[1] = bench_now_ms();
+				int32_t least = INT32_MAX;
+				for (int32_t y = 0; y < h; y++) {
+					const unsigned char *row = s.plane + (size_t)(y + 1) * words * 8;
+					const int32_t *d = s.dist2 + (size_t)y * w;
+					/* the plane's word j >= 1 holds cells 64 (j - 1) on */
+					for (int32_t j = 1; (j - 1) * 64 < w; j++)
+						for (uint64_t here = bench_load64(row + 8 * j); here;
+						     here &= here - 1) {
+							const int32_t v = d[(j - 1) * 64 + bench_ctz64(here)];
+							least = v < least ? v : least;
+						}
+				}
+				c[2] = bench_now_ms();
+				memset(out, r & 0xff, out_bytes);
+				c[3] = bench_now_ms();
+				for (int j = 0; j < 3 && r >= 0; j++)
+					t[(size_t)j * repeats + r] = c[j + 1] - c[j];
+				skeleton_compute(&s, &g); /* the build as it comes after the skeleton */
+				const double p0 = bench_now_ms();
+				pathgraph_build(&pg, &s, &g);
+				if (r >= 0)
+					t[(size_t)3 * repeats + r] = bench_now_ms() - p0;
+				sink += (uint64_t)least + out[out_bytes / 2];
+			}
+			(void)sink;
+			double med[4];
+			for (int j = 0; j < 4; j++)
+				med[j] = bench_figure(&t[(size_t)j * repeats], repeats).median;
+			const double floor_ms = med[0] + med[1] + med[2];
+			printf("%-14s %5d %9d %9d %8lld %8.2f %8.2f | %7.3f %7.3f %7.3f %7.3f %7.3f "
+			       "%6.2f\n",
+			       name, (int)sides[z], (int)s.count, (int)pg.cell_count,
+			       (long long)lines, plane_bytes / 1e6, out_bytes / 1e6, med[0], med[1],
+			       med[2], floor_ms, med[3], med[3] / floor_ms);
+			fflush(stdout);
+			free(out);
+			pathgraph_free(&pg);
+			skeleton_free(&s);
+			grid_free(&g);
+		}
+	free(t);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc > 1 && strcmp(argv[1], "--scaling") == 0) {
 		int repeats = argc > 2 ? atoi(argv[2]) : 7;
 		int32_t largest = argc > 3 ? atoi(argv[3]) : 4096;
 		return bench_scaling(repeats < 5 ? 5 : repeats, largest);
+	}
+	if (argc > 1 && strcmp(argv[1], "--pgfloor") == 0) {
+		int repeats = argc > 2 ? atoi(argv[2]) : 7;
+		return bench_pgfloor(repeats < 3 ? 3 : repeats, argv + 3, argc > 3 ? argc - 3 : 0);
 	}
 	if (argc > 2 && strcmp(argv[1], "--compare") == 0) {
 		if (argc > 4 && strcmp(argv[3], "--side") == 0) {
