@@ -227,7 +227,67 @@
  *    Boston_0_1024 0.23-0.33 -> 0.28-0.33 (within the noise). The same graph (a
  *    prefetch changes no value). Still: the walk (builder_edge_from) 58% of the
  *    build, and builder_root_path's read of the far vertex's set_size, a miss at
- *    the end of each walk (65% of that function). */
+ *    the end of each walk (65% of that function).
+ *    Then STREAMING (issue 16's seventh round, 2026-11-27): a build in raster order,
+ *    measured and not kept. A prototype driver (not kept) made the chains in one pass
+ *    over the plane in rank order, each chain cell joined to its earlier neighbours
+ *    (west, the row before) by a union-find whose links carry an orientation and an
+ *    offset (the cell's place in its fragment), the fragment's least dist2 and each
+ *    cell's cut-corner flag taken as it went; a second pass in rank order found each
+ *    cell's place and scattered cells[], cell_edge[] and the flags there; a third
+ *    summed each fragment's length in order. That is the chains alone: no vertices,
+ *    junction sets, root paths or edge order. pathgraph_build, the whole of it, and the
+ *    prototype after each skeleton_compute, medians of 9 (1024) and 5 (4096), load
+ *    1-2: 1024 rooms 0.23 against 0.95 ms, rects 0.43 / 1.88, maze 1.71 / 7.63; 4096
+ *    rooms 7.8 / 35.3, rects 10.3 / 52.5, maze 38.4 / 127: 3.3 to 4.5 times slower, and
+ *    no more linear (rooms 25 -> 56 ns a skeleton cell from 1024 to 4096, the build 6
+ *    -> 12). Its passes at 4096: the union-find 25.4 (rooms), 36.2 (rects), 61
+ *    (maze) ms, 8.4, 12.0 and about the same with dist2 not loaded (so on rooms the
+ *    raster order's loads of dist2 alone cost 17 ms, twice the whole build); the
+ *    scatter 9.6, 17.8, 88 ms; the lengths 1.6, 3.0, 22. Finds took 2.1-2.35 hops a
+ *    cell. Why: cells[] is in chain order (edge after edge, each from v0 to v1: the
+ *    graph must stay the same, array for array), so a raster build must place each
+ *    cell by its place along its chain, moving the walk's scattered reads to
+ *    scattered writes, and adds the union-find, whose branches turn on the data at
+ *    every cell (which neighbours came earlier, which end of a fragment, a merge)
+ *    where the walk's go straight down a corridor. A sparse build from a row-sorted
+ *    list of the cells has the same order to make.
+ *    FLOOR: skelbench --pgfloor (bench/skelbench.c) times what any build must read and
+ *    write, alone, after each skeleton_compute (medians of 7, load 3-6): at 4096 the
+ *    gather of every skeleton cell's dist2 in row-major order (an edge's clearance
+ *    needs each) costs rooms 3.47 ms (631 557 cells on 311 159 lines of 64 bytes),
+ *    rects 4.17 (725 098 cells, 365 225 lines), maze 3.87 (3 975 639 cells, 993 784
+ *    lines: all 64 MB of dist2), and writing the graph (8 bytes an edge cell and the
+ *    4-byte record, 7.7, 8.9 and 48.6 MB) 0.24, 0.36 and 1.35; the plane's read pass
+ *    (2.2 MB) 0.08. So on these three grids issue 16's 2 ms at 4096 is below what
+ *    reading their dist2 once costs streamed: out of reach of any build that reads
+ *    each skeleton cell's dist2. The build stands at 2.1 (rooms: 8.1 ms against a
+ *    floor of 3.8), 2.35 (rects, 10.8 / 4.6) and 7.5 times (maze, 39.7 / 5.3) that
+ *    floor at 4096, 4.9 times on the maze at 1024 (1.72 / 0.35 ms), about 2 on rooms
+ *    and rects there. On the sparse skeletons of Boston_0_1024 and den520d at 4096
+ *    (a few cells a row) the gather waits on each line and the build, whose walk
+ *    fetches dist2 16 rows ahead, beats it (2.01 against 2.05 ms, 1.03 against 1.37):
+ *    no bound there (a gather that also asked for the cells 16 rows on: the same).
+ *    Then ROOT BY TOWARD (pathwalk.c, builder_root_path): the root path reads toward[]
+ *    at the vertex cell's rank, which the walk has in hand, in place of the vertex's
+ *    set_size, a load that waited on the load of the far vertex's record (two misses
+ *    in a row at the end of each walk; toward is 0 at a root, so a one-cell vertex
+ *    still costs one load). The same graph: hashes of every array and of
+ *    pathgraph_cell_ref of every skeleton cell on 1500 random grids (up to 300 x 300,
+ *    random densities and blocks) and 15 bench grids (rooms, rects, maze,
+ *    Boston_0_1024, den520d at 256, 1024 and 4096) against a71c967's library.
+ *    pathgraph_build after each skeleton_compute, medians of 21 (1024) and 7 (4096),
+ *    three sessions of 5, 5 and 7 rounds alternating with a71c967's, load 6-9, ms:
+ *    maze 4096 40.9 -> 39.4, 42.9 -> 40.3, 39.1 -> 38.2 (2-6% less); rects 4096 11.39
+ *    -> 11.40, 11.32 -> 10.93, 11.27 -> 11.04; rooms 4096 8.10 -> 8.15, 8.02 -> 7.96,
+ *    7.88 -> 7.94; Boston_0_1024 4096 2.13 -> 2.13, 2.04 -> 1.97, 2.00 -> 2.03;
+ *    den520d 4096 1.15 -> 1.13; maze 1024 1.80 -> 1.82, 1.65 -> 1.69, 1.69 -> 1.65;
+ *    rooms, rects and Boston_0_1024 at 1024 within 10% either way (0.22 to 0.51 ms):
+ *    a gain on the maze at 4096 alone, the rest within the noise. Tried and dropped:
+ *    the record of the cell 16 rows on prefetched at each step north or south (the
+ *    maze's records are 16 MB at 4096), its rank from that row's word's first rank:
+ *    maze 4096 40.3 -> 39.6 past ROOT BY TOWARD, maze 1024 1.69 -> 1.73, rects 4096
+ *    10.9 -> 11.5. */
 #include "utak/plan/pathgraph.h"
 
 #include <assert.h>
