@@ -239,19 +239,23 @@
  *    junction sets, root paths or edge order. pathgraph_build, the whole of it, and the
  *    prototype after each skeleton_compute, medians of 9 (1024) and 5 (4096), load
  *    1-2: 1024 rooms 0.23 against 0.95 ms, rects 0.43 / 1.88, maze 1.71 / 7.63; 4096
- *    rooms 7.8 / 35.3, rects 10.3 / 52.5, maze 38.4 / 127: 3.3 to 4.5 times slower, and
+ *    rooms 7.8 / 35.3, rects 10.3 / 52.5, maze 38.4 / 127: 3.3 to 5.1 times slower, and
  *    no more linear (rooms 25 -> 56 ns a skeleton cell from 1024 to 4096, the build 6
  *    -> 12). Its passes at 4096: the union-find 25.4 (rooms), 36.2 (rects), 61
- *    (maze) ms, 8.4, 12.0 and about the same with dist2 not loaded (so on rooms the
- *    raster order's loads of dist2 alone cost 17 ms, twice the whole build); the
- *    scatter 9.6, 17.8, 88 ms; the lengths 1.6, 3.0, 22. Finds took 2.1-2.35 hops a
- *    cell. Why: cells[] is in chain order (edge after edge, each from v0 to v1: the
- *    graph must stay the same, array for array), so a raster build must place each
- *    cell by its place along its chain, moving the walk's scattered reads to
- *    scattered writes, and adds the union-find, whose branches turn on the data at
- *    every cell (which neighbours came earlier, which end of a fragment, a merge)
- *    where the walk's go straight down a corridor. A sparse build from a row-sorted
- *    list of the cells has the same order to make.
+ *    (maze) ms, and 8.4 and 12.0 on rooms and rects with dist2 not loaded (so there
+ *    the loads of dist2, in raster order but inside that branchy loop, cost 17 and 24
+ *    ms, where skelbench --pgfloor's plain gather costs 3.5 and 4.2: FLOOR below); the
+ *    placing pass 9.6, 17.8, 88 ms; the lengths 1.6, 3.0, 22. Finds took 2.1-2.35 hops
+ *    a cell. The scatter itself is not the cost: writing 4 bytes a chain cell from
+ *    rank order to its place in chain order alone took 0.04, 0.06, 0.29 ms at 1024 and
+ *    0.7, 1.0, 5.0 at 4096 (load 13). Why not kept: cells[] is in chain order (edge
+ *    after edge, each from v0 to v1: the graph must stay the same, array for array),
+ *    so a raster build must rank each cell along its chain (list ranking), which the
+ *    walk does by walking and the union-find by 2 finds and a handful of branches on
+ *    the data at every cell (which neighbours came earlier, which end of a fragment, a
+ *    merge), where the walk's branches go straight down a corridor; the union-find
+ *    pass alone costs more than the whole build. A sparse build from a row-sorted list
+ *    of the cells has the same ranking to do.
  *    FLOOR: skelbench --pgfloor (bench/skelbench.c) times what any build must read and
  *    write, alone, after each skeleton_compute (medians of 7, load 3-6): at 4096 the
  *    gather of every skeleton cell's dist2 in row-major order (an edge's clearance
