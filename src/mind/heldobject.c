@@ -195,6 +195,18 @@ int32_t wm_held_on_solid(const WorldModel *m, int32_t x, int32_t y)
 	return n;
 }
 
+/* wm_held_on_occupied(m, x, y): how many held squares, Utak on square (x, y), lie
+ * on squares the model believes occupied at all (seen, p >= 0.5, any confidence). */
+int32_t wm_held_on_occupied(const WorldModel *m, int32_t x, int32_t y)
+{
+	int32_t n = 0;
+	for (int32_t j = 0; j < m->held_count; j++) {
+		Evidence e = worldmodel_evidence(m, x + m->held_dx[j], y + m->held_dy[j]);
+		n += e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f;
+	}
+	return n;
+}
+
 /* wm_register_held(m, x, y, held, under, imp): after a push, Utak found on square
  * (x, y): the held set shifted by the square (-1, 0 or 1 on each axis) that makes
  * the impression fit best, when that fits better than the set unshifted by

@@ -399,7 +399,7 @@ typedef struct WmSearch {
 	 * held squares it puts on squares surely occupied (wm_held_on_solid), for
 	 * wm_solid_tie. */
 	struct WmCand {
-		int32_t x, y, solid;
+		int32_t x, y, solid, believed, levels;
 		double key, score;
 	} *cand;
 	int ncand, capcand;
@@ -412,6 +412,15 @@ static int32_t wm_compared_bare(const WorldModel *m, int32_t x, int32_t y, const
 	int32_t compared;
 	worldmodel_mismatch(m, x, y, imp, &compared);
 	return compared;
+}
+
+/* wm_levels(score, compared): the levels by which the cells compared disagree, in
+ * all, from a wm_score of `compared` cells (its cost of the cells not compared
+ * taken off). */
+static int32_t wm_levels(double score, int32_t compared)
+{
+	double cells = RETINA_CELLS - 1;
+	return (int32_t)lround((score * cells - WM_UNKNOWN_COST * (cells - compared)) * EYE_MAX_LEVEL);
 }
 
 static void wm_try(WmSearch *s, int32_t x, int32_t y)
@@ -444,7 +453,8 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	             WM_DISTANCE_COST * hypot(x - s->px, y - s->py);
 	if (s->held) {
 		s->cand = util_grow(s->cand, &s->capcand, s->ncand + 1, sizeof *s->cand);
-		s->cand[s->ncand++] = (struct WmCand){x, y, wm_held_on_solid(s->m, x, y), key, score};
+		s->cand[s->ncand++] = (struct WmCand){x, y, wm_held_on_solid(s->m, x, y), wm_held_on_occupied(s->m, x, y),
+		                                      wm_levels(score, compared), key, score};
 	}
 	if (key < s->best_key) {
 		s->best_key = key;
@@ -479,6 +489,54 @@ static bool wm_solid_tie(WmSearch *s)
 			continue;
 		if (best < 0 || c->solid < s->cand[best].solid ||
 		    (c->solid == s->cand[best].solid && c->key < s->cand[best].key))
+			best = k;
+	}
+	if (best < 0)
+		return false;
+	s->bx = s->cand[best].x;
+	s->by = s->cand[best].y;
+	s->best_score = s->cand[best].score;
+	return true;
+}
+
+/* wm_pressed(s): pushing, the position found (s->bx, s->by) gives way to a
+ * candidate that puts fewer held squares on squares the model believes occupied
+ * at all (wm_held_on_occupied: p >= 0.5, however unsure), and no more on squares
+ * surely occupied (wm_solid_tie's measure, which has spoken), when the impression
+ * shows that candidate better (fewer levels of disagreement, wm_levels, and a
+ * lower measure) or, for a push of at most a square, when that candidate is the
+ * square he pushed from and the impression is the last one unchanged. Of those,
+ * the least key. True when it did.
+ * WHY (paper 3.5): the prediction stands unless another position beats it by
+ * WORLDMODEL_DISPARITY_MARGIN, the prior that a command does what it says. A push
+ * that would carry the object into squares the model believes occupied has lost
+ * that prior. Pressed against the verge, a slanted object's pushes halted, the
+ * verge beside and beyond it seen only in coarse cells half on the object (conf
+ * below WM_BLOCKED_CONF, which wm_solid_tie asks for), and the impression showed
+ * the halt better by less than the margin: each read as a square gained, and Utak
+ * claimed a corner the object was 2 short of (adversarial world h38,
+ * tests/worlds/push-slant-verge.w: a false success). An impression left unchanged
+ * by such a push is what a halt shows; one that went on would show what stopped
+ * it nearer. Not "any" better measure: a candidate that compares fewer cells (the
+ * prediction looks further into what is unseen) pays less for them, so it must
+ * also disagree in fewer levels; and a push that carries the object into floor
+ * the model is unsure of keeps its margin. */
+static bool wm_pressed(WmSearch *s)
+{
+	int32_t have = wm_held_on_occupied(s->m, s->bx, s->by), solid = wm_held_on_solid(s->m, s->bx, s->by);
+	int32_t best = -1, compared;
+	double score = wm_score_holding(s->m, s->bx, s->by, s->held, s->under, s->imp, &compared);
+	int32_t levels = wm_levels(score, compared);
+	int32_t fx = (int32_t)floor(s->from.x), fy = (int32_t)floor(s->from.y);
+	bool short_push = hypot(s->to.x - s->from.x, s->to.y - s->from.y) <= 1;
+	for (int k = 0; k < s->ncand; k++) {
+		const struct WmCand *c = &s->cand[k];
+		if (c->believed >= have || c->solid > solid)
+			continue;
+		bool shown = c->levels < levels && c->score < score;
+		if (!shown && short_push && c->x == fx && c->y == fy)
+			shown = memcmp(s->imp->level, s->m->last.level, sizeof s->imp->level) == 0;
+		if (shown && (best < 0 || c->key < s->cand[best].key))
 			best = k;
 	}
 	if (best < 0)
@@ -823,7 +881,7 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		s.by = py;
 		s.best_score = rep->best_mismatch = rep->mismatch;
 	}
-	if (held && wm_solid_tie(&s)) {
+	if (held && (wm_solid_tie(&s) | wm_pressed(&s))) {
 		rep->corrected = s.bx != px || s.by != py;
 		rep->best_mismatch = s.best_score;
 	}

@@ -40,6 +40,7 @@ void wm_box_held(WorldModel *m);
 bool *wm_floor_round_held(const WorldModel *m);
 void wm_regrow_held(WorldModel *m, const bool *was_floor);
 int32_t wm_held_on_solid(const WorldModel *m, int32_t x, int32_t y);
+int32_t wm_held_on_occupied(const WorldModel *m, int32_t x, int32_t y);
 void wm_register_held(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under,
                       const Impression *imp);
 void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved);

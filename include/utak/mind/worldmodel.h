@@ -254,7 +254,10 @@ void worldmodel_accommodate_first(WorldModel *m, const Impression *imp);
  * object beside it (it moves with Utak, halted or not), and of those the eye cannot
  * tell from the best (within WORLDMODEL_DISPARITY_MARGIN) the one that puts the
  * fewest held squares on squares surely occupied wins (two things do not share a
- * square); it is put down beside the
+ * square); and a position that puts fewer on squares believed occupied at all wins
+ * where the impression shows it better, or where a push of a square left the
+ * impression unchanged (a wall seen only coarsely: worldmodel.c, wm_pressed); it is
+ * put down beside the
  * position found (with m->register_held, shifted by a square on either axis where
  * the impression shows it lagged or led his square: it rides with his point, not
  * his square, and a push halted a fraction of a square on, or gone astray, can
