@@ -20,7 +20,11 @@
  * square within WORLDMODEL_DISPARITY_RADIUS of it, and every square within one of
  * the commanded straight line (the controller is not told where a move halted).
  * The best, ties going to the nearest to the commanded line and then to the
- * prediction, wins if it beats the prediction by WORLDMODEL_DISPARITY_MARGIN.
+ * prediction, wins if it beats the prediction by WORLDMODEL_DISPARITY_MARGIN, both
+ * by this measure and once each cell's difference is counted only beyond what the
+ * resolution of the knowledge under it leaves open (wm_tolerant_mismatch: a square
+ * known only from a 4 x 4 cell at level 0 or 7 may be the one square of 16 that
+ * cell's rounding hides).
  * Sliding along a straight wall changes nothing the eye sees, so along a wall
  * the belief can only be as good as these ties.
  * Motion's error (paper 3.5, uncertainty (2); worldmodel_motion_error): the
@@ -329,6 +333,52 @@ double worldmodel_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impr
 	return n ? sum / n : 1.0;
 }
 
+/* wm_tolerant_mismatch(m, x, y, imp): the level differences of worldmodel_mismatch
+ * summed over the cells it compares, each less what the resolution of the model's
+ * knowledge under that cell leaves open. WHY: a 4 x 4 cell at level 0 (or 7) allows
+ * one of its 16 squares the other way (eye_level rounds 1/16 to 0), and the model
+ * holds its squares as definite floor (or occupied); a finer cell over such squares
+ * can meet that one square. So a cell of the fovea or the intermediate zone whose
+ * squares include some known only from peripheral cells may hold one square more
+ * (or fewer) than predicted: its difference is counted only beyond that. A 2 x 2
+ * cell at level 0 or 7 allows none (round(7/4) = 2), so intermediate knowledge has
+ * no such slack, and a peripheral cell over peripheral knowledge is compared as
+ * worldmodel_mismatch compares it. One square of slack a cell: the 4 x 4 cells the
+ * knowledge came from were aligned on another square, unknown here, and one square
+ * is what a single one of them allows. */
+static double wm_tolerant_mismatch(const WorldModel *m, int32_t x, int32_t y, const Impression *imp)
+{
+	int32_t utak_cell = eye_cell_at(0, 0);
+	double sum = 0;
+	for (int32_t i = 0; i < RETINA_CELLS; i++) {
+		if (i == utak_cell)
+			continue;
+		EyeCell c = eye_cell(i);
+		int res = wm_res_of_zone(c.zone), occupied = 0, n = c.size * c.size;
+		bool ok = true, more = false, fewer = false;
+		for (int dy = 0; dy < c.size && ok; dy++)
+			for (int dx = 0; dx < c.size && ok; dx++) {
+				const Evidence *e = wm_peek(m, x + c.ox + dx, y + c.oy + dy);
+				if (!e || e->res == WORLDMODEL_UNSEEN ||
+				    (e->p > WM_DEFINITE && e->p < 1 - WM_DEFINITE)) {
+					ok = false;
+					break;
+				}
+				bool occ = e->p >= 0.5f;
+				occupied += occ;
+				if (e->res == WORLDMODEL_RES_PERIPHERAL && res > WORLDMODEL_RES_PERIPHERAL) {
+					more |= !occ;
+					fewer |= occ;
+				}
+			}
+		if (!ok)
+			continue; /* not predicted: as worldmodel_predict */
+		int lo = eye_level(occupied - fewer, n), hi = eye_level(occupied + more, n), a = imp->level[i];
+		sum += (a < lo ? lo - a : a > hi ? a - hi : 0) / (double)EYE_MAX_LEVEL;
+	}
+	return sum;
+}
+
 /* wm_score(m, x, y, imp, &compared): the disparity measure of a position: the
  * level differences summed over the cells the model can predict, and
  * WM_UNKNOWN_COST for every cell it cannot, over all cells but Utak's. Without
@@ -381,6 +431,22 @@ double wm_score_holding(WorldModel *m, int32_t x, int32_t y, const Evidence *hel
 	wm_place(m, x, y, held, under);
 	double score = wm_score(m, x, y, imp, compared);
 	wm_lift(m, x, y, under);
+	return score;
+}
+
+/* wm_tolerant_score(m, x, y, held, under, imp): wm_score (or wm_score_holding, held
+ * not NULL) with each cell's difference less its slack (wm_tolerant_mismatch). */
+static double wm_tolerant_score(WorldModel *m, int32_t x, int32_t y, const Evidence *held, Evidence *under,
+                                const Impression *imp)
+{
+	if (held)
+		wm_place(m, x, y, held, under);
+	int32_t compared;
+	worldmodel_mismatch(m, x, y, imp, &compared);
+	double cells = RETINA_CELLS - 1,
+	       score = (wm_tolerant_mismatch(m, x, y, imp) + WM_UNKNOWN_COST * (cells - compared)) / cells;
+	if (held)
+		wm_lift(m, x, y, under);
 	return score;
 }
 
@@ -814,9 +880,21 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	}
 	rep->best_mismatch = s.best_score;
 	rep->candidates = s.tried;
+	/* A correction must also win once each cell's difference is taken beyond what
+	 * the resolution of the knowledge under it leaves open (wm_tolerant_mismatch).
+	 * WHY: after a long move the fovea lands on squares seen only in 4 x 4 cells,
+	 * one of which may hold a square of an object a zero cell did not show; that
+	 * one foveal cell (a whole cell's difference, five times the margin) moved
+	 * the belief 2.24 squares off a move nothing stopped, to a square where the
+	 * object fell on squares the model cannot predict, and Utak closed his loop
+	 * round the square on the wrong square and claimed it
+	 * (tests/worlds/coarse-zero-slack.w). A difference within that resolution
+	 * is no evidence of where he is. */
 	if ((s.bx != px || s.by != py) &&
 	    (!judged ||
-	     s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch)) {
+	     (s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch &&
+	      wm_tolerant_score(m, s.bx, s.by, held, under, imp) + WORLDMODEL_DISPARITY_MARGIN <
+	          wm_tolerant_score(m, px, py, held, under, imp)))) {
 		rep->corrected = true;
 	} else {
 		s.bx = px;

@@ -111,7 +111,10 @@ enum {
  * actual level| / 7 over the cells the model can predict, plus a small cost for
  * each cell it cannot, over the 159 cells other than Utak's. The predicted
  * position stands unless another does better by WORLDMODEL_DISPARITY_MARGIN
- * (about a third of one foveal cell wrong). */
+ * (about a third of one foveal cell wrong), by this measure and by the same with
+ * each cell's difference taken beyond the slack of the knowledge under it (a
+ * square known only from a 4 x 4 cell at level 0 or 7 may be the one square of 16
+ * that the cell's rounding hides: worldmodel.c, wm_tolerant_mismatch). */
 #define WORLDMODEL_DISPARITY_MARGIN 0.002
 
 typedef enum Belief { BELIEF_UNKNOWN, BELIEF_FLOOR, BELIEF_OCCUPIED } Belief;
