@@ -275,7 +275,7 @@ void wm_vacate(WorldModel *m, Vec2 from, Evidence *saved)
 	int32_t fx = (int32_t)floor(from.x), fy = (int32_t)floor(from.y);
 	for (int32_t j = 0; j < m->held_count; j++) {
 		Evidence *e = wm_at(m, fx + m->held_dx[j], fy + m->held_dy[j]);
-		saved[j] = e ? *e : (Evidence){1, 0, WORLDMODEL_RES_PERIPHERAL, 1};
+		saved[j] = e ? *e : (Evidence){1, 0, WORLDMODEL_RES_PERIPHERAL, 1, 0};
 		if (e) {
 			e->p = 0;
 			e->conf = (float)(e->conf * WORLDMODEL_CONF_CONTRADICTED);

@@ -1,7 +1,8 @@
 /* worldmodel_work.h - what worldmodel.c (evidence, accommodation, disparity: paper
- * 3.3-3.5) and heldobject.c (the held object's squares in the model: paper 2.2's
- * grasp and push, 3.5) share. Private to the world model: not installed under
- * include/, and nothing outside those two files includes it. */
+ * 3.3-3.5), heldobject.c (the held object's squares in the model: paper 2.2's
+ * grasp and push, 3.5) and firstlook.c (recognition by the first impression, 3.5)
+ * share. Private to the world model: not installed under include/, and nothing
+ * outside those three files includes it. */
 #ifndef UTAK_WORLDMODEL_WORK_H
 #define UTAK_WORLDMODEL_WORK_H
 
@@ -9,6 +10,16 @@
 #include <stdint.h>
 
 #include "utak/mind/worldmodel.h"
+
+/* The disparity cost of a cell the model cannot predict: about what a square
+ * known only from a coarse cell is expected to be wrong by. It, the two costs of
+ * worldmodel.c's ties (WM_LINE_COST, WM_DISTANCE_COST) and
+ * WORLDMODEL_DISPARITY_MARGIN were chosen by running random walks in every world
+ * and counting how often the belief ends off the true square. */
+#define WM_UNKNOWN_COST 0.005
+/* Ties go, last, to the candidate nearest the prediction: each square of distance
+ * costs this much. */
+#define WM_DISTANCE_COST 1e-4
 
 /* A square's p is definite, and can be predicted, within this of 0 or 1. */
 #define WM_DEFINITE 0.1

@@ -111,7 +111,11 @@ enum {
  * actual level| / 7 over the cells the model can predict, plus a small cost for
  * each cell it cannot, over the 159 cells other than Utak's. The predicted
  * position stands unless another does better by WORLDMODEL_DISPARITY_MARGIN
- * (about a third of one foveal cell wrong). */
+ * (about a third of one foveal cell wrong) and the prediction cannot explain
+ * every cell it predicts once each difference is taken beyond the slack of the
+ * knowledge under it (a square known only from a 4 x 4 cell at level 0 or 7 may be
+ * the one square of 16 that the cell's rounding hides: worldmodel.c,
+ * wm_tolerant_mismatch, wm_explained). */
 #define WORLDMODEL_DISPARITY_MARGIN 0.002
 
 typedef enum Belief { BELIEF_UNKNOWN, BELIEF_FLOOR, BELIEF_OCCUPIED } Belief;
@@ -122,6 +126,8 @@ typedef struct Evidence {
 	float conf;   /* confidence in p, 0..1 */
 	uint8_t res;  /* finest resolution seen at, WORLDMODEL_UNSEEN if never */
 	uint8_t seen; /* observations at that resolution (saturates at 255) */
+	uint8_t cell; /* seen at WORLDMODEL_RES_PERIPHERAL: its place (x + 4 y) in the
+	                 4 x 4 cell last read it, so squares read by one cell are known */
 } Evidence;
 
 /* NODE_UNCERTAIN: an occupied set that touches the unseen, so that neither rule of
