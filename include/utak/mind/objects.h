@@ -273,6 +273,10 @@ bool objects_pieces_shown(Controller *c, int32_t k);
 /* objects_merged(c, k): node k, confirmed, is doubted for an object nearer the
  * start that may hold a square merged with its neighbour (MERGED, objects_doubt). */
 bool objects_merged(Controller *c, int32_t k);
+/* objects_merged_rival(c, j): node j, seen whole, is one MERGED doubts (for a claim
+ * as far as any), and no pull has shown it one object (apart.h): the rival a
+ * pull settles (rival.h). */
+bool objects_merged_rival(Controller *c, int32_t j);
 /* objects_misread(c, k): node k is seen whole and its own reading puts its name in
  * doubt (in the gap, or inexact), not only its width (a crumb read squarely the
  * task's shape, most often a small one of it). Before going to such a one Utak
