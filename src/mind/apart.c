@@ -105,6 +105,27 @@ static bool in_view(const Controller *c, int32_t j, int32_t x, int32_t y, int mx
 	return true;
 }
 
+/* anchored(c, j, x, y, mx, my): moved from model square (x, y) by TUG_STEP along
+ * (mx, my), the look's cells of 1 and 2 x 2 would cover at least APART_ANCHORS
+ * squares believed occupied that are not node j's: something that stays put, by
+ * which the look can place him (the disparity, paper 3.5). Where there is nothing
+ * (j alone on open floor), the held set rides with him in every place the search
+ * tries, a pull halted against a hidden neighbour looks like a whole one, and
+ * pushed back by what he believes he drew he would leave himself and the object
+ * where he does not believe them (tests/worlds: the adversarial set of apart.h,
+ * "go round square" ended 2 squares from home, believed home). */
+static bool anchored(const Controller *c, int32_t j, int32_t x, int32_t y, int mx, int my)
+{
+	const WorldModel *m = &c->model;
+	int32_t ux = x + TUG_STEP * mx, uy = y + TUG_STEP * my, n = 0;
+	for (int32_t oy = -EYE_INTERMEDIATE_HALF; oy < EYE_INTERMEDIATE_HALF; oy++)
+		for (int32_t ox = -EYE_INTERMEDIATE_HALF; ox < EYE_INTERMEDIATE_HALF; ox++)
+			if (worldmodel_belief(m, ux + ox, uy + oy) == BELIEF_OCCUPIED &&
+			    worldmodel_node_at(m, ux + ox, uy + oy) != j)
+				n++;
+	return n >= APART_ANCHORS;
+}
+
 /* way_free(c, j, x, y, mx, my): Utak's way from model square (x, y), APART_WAY
  * squares along (mx, my), and node j's squares moved as far, land only on j's own
  * squares or believed floor (a way blocked makes the motion fall short: no harm,
@@ -147,7 +168,8 @@ static bool move_from(const Controller *c, int32_t j, int32_t x, int32_t y, int 
 		if (i % 2 != 0 || worldmodel_node_at(m, x + ox, y + oy) != j)
 			return false;
 		for (int sign = -1; sign <= 1; sign += 2)
-			if (way_free(c, j, x, y, sign * ox, sign * oy) && in_view(c, j, x, y, sign * ox, sign * oy)) {
+			if (way_free(c, j, x, y, sign * ox, sign * oy) && in_view(c, j, x, y, sign * ox, sign * oy) &&
+			    anchored(c, j, x, y, sign * ox, sign * oy)) {
 				*mx = sign * ox;
 				*my = sign * oy;
 				return true;
@@ -235,7 +257,10 @@ static double went(const Controller *c, bool *whole)
 	const ApartRun *a = &c->apart;
 	double along = (c->model.utak.x - a->from.x) * a->dx + (c->model.utak.y - a->from.y) * a->dy;
 	Vec2 want = vec2(a->from.x + TUG_STEP * a->dx, a->from.y + TUG_STEP * a->dy);
-	*whole = goals_distance(c->model.utak, want) <= APART_SLACK;
+	/* ... and this look placed him on the line's axis (worldmodel.h, unplaced:
+	 * a shift of a square either way would match it worse), so that a halt
+	 * would have shown. */
+	*whole = goals_distance(c->model.utak, want) <= APART_SLACK && c->model.unplaced[a->dx != 0 ? 0 : 1] == 0;
 	return along;
 }
 

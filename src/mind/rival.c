@@ -112,9 +112,10 @@ static bool rival_way(Controller *c, int32_t j, const int32_t *dist, Vec2 *goal)
 	    goals_near(c, goals_centre(x, y), dist, goal) &&
 	    goals_distance(*goal, c->model.utak) > CONTROLLER_ARRIVED)
 		return true;
-	/* MERGED: where a pull can be made (apart.h), if anywhere. */
-	if (objects_merged_rival(c, j) && apart_goal(c, j, dist, goal))
-		return true;
+	/* MERGED: only where a pull can be made (apart.h): no look or touch beside
+	 * it settles anything (tests/worlds/near-merged.w: 6 cycles to and fro). */
+	if (objects_merged_rival(c, j))
+		return apart_goal(c, j, dist, goal);
 	return goals_beside(c, j, dist, goal);
 }
 

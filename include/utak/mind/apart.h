@@ -65,6 +65,9 @@
 #define APART_WAY 4
 /* A pull went its whole way when Utak's believed point moved within this of it. */
 #define APART_SLACK 0.5
+/* Squares believed occupied, not the object's, that the look after a motion must
+ * cover in its finer cells (apart.c, anchored): what places Utak. */
+#define APART_ANCHORS 8
 /* Objects settled as one, remembered in a task. */
 #define APART_KEPT 8
 
