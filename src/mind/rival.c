@@ -210,8 +210,8 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	bool rival = j >= 0 && objects_rival_open(c, j);
 	/* NARROW: its own squares may be a polygon's under 2 wide; a probe tells
 	 * more (probe.h): no square, or wide enough. MERGED (objects.h): an object
-	 * nearer may hold a square merged with its neighbour, which nothing settles,
-	 * but a probe that shows this one no square drops the claim on it, and the
+	 * nearer may hold a square merged with its neighbour, which a pull of it
+	 * settles (apart.h, below), and a probe that shows this one no square drops the claim on it, and the
 	 * task goes on to the next object of the shape (random g123, g208: without
 	 * it "go square" gave up on a piece it had dropped before). Not before a
 	 * push: the probe's error of motion moved the square, and the push planned
