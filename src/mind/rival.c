@@ -172,6 +172,7 @@ static bool rival_set_off(Controller *c, int32_t j, RivalStage stage)
 	r->back = c->model.utak;
 	r->returning = false;
 	r->stage = stage;
+	r->merged = false; /* (begin sets it for a MERGED rival) */
 	c->have_plan = false;
 	return true;
 }
@@ -276,6 +277,7 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 			return false; /* settled once already: what it left stands */
 	if (!rival_set_off(c, j, RIVAL_GO))
 		return false;
+	r->merged = merged_rival;
 	r->tried_ident[r->count] = r->ident;
 	r->tried_at[r->count++] = at;
 	size_t n = strlen(r->note);
@@ -365,15 +367,17 @@ bool rival_arrive(Controller *c)
 		rival_end(c, "seen closer, it is the task's object now");
 		return true;
 	}
-	if (objects_merged_rival(c, j)) {
-		/* MERGED: pulled, if it can be from here (apart.h). */
-		if (apart_begin(c, j)) {
+	if (objects_merged_rival(c, j) || r->merged) {
+		/* MERGED: pulled, if it can be from here (apart.h); never probed (a
+		 * probe disproves a pair as one square, and the doubt would go:
+		 * near13b's k10, push, a false success in a version that probed). */
+		if (objects_merged_rival(c, j) && apart_begin(c, j)) {
 			r->stage = RIVAL_APART;
 			size_t n = strlen(r->note);
 			snprintf(r->note + n, sizeof r->note - n,
 			         "; rival at (%.1f, %.1f): to pull it %d straight back twice and look (apart.h)", r->at.x,
 			         r->at.y, TUG_STEP);
-		} else if (r->arrivals >= RIVAL_ARRIVALS)
+		} else if (r->arrivals >= RIVAL_ARRIVALS || !objects_merged_rival(c, j))
 			rival_end(c, "no pull can be made from where Utak can stand: the doubt stands");
 		return true;
 	}

@@ -112,6 +112,8 @@ typedef struct RivalRun {
 	int arrivals;    /* goals reached going to it */
 	Vec2 arrived_at; /* ... the last of them */
 	bool home_after; /* "go round": home again when it is settled */
+	bool merged;     /* set off to as MERGED's rival: only a pull settles it (apart.h),
+			    never a probe (a pair is disproved as one square) */
 	Vec2 back;       /* where he stood beside the object he would claim ... */
 	bool returning;  /* ... and he is going back there (the others) */
 	int count;       /* rivals begun this task */
