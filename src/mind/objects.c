@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/apart.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/faint.h"
 #include "utak/mind/probe.h"
@@ -459,7 +460,8 @@ static bool another_name(const Controller *c, int32_t j, const ObjectReading *q)
 bool objects_rival_open(Controller *c, int32_t j)
 {
 	ObjectReading q = objects_read(c, j);
-	return !q.examined || q.shape == c->task.shape || unnamed_crumb(c, j, &q) || another_name(c, j, &q);
+	return !q.examined || q.shape == c->task.shape || unnamed_crumb(c, j, &q) || another_name(c, j, &q) ||
+	       objects_merged_rival(c, j);
 }
 
 /* pieces_shown(c, k): a probe in this task has shown an object Utak read the task's
@@ -589,18 +591,26 @@ static bool merged(const Controller *c, int32_t j, const ObjectReading *q, doubl
 }
 
 /* merged_near(c, k, d): the node of an object other than node k (not felt to be
- * wall) that merged() holds may hold the square under d from the start, -1 when
- * there is none. */
+ * wall, nor shown one object by a pull: apart.h) that merged() holds may hold the
+ * square under d from the start, -1 when there is none. */
 static int32_t merged_near(Controller *c, int32_t k, double d)
 {
 	for (int32_t j = 0; j < c->model.node_count; j++) {
-		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j))
+		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j) || apart_one(c, j))
 			continue;
 		ObjectReading q = objects_read(c, j);
 		if (merged(c, j, &q, d))
 			return j;
 	}
 	return -1;
+}
+
+bool objects_merged_rival(Controller *c, int32_t j)
+{
+	if (j < 0 || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j) || apart_one(c, j))
+		return false;
+	ObjectReading q = objects_read(c, j);
+	return q.examined && merged(c, j, &q, INFINITY);
 }
 
 bool objects_merged(Controller *c, int32_t k)
@@ -681,7 +691,10 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 		snprintf(why, size, "an object nearer the start, at (%.1f, %.1f), %d squares read %s%s, may hold a %s merged in the model with a neighbour",
 			 q.centroid.x, q.centroid.y, (int)q.squares, q.shape == SHAPE_NONE ? "no shape" : q.shape == SHAPE_LSHAPE ? "an " : "a ",
 			 q.shape == SHAPE_NONE ? "" : task_shape_name(q.shape), shape);
-		*rival = -1; /* nothing Utak can do settles it (objects.h, MERGED) */
+		/* The rival, seen whole: a pull settles it (rival.h, apart.h); not seen
+		 * whole, nothing does (a trip to look would be NEARER THE START's). */
+		if (!objects_merged_rival(c, *rival))
+			*rival = -1;
 	} else
 		return false;
 	return true;

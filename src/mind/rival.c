@@ -9,11 +9,13 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/apart.h"
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/round.h"
+#include "utak/mind/tug.h"
 
 /* node_centre(c, k): the centre of node k's rectangle, model frame: where an object
  * is remembered (a renumbered node is found again by it, within OBJECTS_SAME). */
@@ -100,7 +102,7 @@ static bool own_may_probe(Controller *c, int32_t k)
 /* rival_way(c, j, dist, goal): where to go next for rival node j: near the square of
  * it, or of the floor round it, the fovea has not seen nearest Utak, or, all seen,
  * beside it (where touch reaches it). */
-static bool rival_way(const Controller *c, int32_t j, const int32_t *dist, Vec2 *goal)
+static bool rival_way(Controller *c, int32_t j, const int32_t *dist, Vec2 *goal)
 {
 	int32_t x, y;
 	if (objects_unconfirmed_square(c, j, &x, &y) &&
@@ -110,6 +112,10 @@ static bool rival_way(const Controller *c, int32_t j, const int32_t *dist, Vec2 
 	    goals_near(c, goals_centre(x, y), dist, goal) &&
 	    goals_distance(*goal, c->model.utak) > CONTROLLER_ARRIVED)
 		return true;
+	/* MERGED: only where a pull can be made (apart.h): no look or touch beside
+	 * it settles anything (tests/worlds/near-merged.w: 6 cycles to and fro). */
+	if (objects_merged_rival(c, j))
+		return apart_goal(c, j, dist, goal);
 	return goals_beside(c, j, dist, goal);
 }
 
@@ -166,6 +172,7 @@ static bool rival_set_off(Controller *c, int32_t j, RivalStage stage)
 	r->back = c->model.utak;
 	r->returning = false;
 	r->stage = stage;
+	r->merged = false; /* (begin sets it for a MERGED rival) */
 	c->have_plan = false;
 	return true;
 }
@@ -204,8 +211,8 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	bool rival = j >= 0 && objects_rival_open(c, j);
 	/* NARROW: its own squares may be a polygon's under 2 wide; a probe tells
 	 * more (probe.h): no square, or wide enough. MERGED (objects.h): an object
-	 * nearer may hold a square merged with its neighbour, which nothing settles,
-	 * but a probe that shows this one no square drops the claim on it, and the
+	 * nearer may hold a square merged with its neighbour, which a pull of it
+	 * settles (apart.h, below), and a probe that shows this one no square drops the claim on it, and the
 	 * task goes on to the next object of the shape (random g123, g208: without
 	 * it "go square" gave up on a piece it had dropped before). Not before a
 	 * push: the probe's error of motion moved the square, and the push planned
@@ -221,7 +228,8 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	 * round was not probed (random g134, in a version that looked first: the
 	 * piece gone round was never disproved; probed first, it is, and the
 	 * square beside it is gone round instead). */
-	bool own = c->task.kind != TASK_GO_ROUND || own_trip;
+	bool merged_rival = rival && objects_merged_rival(c, j);
+	bool own = (c->task.kind != TASK_GO_ROUND || own_trip) && !(merged_rival && c->task.kind == TASK_PUSH_CORNER);
 	if (own && !rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) &&
 	    probe_begin_object(c, k)) {
 		r->own_ident[r->own_count] = (int32_t)c->model.node[k].ident;
@@ -254,7 +262,13 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	 * leave the claim on that alone. So he probes a rival only once the object
 	 * claimed has been probed and may be a square (OWN FIRST); else the doubt
 	 * stands as it is. */
-	if (objects_read(c, j).examined && !rival_own_probed(c, k))
+	if (objects_read(c, j).examined && !rival_own_probed(c, k) && !merged_rival)
+		return false;
+	/* MERGED going round: pulled from where the loop closed, never from home
+	 * (NOT FROM HOME above: the way there and back, under noise, leaves him
+	 * believing himself home where he is not; worlds/square-behind.w, noise
+	 * seed 6, a version that went: 3.17 off, a false success). */
+	if (merged_rival && c->task.kind == TASK_GO_ROUND && c->round_count > 0 && c->round_next >= c->round_count)
 		return false;
 	Vec2 at = node_centre(c, j);
 	for (int i = 0; i < r->count; i++)
@@ -263,6 +277,7 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 			return false; /* settled once already: what it left stands */
 	if (!rival_set_off(c, j, RIVAL_GO))
 		return false;
+	r->merged = merged_rival;
 	r->tried_ident[r->count] = r->ident;
 	r->tried_at[r->count++] = at;
 	size_t n = strlen(r->note);
@@ -352,6 +367,20 @@ bool rival_arrive(Controller *c)
 		rival_end(c, "seen closer, it is the task's object now");
 		return true;
 	}
+	if (objects_merged_rival(c, j) || r->merged) {
+		/* MERGED: pulled, if it can be from here (apart.h); never probed (a
+		 * probe disproves a pair as one square, and the doubt would go:
+		 * near13b's k10, push, a false success in a version that probed). */
+		if (objects_merged_rival(c, j) && apart_begin(c, j)) {
+			r->stage = RIVAL_APART;
+			size_t n = strlen(r->note);
+			snprintf(r->note + n, sizeof r->note - n,
+			         "; rival at (%.1f, %.1f): to pull it %d straight back twice and look (apart.h)", r->at.x,
+			         r->at.y, TUG_STEP);
+		} else if (r->arrivals >= RIVAL_ARRIVALS || !objects_merged_rival(c, j))
+			rival_end(c, "no pull can be made from where Utak can stand: the doubt stands");
+		return true;
+	}
 	if (!objects_rival_open(c, j)) {
 		rival_end(c, "seen whole in the fovea, no square: the doubt is gone");
 		return true;
@@ -376,11 +405,18 @@ bool rival_arrive(Controller *c)
 
 bool rival_probing(const Controller *c)
 {
-	return c->rival.stage == RIVAL_PROBE || c->rival.stage == RIVAL_OWN;
+	return c->rival.stage == RIVAL_PROBE || c->rival.stage == RIVAL_OWN || c->rival.stage == RIVAL_APART;
 }
 
 bool rival_decide(Controller *c, MotorCommand *cmd)
 {
+	if (c->rival.stage == RIVAL_APART) {
+		if (apart_decide(c, cmd))
+			return true;
+		c->have_plan = false;
+		rival_end(c, apart_verdict_text(c->apart.verdict));
+		return false;
+	}
 	if (!rival_probing(c) || c->probe.stage != PROBE_FINISH)
 		return probe_decide(c, cmd);
 	if (c->rival.stage == RIVAL_OWN) {
@@ -425,6 +461,13 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 
 bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t size)
 {
+	if (c->rival.stage == RIVAL_APART) {
+		static const char *const what[] = {"moved", "grasped", "pulled", "pushed", "turned", "released"};
+		int i = cmd->kind == MOTOR_GRASP ? 1 : cmd->kind == MOTOR_RELEASE ? 5 : cmd->kind == MOTOR_PUSH ? 2 : 0;
+		snprintf(note, size, "; apart: %s the rival at (%.1f, %.1f)%s", what[i], c->rival.at.x, c->rival.at.y,
+		         cmd->kind == MOTOR_PUSH && c->apart.stage == APART_BACK ? " back" : "");
+		return true;
+	}
 	if (!probe_perceive(c, cmd, note, size))
 		return false;
 	if (c->rival.stage == RIVAL_OWN && cmd->kind == MOTOR_RELEASE) {

@@ -19,6 +19,7 @@
 #include "utak/impression.h"
 #include "utak/plan/path.h"
 #include "utak/mind/planner.h"
+#include "utak/mind/apart.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
@@ -238,6 +239,8 @@ typedef struct Controller {
 	ProbeRun probe;
 	/* Settling a doubt about another object by going to it (rival.h). */
 	RivalRun rival;
+	/* Pulling a rival of the MERGED doubt, to see it come away whole (apart.h). */
+	ApartRun apart;
 	/* Settling a hall doubt by touching the blob (hallsplit.h). */
 	HallRun hall;
 	ShapeMemo memo[CONTROLLER_MEMOS];

@@ -216,10 +216,12 @@ bool objects_touching_target(Controller *c);
  *   (a square end to end with a bar may read so, and so may a square and a
  *   neighbour whose squares together are a convex polygon's: the doubt would
  *   fall on every brick and convex piece nearer the start, which cells alone
- *   never tell from such a pair). Nothing Utak does settles it: a look shows
- *   the squares he has, and a probe asks whether ONE square owns them all (a
- *   pair is disproved as one); telling the pair apart would take a push that
- *   moves one and leaves the other, not made. The doubt is asked last (the
+ *   never tell from such a pair). No look settles it: a look shows the squares
+ *   he has, and a probe asks whether ONE square owns them all (a pair is
+ *   disproved as one). Motion does: the object, seen whole, is the doubt's
+ *   rival (objects_merged_rival), and Utak pulls it (apart.h, from rival.h):
+ *   come away whole, it is one object, not convex, so no square, and the doubt
+ *   on it is gone (apart_one); else it stands. The doubt is asked last (the
  *   doubts before it name rivals and probes that may settle the claim), and
  *   it asks for the OWN FIRST probe of the object claimed (rival.h): shown no
  *   square, that one is dropped and the task goes on. Cost, random square
@@ -273,6 +275,10 @@ bool objects_pieces_shown(Controller *c, int32_t k);
 /* objects_merged(c, k): node k, confirmed, is doubted for an object nearer the
  * start that may hold a square merged with its neighbour (MERGED, objects_doubt). */
 bool objects_merged(Controller *c, int32_t k);
+/* objects_merged_rival(c, j): node j, seen whole, is one MERGED doubts (for a claim
+ * as far as any), and no pull has shown it one object (apart.h): the rival a
+ * pull settles (rival.h). */
+bool objects_merged_rival(Controller *c, int32_t j);
 /* objects_misread(c, k): node k is seen whole and its own reading puts its name in
  * doubt (in the gap, or inexact), not only its width (a crumb read squarely the
  * task's shape, most often a small one of it). Before going to such a one Utak

@@ -68,6 +68,14 @@
  * probed (objects_pieces_shown: "push square" makes no probe of its own, and
  * random g145 pushed a second piece to the corner, a false success, once the
  * first was disproved). Then arrive judges the claim again.
+ * MERGED (objects.h): a rival that may hold a square merged in the model with a
+ * neighbour is no square by sight, and a probe asks the wrong question (whether ONE
+ * square owns the squares). Beside it, seen whole, Utak pulls it instead
+ * (apart.h): come away whole, it is one object and the doubt is gone; else it
+ * stands. The rival needs no probe of the object claimed first (it reads no
+ * square, so it shows no pieces that read one), and before a push the object
+ * claimed is not probed for it (the probe's error of motion would move the
+ * square to be pushed, as for MERGED alone: perturbed slant-p3).
  * COST: a probe's 6 cycles, the way there and back, and a probe's 6 cycles, only
  * where a rival doubt arises (going round, and the short way back beside the
  * object gone round). */
@@ -94,6 +102,7 @@ typedef enum RivalStage {
 	RIVAL_PROBE, /* probing it (probe.h) */
 	RIVAL_OWN,   /* probing the object Utak would claim first (OWN FIRST) */
 	RIVAL_OWN_GO, /* "go round": going back beside the object gone round, to probe it */
+	RIVAL_APART, /* pulling it, to see it come away whole (MERGED, apart.h) */
 } RivalStage;
 
 typedef struct RivalRun {
@@ -103,6 +112,8 @@ typedef struct RivalRun {
 	int arrivals;    /* goals reached going to it */
 	Vec2 arrived_at; /* ... the last of them */
 	bool home_after; /* "go round": home again when it is settled */
+	bool merged;     /* set off to as MERGED's rival: only a pull settles it (apart.h),
+			    never a probe (a pair is disproved as one square) */
 	Vec2 back;       /* where he stood beside the object he would claim ... */
 	bool returning;  /* ... and he is going back there (the others) */
 	int count;       /* rivals begun this task */
@@ -140,8 +151,8 @@ bool rival_decide(struct Controller *c, MotorCommand *cmd);
 /* rival_perceive(c, cmd, note, size): probe_perceive, the note saying a rival was
  * probed. */
 bool rival_perceive(struct Controller *c, const MotorCommand *cmd, char *note, size_t size);
-/* rival_probing(c): a probe of a rival, or of the object claimed (OWN FIRST), is
- * under way. */
+/* rival_probing(c): a probe of a rival, or of the object claimed (OWN FIRST), or a
+ * pull of a rival (MERGED), is under way. */
 bool rival_probing(const struct Controller *c);
 /* rival_own_probed(c, k): node k, the object Utak would claim, was probed first
  * (OWN FIRST) and may be a square: its claim needs no second probe. */
