@@ -14,6 +14,10 @@
  * while its rectangle overlaps the old one most (a held object compared relative
  * to Utak, since it moved with him).
  *
+ * Here too, the model as utak --dump model prints it (worldmodel_dump: the last
+ * accommodation, the tree, the belief map) and its checks (worldmodel_validate,
+ * worldmodel_ring_outlines_object), declared in worldmodel.h.
+ *
  * INVARIANTS: modeltree_validate. MEMORY: the tree's arrays, owned by the
  * WorldModel; a belief map of the seen window (one byte a square), labels and a
  * stack (four bytes each) for the derivation, freed after it. COMPLEXITY: O(A) for
@@ -479,3 +483,84 @@ bool modeltree_validate(const WorldModel *m, char *why, size_t size)
 	return true;
 }
 
+/* ---- the model printed and checked (moved from worldmodel.c, which had passed
+ * 1,000 lines; declared in worldmodel.h) ------------------------------------------ */
+
+void worldmodel_dump(const WorldModel *m, FILE *f)
+{
+	const Accommodation *a = &m->report;
+	fputs("world model: Utak's frame at the first impression (x right, y ahead = north), "
+	      "unit one square, origin the lower-left corner of his first square\n",
+	      f);
+	fprintf(f, "impressions %d; Utak believed at (%.2f, %.2f)", (int)m->impressions, m->utak.x,
+	        m->utak.y);
+	fprintf(f, "%s%s\n", m->holding ? ", holding an object" : "",
+	        m->clipped ? "; WARNING: impressions reached past the model's reach and were cut"
+	                   : "");
+	if (m->impressions > 1)
+		fprintf(f,
+		        "last accommodation: predicted (%.2f, %.2f), mismatch %.3f over %d cells; "
+		        "%s (%.2f, "
+		        "%.2f), mismatch %.3f; %d squares new, %d seen finer\n",
+		        a->predicted.x, a->predicted.y, a->mismatch, (int)a->compared,
+		        a->corrected ? "disparity: corrected to" : "kept", a->believed.x,
+		        a->believed.y, a->best_mismatch, (int)a->new_squares,
+		        (int)a->finer_squares);
+	modeltree_dump(m, 0, 0, f);
+	/* The belief map of the seen window. */
+	int32_t ux, uy, x0 = m->seen_x0, y0 = m->seen_y0, x1 = m->seen_x1, y1 = m->seen_y1;
+	worldmodel_utak_square(m, &ux, &uy);
+	if (m->seen_count == 0) {
+		fputs("belief map: nothing seen\n", f);
+		return;
+	}
+	fprintf(
+	    f,
+	    "belief map x %d..%d, y %d..%d, north row first ('.' floor, '#' occupied, '?' unknown, "
+	    "'@' Utak):\n",
+	    (int)x0, (int)x1, (int)y0, (int)y1);
+	for (int32_t y = y1; y >= y0; y--) {
+		for (int32_t x = x0; x <= x1; x++) {
+			Belief b = worldmodel_belief(m, x, y);
+			fputc(x == ux && y == uy     ? '@'
+			      : b == BELIEF_FLOOR    ? '.'
+			      : b == BELIEF_OCCUPIED ? '#'
+			                             : '?',
+			      f);
+		}
+		fputc('\n', f);
+	}
+}
+
+bool worldmodel_validate(const WorldModel *m, char *why, size_t size)
+{
+	return modeltree_validate(m, why, size);
+}
+
+bool worldmodel_ring_outlines_object(const WorldModel *m, int32_t r)
+{
+	const ModelRing *hole = &m->ring[r];
+	if (!hole->hole)
+		return false;
+	for (int32_t n = 0; n < m->node_count; n++) {
+		const ModelNode *node = &m->node[n];
+		if (node->kind != NODE_OBJECT)
+			continue;
+		for (int32_t k = 0; k < node->ring_count; k++) {
+			const ModelRing *o = &m->ring[node->first_ring + k];
+			if (o == hole || o->count != hole->count)
+				continue;
+			int32_t found = 0;
+			for (int32_t i = 0; i < hole->count; i++)
+				for (int32_t j = 0; j < o->count; j++)
+					if (m->vertex[hole->first + i].p.x == m->vertex[o->first + j].p.x &&
+					    m->vertex[hole->first + i].p.y == m->vertex[o->first + j].p.y) {
+						found++;
+						break;
+					}
+			if (found == hole->count)
+				return true;
+		}
+	}
+	return false;
+}
