@@ -897,7 +897,11 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 		s.by = py;
 		s.best_score = rep->best_mismatch = rep->mismatch;
 	}
-	if (held && (wm_solid_tie(&s) | wm_pressed(&s))) {
+	/* Both, in this order (wm_pressed weighs the position wm_solid_tie leaves): `|`
+	 * would leave the order of the two calls unspecified. */
+	bool tied = held && wm_solid_tie(&s);
+	bool pressed = held && wm_pressed(&s);
+	if (tied || pressed) {
 		rep->corrected = s.bx != px || s.by != py;
 		rep->best_mismatch = s.best_score;
 	}
