@@ -50,6 +50,9 @@
 #include "utak/plan/path.h"
 #include "utak/plan/pathgraph.h"
 #include "utak/plan/skeleton.h"
+/* The build's own loads of the skeleton's bit plane (--pgfloor reads it as the
+ * build does). */
+#include "../src/plan/pathgraph_build.h"
 
 static uint64_t bench_seed = 2026;
 static uint32_t bench_rand(void)
@@ -758,36 +761,6 @@ static int bench_scaling(int repeats, int32_t largest)
 
 /* ---------------------------------------------------------------- --pgfloor */
 
-/* bench_load64(p): the plane's 64 bits at p, bit k being bit k & 7 of byte p[k >> 3]
- * (Skeleton.plane's order). */
-static uint64_t bench_load64(const unsigned char *p)
-{
-	uint64_t v;
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-	memcpy(&v, p, sizeof v);
-#else
-	v = 0;
-	for (int k = 7; k >= 0; k--)
-		v = v << 8 | p[k];
-#endif
-	return v;
-}
-
-/* bench_ctz64(v): the index of the lowest bit set in v != 0. */
-static int bench_ctz64(uint64_t v)
-{
-#if defined(__GNUC__)
-	return __builtin_ctzll(v);
-#else
-	int k = 0;
-	while (!(v & 1)) {
-		v >>= 1;
-		k++;
-	}
-	return k;
-#endif
-}
-
 /* skelbench --pgfloor [REPEATS [MAP...]] (issue 16, "pathgraph build <= 2 ms
  * everywhere"): what any build of the pathgraph must read and write, timed on its own,
  * beside pathgraph_build, on the rooms, rects and maze grids and each MAP (bench_fit)
@@ -880,9 +853,9 @@ static int bench_pgfloor(int repeats, char **maps, int count)
 					const int32_t *d = s.dist2 + (size_t)y * w;
 					/* the plane's word j >= 1 holds cells 64 (j - 1) on */
 					for (int32_t j = 1; (j - 1) * 64 < w; j++)
-						for (uint64_t here = bench_load64(row + 8 * j); here;
+						for (uint64_t here = pathgraph_load64(row + 8 * j); here;
 						     here &= here - 1) {
-							const int32_t v = d[(j - 1) * 64 + bench_ctz64(here)];
+							const int32_t v = d[(j - 1) * 64 + pathgraph_ctz64(here)];
 							least = v < least ? v : least;
 						}
 				}

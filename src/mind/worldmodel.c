@@ -556,6 +556,18 @@ static void wm_try(WmSearch *s, int32_t x, int32_t y)
 	}
 }
 
+/* wm_take(s, k): the search's position becomes candidate k; false (nothing taken)
+ * when k < 0. The end of wm_solid_tie and wm_pressed. */
+static bool wm_take(WmSearch *s, int32_t k)
+{
+	if (k < 0)
+		return false;
+	s->bx = s->cand[k].x;
+	s->by = s->cand[k].y;
+	s->best_score = s->cand[k].score;
+	return true;
+}
+
 /* wm_solid_tie(s): pushing, the position found (s->bx, s->by, of measure
  * s->best_score) gives way to a candidate the impression cannot tell from it (its
  * measure at most WORLDMODEL_DISPARITY_MARGIN worse) that puts fewer held squares
@@ -583,12 +595,7 @@ static bool wm_solid_tie(WmSearch *s)
 		    (c->solid == s->cand[best].solid && c->key < s->cand[best].key))
 			best = k;
 	}
-	if (best < 0)
-		return false;
-	s->bx = s->cand[best].x;
-	s->by = s->cand[best].y;
-	s->best_score = s->cand[best].score;
-	return true;
+	return wm_take(s, best);
 }
 
 /* wm_pressed(s): pushing, the position found (s->bx, s->by) gives way to a
@@ -631,12 +638,7 @@ static bool wm_pressed(WmSearch *s)
 		if (shown && (best < 0 || c->key < s->cand[best].key))
 			best = k;
 	}
-	if (best < 0)
-		return false;
-	s->bx = s->cand[best].x;
-	s->by = s->cand[best].y;
-	s->best_score = s->cand[best].score;
-	return true;
+	return wm_take(s, best);
 }
 
 /* wm_line_in_sight(m, from, to, len, &t0, &t1): the stretch [t0, t1] of the
