@@ -182,29 +182,31 @@ void wm_regrow_held(WorldModel *m, const bool *was_floor)
 	}
 }
 
-/* wm_held_on_solid(m, x, y): how many held squares, Utak on square (x, y), lie on
- * squares the model surely believes occupied (seen, p >= 0.5, conf >= WM_BLOCKED_CONF):
- * the object lifted (wm_vacate), by something else. */
-int32_t wm_held_on_solid(const WorldModel *m, int32_t x, int32_t y)
+/* held_on(m, x, y, least): how many held squares, Utak on square (x, y), lie on
+ * squares the model, the object lifted (wm_vacate), believes occupied by something
+ * else (seen, p >= 0.5) with a confidence of at least `least`. */
+static int32_t held_on(const WorldModel *m, int32_t x, int32_t y, float least)
 {
 	int32_t n = 0;
 	for (int32_t j = 0; j < m->held_count; j++) {
 		Evidence e = worldmodel_evidence(m, x + m->held_dx[j], y + m->held_dy[j]);
-		n += e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= WM_BLOCKED_CONF;
+		n += e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f && e.conf >= least;
 	}
 	return n;
 }
 
-/* wm_held_on_occupied(m, x, y): how many held squares, Utak on square (x, y), lie
- * on squares the model believes occupied at all (seen, p >= 0.5, any confidence). */
+/* wm_held_on_solid(m, x, y): held_on's squares the model surely believes occupied
+ * (conf >= WM_BLOCKED_CONF). */
+int32_t wm_held_on_solid(const WorldModel *m, int32_t x, int32_t y)
+{
+	return held_on(m, x, y, WM_BLOCKED_CONF);
+}
+
+/* wm_held_on_occupied(m, x, y): held_on's squares the model believes occupied at
+ * all, however unsure. */
 int32_t wm_held_on_occupied(const WorldModel *m, int32_t x, int32_t y)
 {
-	int32_t n = 0;
-	for (int32_t j = 0; j < m->held_count; j++) {
-		Evidence e = worldmodel_evidence(m, x + m->held_dx[j], y + m->held_dy[j]);
-		n += e.res != WORLDMODEL_UNSEEN && e.p >= 0.5f;
-	}
-	return n;
+	return held_on(m, x, y, 0);
 }
 
 /* wm_register_held(m, x, y, held, under, imp): after a push, Utak found on square
