@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "utak/base/eye.h"
 #include "utak/base/util.h"
 #include "utak/mind/apart.h"
 #include "utak/mind/goals.h"
@@ -24,6 +25,21 @@ static bool in_gap(const ObjectReading *o);
 static double objects_scale(int res)
 {
 	return res == WORLDMODEL_RES_FOVEA ? 1 : res == WORLDMODEL_RES_INTERMEDIATE ? 2 : 4;
+}
+
+bool objects_seen_exactly(const WorldModel *m, int32_t k, int32_t x, int32_t y)
+{
+	Evidence e = worldmodel_evidence(m, x, y);
+	if (e.res == WORLDMODEL_RES_FOVEA)
+		return true;
+	if (e.res != WORLDMODEL_RES_INTERMEDIATE || (e.p < 1.0f && e.p > 0.0f))
+		return false;
+	/* Deep: every place from which the fovea would show (x, y) is k's. */
+	for (int32_t oy = -EYE_FOVEA_HALF; oy < EYE_FOVEA_HALF; oy++)
+		for (int32_t ox = -EYE_FOVEA_HALF; ox < EYE_FOVEA_HALF; ox++)
+			if ((ox || oy) && worldmodel_node_at(m, x - ox, y - oy) != k)
+				return false;
+	return true;
 }
 
 ObjectReading objects_read(Controller *c, int32_t k)
@@ -48,12 +64,11 @@ ObjectReading objects_read(Controller *c, int32_t k)
 			for (int d = 0; d < 4; d++) {
 				static const int8_t step[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
 				int32_t nx = x + step[d][0], ny = y + step[d][1];
-				edge_seen &= worldmodel_node_at(m, nx, ny) == k ||
-					     worldmodel_evidence(m, nx, ny).res == WORLDMODEL_RES_FOVEA;
+				edge_seen &= worldmodel_node_at(m, nx, ny) == k || objects_seen_exactly(m, k, nx, ny);
 			}
 			int res = worldmodel_evidence(m, x, y).res;
 			coarsest = res < coarsest ? res : coarsest;
-			o.foveal += res == WORLDMODEL_RES_FOVEA;
+			o.foveal += objects_seen_exactly(m, k, x, y);
 			o.centroid = vec2_add(o.centroid, vec2(x + 0.5, y + 0.5));
 			xs[o.squares] = x;
 			ys[o.squares++] = y;
@@ -716,7 +731,7 @@ int32_t objects_rival(Controller *c, int32_t k)
 bool objects_lacks(const Controller *c, int32_t k, int32_t x, int32_t y)
 {
 	const WorldModel *m = &c->model;
-	if (worldmodel_evidence(m, x, y).res == WORLDMODEL_RES_FOVEA)
+	if (objects_seen_exactly(m, k, x, y))
 		return false;
 	bool part = worldmodel_node_at(m, x, y) == k;
 	for (int d = 0; d < 4 && !part; d++) {

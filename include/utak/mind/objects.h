@@ -7,7 +7,9 @@
  * gives every part of the model a "degree of confidence based on evidence
  * collected from a series of retinal impressions": here a shape read from squares
  * some of which were seen only in the outer zones is a HYPOTHESIS; it is CONFIRMED
- * when every square of the object has been seen in the fovea, and then it is the
+ * when every square of the object has been seen exactly (objects_seen_exactly: in
+ * the fovea, or, deep inside a big object where no place on the floor puts it in
+ * the fovea, by 2 x 2 cells whose levels fix it), and then it is the
  * shape the object has (it may be another than the hypothesis, which is dropped).
  * A set too coarse to name at its scale (a 4 x 4 square seen in the periphery is
  * one or two blocks of 4) is still a hypothesis of low confidence: the shape its
@@ -48,9 +50,9 @@
 
 typedef struct ObjectReading {
 	Shape shape;
-	bool confirmed;   /* every square seen in the fovea */
+	bool confirmed;   /* every square, and the floor round it, seen exactly */
 	int32_t squares;  /* the object's squares */
-	int32_t foveal;   /* how many of them were seen in the fovea */
+	int32_t foveal;   /* how many of them were seen exactly (objects_seen_exactly) */
 	double scale;     /* the side of the coarsest cell they were seen in: 1, 2 or 4 */
 	Vec2 centroid;    /* of its squares, model frame */
 	bool guessed;     /* the shape is a guess: the squares read as if seen in the fovea */
@@ -287,8 +289,24 @@ bool objects_merged_rival(Controller *c, int32_t j);
  * 1.33 long for its width, and is the commonest such (perturbed clutter.w). */
 bool objects_misread(Controller *c, int32_t k);
 
+/* objects_seen_exactly(m, k, x, y): the model knows square (x, y) of node k (or
+ * round it) exactly: seen in the fovea; or, where no place but k's own squares
+ * would put it in the fovea (every square of the 8 x 8 block of places the fovea
+ * shows it from is k's), seen at best in 2 x 2 cells that each fixed it (p exactly
+ * 1 or 0). WHY: the fovea reaches 4 squares to one side of Utak and 3 to the other
+ * (eye.h), so the middle of an object 8 or more squares across both ways is never
+ * in it from the floor, and by the fovea alone such an object is never seen whole
+ * (a 10 x 10 square: "go square" ran out of cycles, "go round square" ended in
+ * doubt). A 2 x 2 cell's five levels (0, 2, 4, 5, 7 for 0 to 4 squares:
+ * READING.md) tell how many of its squares are occupied, so a cell at 7 (or 0),
+ * or one whose other squares are known, fixes each square as the fovea would. A
+ * 4 x 4 cell's level does not (15 of 16 reads 7), so it never counts: the middle
+ * of an object 16 or more across both ways stays unconfirmed. Elsewhere the
+ * fovea's look is kept: it is where the looks closer that settle a claim's other
+ * doubts are made. */
+bool objects_seen_exactly(const WorldModel *m, int32_t k, int32_t x, int32_t y);
 /* objects_lacks(c, k, x, y): square (x, y) is one that node k's confirmation lacks:
- * not seen in the fovea, and a square of k or a 4-neighbour of one. */
+ * not seen exactly (objects_seen_exactly), and a square of k or a 4-neighbour of one. */
 bool objects_lacks(const Controller *c, int32_t k, int32_t x, int32_t y);
 
 /* objects_unconfirmed_square(c, k, &x, &y): a square of node k not yet seen in the
