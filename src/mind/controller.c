@@ -322,6 +322,35 @@ static bool corner_hall_split(Controller *c)
 	return true;
 }
 
+/* corner_felt_object(c): touch feels an object (a letter, not the verge's B) on a
+ * square beside Utak that lies farther toward the task's corner than his own; if
+ * so the task fails with his doubt. WHY: the judge counts an object's squares as
+ * squares of the room (a corner is measured against floor or object, judge.h),
+ * and an object pressed into the corner reads, to the eye, as part of the wall it
+ * leans on (paper 3.4.2): the model's best floor is then short of the judge's
+ * corner, and without this Utak claimed it (a brick in the north-east corner,
+ * "go ne-corner": 5 short, believed achieved). Touch is the sense that tells an
+ * object from the wall; how far such an object reaches into the corner the eye
+ * cannot say, so any square of it beyond his own puts the corner in doubt. */
+static bool corner_felt_object(Controller *c)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	int64_t here = goals_corner_score(c->task.corner, ux, uy);
+	for (int i = 0; i < TOUCH_CELLS; i++) {
+		char colour = c->impression.touch[i];
+		int32_t x = ux + goals_touch_offset[i][0], y = uy + goals_touch_offset[i][1];
+		if (colour < 'A' || colour > 'Z' || colour == 'B' || goals_corner_score(c->task.corner, x, y) <= here)
+			continue;
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell he is in the %s: touch feels an object (%c) beside him at (%.1f, %.1f), nearer the corner, that the eye reads as wall: its squares, the room's for the corner, may reach farther into it",
+			 task_corner_name(c->task.corner), colour, x + 0.5, y + 0.5);
+		return true;
+	}
+	return false;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -360,8 +389,8 @@ static void arrive(Controller *c)
 			; /* not sure of the room: the next goal is a look at the wall between */
 		else if (hallsplit_hidden_look(c))
 			c->room_look = true; /* the next goal: a look at what may join a better floor */
-		else if (!goals_corner_hidden(c) && !corner_hall_split(c))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden and corner_hall_split fail it, with his doubt) */
+		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split and corner_felt_object fail it, with his doubt) */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {
