@@ -42,6 +42,7 @@
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
 #include "utak/mind/tug.h"
+#include "utak/mind/wallbump.h"
 
 /* build_space(c): the grid to plan on, from the current screen: its space, or
  * when pushing the configuration space. Utak's own square is free whatever the
@@ -351,6 +352,20 @@ static bool corner_felt_object(Controller *c)
 	return false;
 }
 
+/* bump_trip(c, k): a corner of the wall that may be a square pressed against it,
+ * nearer the start than node k, can still be reached and felt (wallbump.h): the
+ * claim waits, and the next goal (goals.c) is beside it. */
+static bool bump_trip(Controller *c, int32_t k)
+{
+	if (k < 0 || c->task.shape != SHAPE_SQUARE)
+		return false;
+	int32_t *dist = utak_reach(c);
+	Vec2 goal;
+	bool go = wallbump_look(c, dist, c->start, goals_distance(objects_read(c, k).centroid, c->start), &goal);
+	free(dist);
+	return go;
+}
+
 /* arrive(c): what reaching the goal means in the current phase. */
 static void arrive(Controller *c)
 {
@@ -401,7 +416,7 @@ static void arrive(Controller *c)
 			} else if (objects_doubt(c, objects_find_target(c), doubt, sizeof doubt)) {
 				/* A doubt over another object: settle it first where he can
 				 * (rival.h), then beside this one again. */
-				if (!rival_begin(c, objects_find_target(c))) {
+				if (!rival_begin(c, objects_find_target(c)) && !bump_trip(c, objects_find_target(c))) {
 					c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
 					snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
 						 task_shape_name(c->task.shape), doubt);
@@ -440,6 +455,10 @@ static void arrive(Controller *c)
 					c->round_count = 0;
 				} else if (objects_doubt(c, k, doubt, sizeof doubt) && rival_begin(c, k)) {
 					/* a doubt over another object: settled first, then home again (rival.h) */
+				} else if (objects_doubt(c, k, doubt, sizeof doubt) && bump_trip(c, k)) {
+					/* a corner of the wall: felt first, then home again (wallbump.h) */
+					c->round_count = 0;
+					c->bump_home = true;
 				} else if (objects_doubt(c, k, doubt, sizeof doubt)) {
 					c->phase = PHASE_FAILED;
 					snprintf(c->why, sizeof c->why, "Utak doubts he went round the %s: %s",
@@ -486,9 +505,10 @@ static void arrive(Controller *c)
 			/* Beside one he would doubt: a look further first (goals.c). */
 		} else if (objects_touching_target(c) && c->clear_tries == 0 && c->turn_tries == 0 &&
 			   objects_doubt(c, objects_find_target(c), c->doubt, sizeof c->doubt) &&
-			   rival_begin(c, objects_find_target(c))) {
+			   (rival_begin(c, objects_find_target(c)) || bump_trip(c, objects_find_target(c)))) {
 			/* A doubt over another object: settled before the object to push is
-			 * chosen (rival.h), then back to its grasp side. */
+			 * chosen (rival.h), then back to its grasp side; or over a corner
+			 * of the wall, felt first (wallbump.h, goals.c), then back. */
 		} else if (objects_touching_target(c)) {
 			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
 			/* Fetched again after clearing the way (pushclear.h) or squaring it

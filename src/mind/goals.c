@@ -28,6 +28,7 @@
 #include "utak/mind/nextroom.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/roomdoubt.h"
+#include "utak/mind/wallbump.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
 #include "utak/mind/tug.h"
@@ -731,6 +732,19 @@ void goals_choose(Controller *c, GoalResult *out)
 	default: /* an object's task (going round it first finds it) */
 		if (!pushing && rival_goal(c, dist, out))
 			break; /* another object the claim is in doubt over: settled first (rival.h) */
+		if (c->task.kind == TASK_GO_ROUND && c->bump_home) {
+			/* Home from a loop, a corner of the wall in doubt: felt first,
+			 * then home (wallbump.h); the whole trail counts. */
+			int32_t k = objects_find_target(c);
+			double nearer = k >= 0 ? goals_distance(objects_read(c, k).centroid, c->start) : 0;
+			if (k >= 0 && wallbump_look(c, dist, c->start, nearer, &out->goal)) {
+				wallbump_going(c, out->goal);
+				out->exploring = out->found = true;
+				break;
+			}
+			c->bump_home = false;
+			round_home(c, k);
+		}
 		if (c->task.kind == TASK_GO_ROUND && c->round_looking) {
 			/* Home from a loop round an object not seen whole: a closer look
 			 * at each part unseen, then the start again (round.c). */
@@ -782,6 +796,13 @@ void goals_choose(Controller *c, GoalResult *out)
 			double nearer = k >= 0 ? goals_distance(objects_read(c, k).centroid, c->start) : 0;
 			if (k >= 0 && (goals_frontier_within(c, dist, c->start, nearer, &out->goal) ||
 				       faint_look(c, dist, c->start, nearer, &out->goal))) {
+				out->exploring = out->found = true;
+				break;
+			}
+			/* A corner of the wall nearer the start may be a square pressed
+			 * against it: touch settles it first (wallbump.h). */
+			if (k >= 0 && c->task.shape == SHAPE_SQUARE && wallbump_look(c, dist, c->start, nearer, &out->goal)) {
+				wallbump_going(c, out->goal);
 				out->exploring = out->found = true;
 				break;
 			}

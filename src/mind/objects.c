@@ -15,6 +15,7 @@
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
 #include "utak/mind/shapefit.h"
+#include "utak/mind/wallbump.h"
 
 static const char *doubt_own(const ObjectReading *o);
 static bool inexact(const ObjectReading *o);
@@ -218,6 +219,7 @@ void objects_note_square(int32_t *xs, int32_t *ys, int *n, int32_t x, int32_t y)
 
 void objects_feel(Controller *c)
 {
+	wallbump_feel(c);
 	int32_t ux, uy;
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	for (int i = 0; i < TOUCH_CELLS; i++) {
@@ -643,6 +645,7 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 	const char *shape = task_shape_name(c->task.shape);
 	double aspect = 0;
 	Vec2 other;
+	bool felt = false;
 	*rival = -1;
 	/* Another of the shape nearer the start, not sure or not yet seen whole,
 	 * may be the one the task means (objects.h, NEARER THE START, AS NEAR). */
@@ -677,6 +680,9 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 		snprintf(why, size, "space nearer the start than the %s is unseen, where another may lie", shape);
 	else if (faint_within(c, c->start, d))
 		snprintf(why, size, "floor nearer the start than the %s was read only by coarse cells that were not empty, where another may lie (faint.h)", shape);
+	else if (c->task.shape == SHAPE_SQUARE && wallbump_within(c, c->start, d, &other, &felt))
+		snprintf(why, size, "a corner of the wall at (%.1f, %.1f), %s, may be one of another %s pressed against the wall, nearer the start (wallbump.h)",
+			 other.x, other.y, felt ? "where touch felt an object" : "not felt", shape);
 	else if (narrow(&o) && o.shown_width > 0)
 		snprintf(why, size, "the %s's %d squares may be those of a polygon under %.0f wide (from %.2f; moved, at least %.2f), too narrow to name",
 			 shape, (int)o.squares, OBJECTS_NAMED_WIDTH, o.reading.min_width, o.shown_width);

@@ -233,6 +233,14 @@ typedef struct Controller {
 	 * tug has been tried at, each at most once (tug.h). */
 	int32_t felt_x[CONTROLLER_FELT_SQUARES], felt_y[CONTROLLER_FELT_SQUARES];
 	int felt_squares;
+	/* Squares of corners of the wall touch has felt B on (wallbump.h). */
+	int32_t wall_felt_x[CONTROLLER_FELT_SQUARES], wall_felt_y[CONTROLLER_FELT_SQUARES];
+	int wall_felt_squares;
+	int32_t bump_tried_x[CONTROLLER_FELT_SQUARES], bump_tried_y[CONTROLLER_FELT_SQUARES];
+	int bump_tried; /* ... and corner squares touch has reached */
+	int bump_trips;  /* trips set off on for such corners (wallbump_going) */
+	Vec2 bump_goal;  /* ... the last one's place */
+	bool bump_home;  /* going round: home when the corners are felt */
 	int32_t tugged_x[CONTROLLER_FELT_SQUARES], tugged_y[CONTROLLER_FELT_SQUARES];
 	int tugged_squares;
 	/* Shape by motion: the probe of the object about to be claimed (probe.h). */
