@@ -40,9 +40,6 @@
 /* Open floor for a re-grasp: every square within the object's reach plus this many
  * is free, so that Utak can walk round it to any side. */
 #define CT_OPEN_MARGIN 2
-/* Squares a wall of a door's sides may lie off on the model: the goal's doors are
- * doors by the verdict's rule with this much slack (ct_door_sure). */
-#define CT_DOOR_SLACK 1.0
 
 bool carrytask_applies(const Task *t)
 {
@@ -320,17 +317,10 @@ static bool ct_box_has(const int32_t b[4], int32_t x, int32_t y, int32_t grow)
 	return x >= b[0] - grow && x <= b[2] + grow && y >= b[1] - grow && y <= b[3] + grow;
 }
 
-/* ct_door_sure(cr, rm, d): door d of rm (a door by the verdict's rule, carryroom_merge)
- * stays one were each wall the eye placed a square off: both sides' peaks p satisfy
- * the rule with the door's clearance c read CT_DOOR_SLACK more (p >= ratio (c + s),
- * p >= c + s + margin). WHY: the judge weighs the true walls; where a side widens
- * to just twice the door (three rooms in a row, doors 9 wide, rooms 18 and 19: one
- * room to the judge), a door read a square narrower, or a room a square wider, made
- * it a door to Utak, and the square he pushed through it a false success. Such a
- * door is no goal: he says he finds no door, as the judge finds none. */
-static bool ct_door_sure(const CarryRooms *cr, const RoomMap *rm, const RoomsDoor *d)
+/* carrytask_door_sure: carrytask.h. */
+bool carrytask_door_sure(const CarryRooms *cr, const RoomMap *rm, const RoomsDoor *d)
 {
-	double c = sqrt((double)rm->skeleton.dist2[d->y * rm->known.w + d->x]) + CT_DOOR_SLACK;
+	double c = sqrt((double)rm->skeleton.dist2[d->y * rm->known.w + d->x]) + CARRYTASK_DOOR_SLACK;
 	for (int side = 0; side < 2; side++) {
 		double p = cr->peak[cr->merged[side ? d->room_b : d->room_a]];
 		if (p < CARRYROOM_RATIO * c || p < c + CARRYROOM_MARGIN)
@@ -393,11 +383,11 @@ static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
 			 (int)(s->y0 + b.bend[3]));
 	} else {
 		/* The rooms that share a door with the object's, by the verdict's
-		 * rule (carryroom.h) with the eye's slack (ct_door_sure), less every
+		 * rule (carryroom.h) with the eye's slack (carrytask_door_sure), less every
 		 * door's doorway. */
 		bool *sure = util_alloc((size_t)(rm->rooms.door_count > 0 ? rm->rooms.door_count : 1), sizeof *sure);
 		for (int32_t q = 0; q < rm->rooms.door_count; q++)
-			sure[q] = cr.door[q] && ct_door_sure(&cr, rm, &rm->rooms.doors[q]);
+			sure[q] = cr.door[q] && carrytask_door_sure(&cr, rm, &rm->rooms.doors[q]);
 		for (int32_t at = 0; at < s->w * s->h; at++) {
 			if (s->label[at] != SCREEN_SPACE)
 				continue;
@@ -483,7 +473,7 @@ static bool ct_survey_point(Controller *c, const int32_t *dist, const RoomMap *r
 		for (int32_t q = 0; q < rm->rooms.door_count && room >= 0; q++) {
 			const RoomsDoor *d = &rm->rooms.doors[q];
 			if (!cr.door[q] || (cr.merged[d->room_a] != room && cr.merged[d->room_b] != room) ||
-			    !ct_door_sure(&cr, rm, d))
+			    !carrytask_door_sure(&cr, rm, d))
 				continue;
 			double far = hypot(d->x - oi, d->y - oj);
 			if (far < best && dist[d->y * s->w + d->x] >= 0) {

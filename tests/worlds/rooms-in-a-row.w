@@ -5,7 +5,7 @@
 # middle space is 18 wide, short of twice a gap of 9. Utak read the top gap a
 # square narrower (its far wall seen from afar a square off) and believed the
 # square pushed through it in the next room: a false success. A door of the goal
-# must now be one were each wall a square off (carrytask.c ct_door_sure): he finds
+# must now be one were a wall of it a square off (carrytask_door_sure): he finds
 # none, and says so. Utak faces north.
 table 60 40
 wall 20 0 22 0 22 30 20 30

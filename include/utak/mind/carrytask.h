@@ -63,6 +63,7 @@
 
 #include "utak/base/geom.h"
 #include "utak/impression.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 #include "utak/plan/grid.h"
@@ -141,6 +142,19 @@ typedef struct CarryTask {
 	char plan[CARRYTASK_PLAN_TEXT];	/* the plan's text, for the next trace line */
 	bool plan_new;
 } CarryTask;
+
+/* carrytask_door_sure(cr, rm, d): door d of rm (a door by the verdict's rule,
+ * carryroom_merge's cr) stays one were a wall of it placed a square off by the eye:
+ * both sides' peaks p satisfy the rule with the door's clearance c read
+ * CARRYTASK_DOOR_SLACK more (p >= CARRYROOM_RATIO (c + s), p >= c + s +
+ * CARRYROOM_MARGIN). Only such a door leads to the goal region. WHY: the judge
+ * weighs the true walls; where a side widens to just twice the door (three rooms in
+ * a row, doors 9 wide, rooms 18 and 19: one room to the judge), a door read a square
+ * narrower, or a room a square wider, made it a door to Utak, and the square pushed
+ * through it a false success (tests/worlds/rooms-in-a-row.w). test_carrytask.c: on
+ * two-room worlds with a wall a square off, a door this keeps is a door to the judge. */
+#define CARRYTASK_DOOR_SLACK 1.0
+bool carrytask_door_sure(const CarryRooms *cr, const RoomMap *rm, const RoomsDoor *d);
 
 /* carrytask_applies(t): the task is one of (vi)-(ix). */
 bool carrytask_applies(const Task *t);
