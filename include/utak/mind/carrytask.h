@@ -24,7 +24,15 @@
  *             believes he is;
  *   release   when the believed object lies wholly in the goal region;
  *   regrasp   when no single grasp serves: carry the object to open floor of its
- *             room (where every side is free), let go, and choose a grasp again.
+ *             room (where every side is free), let go, and choose a grasp again;
+ *             so too when, holding it, no carry to the goal is left from his grasp
+ *             (else he lets go where he is). An object let go that the model no
+ *             longer tells from what it stands against (an L let go in a doorway)
+ *             ends the task with that reason.
+ * The object's start (whose room the goal is next to) is the task's object's
+ * centre until it is first grasped: found elsewhere by more than
+ * CARRYTASK_START_MOVED (another object read first as the task's), the place
+ * beyond is looked for again.
  * An impossible carry (no grasp, not even after a re-grasp) ends the task with the
  * planner's reason in words.
  *
@@ -32,9 +40,12 @@
  *   next room, through the door: the squares seen as floor in the rooms that share
  *     a door with the room of the object's centre, rooms and doors by the verdict's
  *     rule (a door only where the space widens to twice it and 2 squares more on
- *     both sides; rooms.h's other doors join their rooms), less each door's
- *     doorway (the squares between the wall's two faces, and a square more on each
- *     side for what the eye misplaces);
+ *     both sides; rooms.h's other doors join their rooms) and still so with the
+ *     door's clearance read a square more (a wall the eye placed a square off),
+ *     less each door's doorway (the squares between the wall's two faces, and a
+ *     square more on each side for what the eye misplaces), and only squares past
+ *     a door line by the verdict's watershed on both readings of the model
+ *     (nextroom.h's nextroom_beyond, as task (ii) claims);
  *   around the corner: the object's room must be an L-shaped corridor, seen whole
  *     (no square of it beside the unseen); the region is its other leg past the
  *     bend and a square more (either leg past the bend when it started in the
@@ -52,6 +63,7 @@
 
 #include "utak/base/geom.h"
 #include "utak/impression.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
 #include "utak/plan/grid.h"
@@ -80,6 +92,10 @@
  * is left unseen. */
 #define CARRYTASK_LOOK_IDLE 12
 #define CARRYTASK_LOOK_RING 8
+/* Before the object is first grasped, the task's object found this far (squares)
+ * from where its start was taken is another object: its start is taken again and
+ * the place beyond looked for again. */
+#define CARRYTASK_START_MOVED 3.0
 /* The plan's text for the trace. */
 #define CARRYTASK_PLAN_TEXT 1536
 
@@ -93,7 +109,9 @@ typedef enum CarryStage {
 typedef struct CarryTask {
 	CarryStage stage;
 	bool have_start;	/* the object's centre at first sight is known */
-	Vec2 object_start;	/* model frame: the object's centre when first seen */
+	Vec2 object_start;	/* model frame: the object's centre when first seen (the
+				 * task's object's, until it is first grasped) */
+	bool carried;		/* it has been grasped: its start stays */
 	/* The goal region, fixed after the survey: region cell (i, j) is model square
 	 * (rx0 + i, ry0 + j). */
 	bool region_fixed;
@@ -124,6 +142,19 @@ typedef struct CarryTask {
 	char plan[CARRYTASK_PLAN_TEXT];	/* the plan's text, for the next trace line */
 	bool plan_new;
 } CarryTask;
+
+/* carrytask_door_sure(cr, rm, d): door d of rm (a door by the verdict's rule,
+ * carryroom_merge's cr) stays one were a wall of it placed a square off by the eye:
+ * both sides' peaks p satisfy the rule with the door's clearance c read
+ * CARRYTASK_DOOR_SLACK more (p >= CARRYROOM_RATIO (c + s), p >= c + s +
+ * CARRYROOM_MARGIN). Only such a door leads to the goal region. WHY: the judge
+ * weighs the true walls; where a side widens to just twice the door (three rooms in
+ * a row, doors 9 wide, rooms 18 and 19: one room to the judge), a door read a square
+ * narrower, or a room a square wider, made it a door to Utak, and the square pushed
+ * through it a false success (tests/worlds/rooms-in-a-row.w). test_carrytask.c: on
+ * two-room worlds with a wall a square off, a door this keeps is a door to the judge. */
+#define CARRYTASK_DOOR_SLACK 1.0
+bool carrytask_door_sure(const CarryRooms *cr, const RoomMap *rm, const RoomsDoor *d);
 
 /* carrytask_applies(t): the task is one of (vi)-(ix). */
 bool carrytask_applies(const Task *t);
