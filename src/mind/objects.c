@@ -9,6 +9,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/apart.h"
+#include "utak/mind/coarsewall.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/faint.h"
 #include "utak/mind/probe.h"
@@ -662,6 +663,8 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 		snprintf(why, size, "space nearer the start than the %s is unseen, where another may lie", shape);
 	else if (faint_within(c, c->start, d))
 		snprintf(why, size, "floor nearer the start than the %s was read only by coarse cells that were not empty, where another may lie (faint.h)", shape);
+	else if (coarsewall_within(c, c->start, d))
+		snprintf(why, size, "wall nearer the start than the %s, seen only in coarse cells, juts out further than a face so seen can, where another may be merged with it (coarsewall.h)", shape);
 	else if (narrow(&o) && o.shown_width > 0)
 		snprintf(why, size, "the %s's %d squares may be those of a polygon under %.0f wide (from %.2f; moved, at least %.2f), too narrow to name",
 			 shape, (int)o.squares, OBJECTS_NAMED_WIDTH, o.reading.min_width, o.shown_width);
