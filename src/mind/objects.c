@@ -10,6 +10,7 @@
 #include "utak/base/eye.h"
 #include "utak/base/util.h"
 #include "utak/mind/apart.h"
+#include "utak/mind/coarsewall.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/faint.h"
 #include "utak/mind/probe.h"
@@ -680,6 +681,8 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 		snprintf(why, size, "space nearer the start than the %s is unseen, where another may lie", shape);
 	else if (faint_within(c, c->start, d))
 		snprintf(why, size, "floor nearer the start than the %s was read only by coarse cells that were not empty, where another may lie (faint.h)", shape);
+	else if (coarsewall_within(c, c->start, d))
+		snprintf(why, size, "wall nearer the start than the %s, seen only in coarse cells, juts out further than a face so seen can, where another may be merged with it (coarsewall.h)", shape);
 	else if (c->task.shape == SHAPE_SQUARE && wallbump_within(c, c->start, d, &other, &felt))
 		snprintf(why, size, "a corner of the wall at (%.1f, %.1f), %s, may be one of another %s pressed against the wall, nearer the start (wallbump.h)",
 			 other.x, other.y, felt ? "where touch felt an object" : "not felt", shape);
