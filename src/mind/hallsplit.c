@@ -29,7 +29,8 @@
  * square never seen taken for wall; where it clears the claim, a look at the
  * never-seen square beside the start's closed room nearest Utak by steps
  * (hallsplit_frontier: the cells sorted by their key), within HALL_LOOKS too;
- * then FACES, the same with the coarse faces of the verge taken for floor.
+ * then FACES, the same with the coarse faces of the verge taken for floor
+ * (within HALL_FACE_LOOKS).
  * Faint squares (hs_faint_parts, FAINT in hallsplit.h): their 8-connected sets
  * (a depth-first labelling), each alone and all at once taken for wall as the
  * rule takes a node (hs_joint_parts_cells); a look at the nearest square of the
@@ -651,7 +652,8 @@ static bool hs_frontier_look(Controller *c, Vec2 p, bool faces)
 	const Screen *s = &c->screen;
 	HallRun *h = &c->hall;
 	int32_t si, sj, ui, uj, pi, pj;
-	if (h->looks >= HALL_LOOKS || !goals_cell_of(s, c->start, &si, &sj) ||
+	int *budget = faces ? &h->face_looks : &h->looks;
+	if (*budget >= (faces ? HALL_FACE_LOOKS : HALL_LOOKS) || !goals_cell_of(s, c->start, &si, &sj) ||
 	    !goals_cell_of(s, c->model.utak, &ui, &uj) || !goals_cell_of(s, p, &pi, &pj))
 		return false;
 	int64_t n = (int64_t)s->w * s->h;
@@ -710,7 +712,7 @@ static bool hs_frontier_look(Controller *c, Vec2 p, bool faces)
 		    goals_distance(near, c->model.utak) < 0.5)
 			continue;
 		begun = true;
-		hs_begin_look(c, near, p, &h->looks,
+		hs_begin_look(c, near, p, budget,
 			 faces ? "; a wall of the room he started in, seen only coarsely at (%.1f, %.1f), may lie farther back, and the room be no part of floor that would beat the corner: going to look (hallsplit.h)"
 			       : "; the room he started in may run on into squares never seen, at (%.1f, %.1f), that join it to floor that would beat the corner: going to look (hallsplit.h)",
 			 here.x, here.y);

@@ -112,7 +112,7 @@
  * watershed is restated with every verge square not seen in the fovea that has
  * floor seen beside it (a coarse face) taken for floor; when on it the claim
  * holds, he looks at the face square beside the start's room on that map nearest
- * him, as CLOSED does, within HALL_LOOKS; the fovea places the wall, or shows
+ * him, as CLOSED does, within HALL_FACE_LOOKS; the fovea places the wall, or shows
  * the floor, and the claim is judged again by hs_beaten alone.
  * COST (corner25, one run each): of the 320 random and perturbed corner runs, 4
  * change: random g41, g241, g266, g291 "go ne-corner" lose the doubt (107 -> 94,
@@ -164,6 +164,11 @@
 /* Looks a task, at most, at faint squares that, taken for wall, part the hall
  * (FAINT above). */
 #define HALL_FAINT_LOOKS 4
+/* Looks a task, at most, at coarse faces of the start room's walls (FACES above),
+ * a budget of their own: spent from HALL_LOOKS, they left LOOKING none on
+ * variants of random g291 where LOOKING's look decides (the door made 8 wide and
+ * moved: 132 cycles claimed before, a doubt after four looks at faces). */
+#define HALL_FACE_LOOKS 2
 
 /* A hall doubt being settled by touch (SETTLING above); in the Controller. */
 typedef struct HallRun {
@@ -178,6 +183,7 @@ typedef struct HallRun {
 	bool look;		/* the trip on is a look at unseen squares (LOOKING), not a touch */
 	int looks;		/* such looks begun this task */
 	int faint_looks;	/* looks begun this task at faint squares (FAINT) */
+	int face_looks;		/* looks begun this task at coarse faces (FACES) */
 	char note[200];		/* a trip begun, for the trace (controller.c prints it) */
 	char why[200];		/* HALL_DOUBT: the doubt's words */
 } HallRun;
