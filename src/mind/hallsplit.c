@@ -25,6 +25,12 @@
  * square along it from Utak that can be looked at is gone to. And before the
  * hidden-floor doubt (roomdoubt_hidden), a look at the coarse squares that may join
  * that floor to the start's room (hallsplit_hidden_look); both within HALL_LOOKS.
+ * Before that look, CLOSED (hs_frontier_look): the watershed once more with every
+ * square never seen taken for wall; where it clears the claim, a look at the
+ * never-seen square beside the start's closed room nearest Utak by steps
+ * (hallsplit_frontier: the cells sorted by their key), within HALL_LOOKS too;
+ * then FACES, the same with the coarse faces of the verge taken for floor
+ * (within HALL_FACE_LOOKS).
  * Faint squares (hs_faint_parts, FAINT in hallsplit.h): their 8-connected sets
  * (a depth-first labelling), each alone and all at once taken for wall as the
  * rule takes a node (hs_joint_parts_cells); a look at the nearest square of the
@@ -582,6 +588,140 @@ static bool hs_faint_look(Controller *c, Vec2 p, Vec2 sq)
 	return true;
 }
 
+/* hf_cmp: frontier cells by their key (steps), then index. */
+typedef struct HfCell {
+	int32_t key;
+	int64_t q;
+} HfCell;
+
+static int hf_cmp(const void *pa, const void *pb)
+{
+	const HfCell *a = pa, *b = pb;
+	if (a->key != b->key)
+		return a->key < b->key ? -1 : 1;
+	return (a->q > b->q) - (a->q < b->q);
+}
+
+int64_t hallsplit_frontier(int32_t w, int32_t h, const bool *unknown, const int32_t *room, int32_t a,
+			   const int32_t *dist, int64_t *out)
+{
+	int64_t n = (int64_t)w * h, m = 0;
+	HfCell *cell = util_alloc((size_t)(n > 0 ? n : 1), sizeof *cell);
+	static const int di[4] = {1, -1, 0, 0}, dj[4] = {0, 0, 1, -1};
+	for (int64_t q = 0; q < n; q++) {
+		if (!unknown[q])
+			continue;
+		int32_t i = (int32_t)(q % w), j = (int32_t)(q / w), key = INT32_MAX;
+		for (int k = 0; k < 4; k++) {
+			int32_t x = i + di[k], y = j + dj[k];
+			if (x < 0 || y < 0 || x >= w || y >= h)
+				continue;
+			int64_t r = (int64_t)y * w + x;
+			if (room[r] == a && dist[r] >= 0 && dist[r] < key)
+				key = dist[r];
+		}
+		if (key != INT32_MAX)
+			cell[m++] = (HfCell){key, q};
+	}
+	qsort(cell, (size_t)m, sizeof *cell, hf_cmp);
+	for (int64_t k = 0; k < m; k++)
+		out[k] = cell[k].q;
+	free(cell);
+	return m;
+}
+
+/* hs_frontier_look(c, p, faces): CLOSED (hallsplit.h): hs_beaten doubts the claim at p,
+ * but on the verdict's watershed restated with every square never seen taken for
+ * wall, p is in the start's room and no floor seen in it beats p by more than the
+ * slack: the doubt owes to the unseen. Then a look at the never-seen square that
+ * borders that closed room nearest Utak (by steps to the room's square beside
+ * it), not looked at from a goal reached, from a reachable cell within GOALS_LOOK
+ * of it, is begun (true; c->hall set; HALL_LOOKS). WHY: the open watershed joins
+ * the start's room to floor beyond a door through a wall never seen (random g241:
+ * the start room's far wall unseen, 16 squares of it; the door east is then no
+ * door by the verdict's ratio); the fewest-unseen way to the beating floor runs
+ * through the door, over floor seen, and its looks went to the far floor itself,
+ * never to the wall that decides. A look only adds what the eye saw: the claim is
+ * still made by hs_beaten alone. With faces, FACES: not the unseen but every
+ * verge square not seen in the fovea with floor seen beside it (a coarse face)
+ * is what the watershed is restated without (taken for floor), and what is
+ * looked at (random g291: an object by the start room's wall read as wall made
+ * the room too narrow for its door to be one). */
+static bool hs_frontier_look(Controller *c, Vec2 p, bool faces)
+{
+	const Screen *s = &c->screen;
+	HallRun *h = &c->hall;
+	int32_t si, sj, ui, uj, pi, pj;
+	int *budget = faces ? &h->face_looks : &h->looks;
+	if (*budget >= (faces ? HALL_FACE_LOOKS : HALL_LOOKS) || !goals_cell_of(s, c->start, &si, &sj) ||
+	    !goals_cell_of(s, c->model.utak, &ui, &uj) || !goals_cell_of(s, p, &pi, &pj))
+		return false;
+	int64_t n = (int64_t)s->w * s->h;
+	Grid closed = {s->w, s->h, util_alloc((size_t)n, 1)};
+	bool *unknown = util_alloc((size_t)n, sizeof *unknown);
+	for (int64_t q = 0; q < n; q++) {
+		closed.cells[q] = s->fixed.cells[q];
+		if (!faces) {
+			unknown[q] = s->label[q] == SCREEN_UNKNOWN;
+			if (unknown[q])
+				closed.cells[q] = GRID_BLOCKED;
+			continue;
+		}
+		/* FACES: a verge square not seen in the fovea with floor seen beside it */
+		int32_t i = (int32_t)(q % s->w), j = (int32_t)(q / s->w);
+		unknown[q] = s->label[q] == SCREEN_VERGE && !hs_settled(c, q) &&
+			     (screen_label(s, i - 1, j) == SCREEN_SPACE || screen_label(s, i + 1, j) == SCREEN_SPACE ||
+			      screen_label(s, i, j - 1) == SCREEN_SPACE || screen_label(s, i, j + 1) == SCREEN_SPACE);
+	}
+	for (int64_t q = 0; q < n && faces; q++)
+		if (unknown[q])
+			closed.cells[q] = GRID_FREE;
+	int32_t *room = util_alloc((size_t)n, sizeof *room);
+	carryroom_watershed(&closed, room);
+	free(closed.cells);
+	int32_t a = room[(int64_t)sj * s->w + si];
+	bool clear = a >= 0 && room[(int64_t)pj * s->w + pi] == a;
+	int64_t got = goals_corner_score(c->task.corner, (int32_t)floor(p.x), (int32_t)floor(p.y));
+	for (int64_t q = 0; q < n && clear; q++)
+		if (room[q] == a && s->label[q] == SCREEN_SPACE &&
+		    goals_corner_score(c->task.corner, s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w)) - got >
+			    CONTROLLER_CORNER_SLACK)
+			clear = false;
+	if (!clear) {
+		free(unknown);
+		free(room);
+		return false;
+	}
+	/* The never-seen squares beside the closed room, by the steps to their
+	 * neighbour in it; tried nearest first until one can be looked at. */
+	int32_t *dist = util_alloc((size_t)n, sizeof *dist);
+	goals_reach(&s->free, ui, uj, dist);
+	if (faces) /* the faces' own squares are beside the room when on it */
+		for (int64_t q = 0; q < n; q++)
+			if (unknown[q] && room[q] == a)
+				room[q] = -2;
+	int64_t *cand = util_alloc((size_t)n, sizeof *cand);
+	int64_t nc = hallsplit_frontier(s->w, s->h, unknown, room, a, dist, cand);
+	free(unknown);
+	free(room);
+	bool begun = false;
+	for (int64_t k = 0; k < nc && !begun; k++) {
+		int64_t q = cand[k];
+		Vec2 here = goals_centre(s->x0 + (int32_t)(q % s->w), s->y0 + (int32_t)(q / s->w)), near;
+		if (hs_looked_at(c, here) || !goals_near(c, here, dist, &near) || goals_distance(near, here) > GOALS_LOOK ||
+		    goals_distance(near, c->model.utak) < 0.5)
+			continue;
+		begun = true;
+		hs_begin_look(c, near, p, budget,
+			 faces ? "; a wall of the room he started in, seen only coarsely at (%.1f, %.1f), may lie farther back, and the room be no part of floor that would beat the corner: going to look (hallsplit.h)"
+			       : "; the room he started in may run on into squares never seen, at (%.1f, %.1f), that join it to floor that would beat the corner: going to look (hallsplit.h)",
+			 here.x, here.y);
+	}
+	free(cand);
+	free(dist);
+	return begun;
+}
+
 bool hallsplit_faint_parts_all(const Controller *c, const Vec2 *p, int32_t np, Vec2 *at)
 {
 	return hs_faint_parts(c, p, np, at);
@@ -756,7 +896,7 @@ HallVerdict hallsplit_settle(Controller *c, Vec2 p, Vec2 *at)
 		return HALL_DOUBT;
 	}
 	if (v == HALL_CLEAR && hs_beaten(c, p, at, &out)) {
-		if (!out && hs_unseen_look(c, p, *at))
+		if (!out && (hs_frontier_look(c, p, false) || hs_frontier_look(c, p, true) || hs_unseen_look(c, p, *at)))
 			return HALL_GOING; /* a look at the unseen that joins the two (LOOKING) */
 		v = HALL_DOUBT;
 		if (out)

@@ -21,7 +21,11 @@
  * exactly when its cell holds more occupied squares, by the TABLE, than round to
  * level 0, and a coarse square read as floor with no occupancy at all must lie in
  * a cell of at most one occupied square. This test is a helper that sees both sides
- * of the wall (as test_worldmodel.c). */
+ * of the wall (as test_worldmodel.c).
+ *
+ * CLOSED (hallsplit.h): the never-seen cells beside the start's closed room, in
+ * the order Utak tries to look at them, against brute force pushed from the
+ * room's side (frontier_agrees_with_brute_force). */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -128,6 +132,65 @@ TEST_CASE(fewest_refuses_what_is_not_passable)
 	TEST_CHECK(hallsplit_fewest(3, 2, pass, costly, 0, 2, from) == -1);
 }
 
+/* CLOSED's choice of where to look (hallsplit_frontier): THE ORACLE pushes from
+ * the room's side instead of pulling from the unseen's: each reachable cell of the
+ * room marks its four neighbours that are never seen with its steps (the least
+ * kept), and the marked cells are picked out smallest (steps, index) first by a
+ * plain scan; the sequence must be the function's, cell for cell, on random grids
+ * of rooms, unseen cells and unreachable ones. */
+TEST_CASE(frontier_agrees_with_brute_force)
+{
+	int64_t seen = 0;
+	for (int t = 0; t < 300; t++) {
+		int32_t w = 1 + (int32_t)(next() % 20), h = 1 + (int32_t)(next() % 20);
+		int64_t n = (int64_t)w * h;
+		bool *unknown = malloc((size_t)n * sizeof *unknown);
+		int32_t *room = malloc((size_t)n * sizeof *room), *dist = malloc((size_t)n * sizeof *dist);
+		int32_t *key = malloc((size_t)n * sizeof *key);
+		int64_t *got = malloc((size_t)n * sizeof *got), *want = malloc((size_t)n * sizeof *want);
+		uint32_t dark = next() % 70;
+		for (int64_t q = 0; q < n; q++) {
+			unknown[q] = next() % 100 < dark;
+			room[q] = unknown[q] ? -1 : (int32_t)(next() % 4) - 1; /* -1 a door or wall, rooms 0..2 */
+			dist[q] = next() % 5 == 0 ? -1 : (int32_t)(next() % 30);
+			key[q] = INT32_MAX;
+		}
+		int32_t a = (int32_t)(next() % 3);
+		for (int64_t r = 0; r < n; r++) {
+			if (room[r] != a || dist[r] < 0)
+				continue;
+			int64_t nb[4] = {r % w > 0 ? r - 1 : -1, r % w < w - 1 ? r + 1 : -1, r >= w ? r - w : -1,
+					 r + w < n ? r + w : -1};
+			for (int k = 0; k < 4; k++)
+				if (nb[k] >= 0 && unknown[nb[k]] && dist[r] < key[nb[k]])
+					key[nb[k]] = dist[r];
+		}
+		int64_t m = 0;
+		for (;;) {
+			int64_t pick = -1;
+			for (int64_t q = 0; q < n; q++)
+				if (key[q] != INT32_MAX && (pick < 0 || key[q] < key[pick]))
+					pick = q; /* the first of the least: the lowest index */
+			if (pick < 0)
+				break;
+			want[m++] = pick;
+			key[pick] = INT32_MAX;
+		}
+		int64_t k = hallsplit_frontier(w, h, unknown, room, a, dist, got);
+		TEST_CHECK(k == m);
+		for (int64_t i = 0; i < m && i < k; i++)
+			TEST_CHECK(got[i] == want[i]);
+		seen += m;
+		free(want);
+		free(got);
+		free(key);
+		free(dist);
+		free(room);
+		free(unknown);
+	}
+	TEST_CHECK(seen > 1000); /* grids with a frontier occur, not only empty ones */
+}
+
 TEST_CASE(faint_squares_cover_every_thin_stub_read_as_floor)
 {
 	int32_t floor_read = 0, faint = 0;
@@ -194,6 +257,7 @@ int main(void)
 {
 	TEST_RUN(fewest_costly_cells_agrees_with_brute_force);
 	TEST_RUN(fewest_refuses_what_is_not_passable);
+	TEST_RUN(frontier_agrees_with_brute_force);
 	TEST_RUN(faint_squares_cover_every_thin_stub_read_as_floor);
 	return TEST_EXIT();
 }

@@ -87,6 +87,36 @@
  * goal reached has looked at (a reachable cell within GOALS_LOOK of it), and
  * judges the corner again on return, at most HALL_LOOKS looks a task. A look only
  * adds what the eye saw: the claim is still made by hs_beaten's rule alone.
+ * CLOSED (task (i); corner25). The watershed takes the unseen for space, so a wall
+ * of the start's room never seen lets the room run on into the unseen, and beyond
+ * it into any room; a door between it and floor seen beyond may then be no door by
+ * the verdict's ratio, the start's room (narrower than what it joins) flooding
+ * into its neighbour (random g241: 16 squares of the start room's far wall never
+ * seen; g41, g266 likewise). The fewest-unseen way of LOOKING runs through that
+ * door over floor seen, and its looks went to the beating floor itself, square by
+ * square, never to the wall that decides. So, before LOOKING, the watershed is
+ * restated once more with every square never seen taken for wall: when on it Utak
+ * is in the start's room and no floor seen in that room beats his square by more
+ * than the slack, the doubt owes to the unseen, and he goes to look at the
+ * never-seen square beside that closed room nearest him by steps
+ * (hallsplit_frontier) not looked at from a goal reached, from a reachable cell
+ * within GOALS_LOOK of it, within HALL_LOOKS (one budget with LOOKING), and
+ * judges again on return. The claim is still made by hs_beaten's rule alone, on
+ * the open watershed: the closed one only chooses where to look.
+ * FACES (task (i); corner25). The other way the model errs about a door is a wall
+ * seen only coarsely and placed a square or more into the room (an object beside
+ * it joined to it by a coarse cell reads as wall too): the room then reads
+ * narrower than it is, its peak clearance under twice the door's, and the door
+ * no door (random g291: the start room 15 wide, its door 7, read 14 wide where an
+ * object by the wall joined it). So, when CLOSED finds nothing to look at, the
+ * watershed is restated with every verge square not seen in the fovea that has
+ * floor seen beside it (a coarse face) taken for floor; when on it the claim
+ * holds, he looks at the face square beside the start's room on that map nearest
+ * him, as CLOSED does, within HALL_FACE_LOOKS; the fovea places the wall, or shows
+ * the floor, and the claim is judged again by hs_beaten alone.
+ * COST (corner25, one run each): of the 320 random and perturbed corner runs, 4
+ * change: random g41, g241, g266, g291 "go ne-corner" lose the doubt (107 -> 94,
+ * 62 -> 27, 129 -> 180, 205 -> 83 cycles), and g16 takes 72 cycles for 68.
  * FAINT (task (i); stub13). A free-standing stub one to three squares thick seen
  * only by the 4 x 4 and 2 x 2 cells that straddle it reads as floor (its squares
  * below half of each cell), so no node stands for it and the rule above never
@@ -128,11 +158,17 @@
 #define HALL_TRIPS 8
 #define HALL_BLOBS HALL_TRIPS
 /* Looks a task, at most, at unseen squares that alone join floor that beats the
- * corner to the start's room by the verdict's watershed (LOOKING below). */
+ * corner to the start's room by the verdict's watershed (LOOKING, CLOSED and
+ * FACES below). */
 #define HALL_LOOKS 4
 /* Looks a task, at most, at faint squares that, taken for wall, part the hall
  * (FAINT above). */
 #define HALL_FAINT_LOOKS 4
+/* Looks a task, at most, at coarse faces of the start room's walls (FACES above),
+ * a budget of their own: spent from HALL_LOOKS, they left LOOKING none on
+ * variants of random g291 where LOOKING's look decides (the door made 8 wide and
+ * moved: 132 cycles claimed before, a doubt after four looks at faces). */
+#define HALL_FACE_LOOKS 2
 
 /* A hall doubt being settled by touch (SETTLING above); in the Controller. */
 typedef struct HallRun {
@@ -147,6 +183,7 @@ typedef struct HallRun {
 	bool look;		/* the trip on is a look at unseen squares (LOOKING), not a touch */
 	int looks;		/* such looks begun this task */
 	int faint_looks;	/* looks begun this task at faint squares (FAINT) */
+	int face_looks;		/* looks begun this task at coarse faces (FACES) */
 	char note[200];		/* a trip begun, for the trace (controller.c prints it) */
 	char why[200];		/* HALL_DOUBT: the doubt's words */
 } HallRun;
@@ -203,6 +240,12 @@ void hallsplit_arrive(struct Controller *c);
  * O(w h) time (0-1 breadth-first search), 20 bytes a cell while it works. */
 int32_t hallsplit_fewest(int32_t w, int32_t h, const bool *pass, const bool *costly, int64_t u, int64_t b,
 			 int64_t *from);
+/* hallsplit_frontier(w, h, unknown, room, a, dist, out): CLOSED and FACES: the cells q with
+ * unknown[q] that have a 4-neighbour r in room a (room[r] == a) reachable
+ * (dist[r] >= 0), each once, in order of the least such dist[r], then of q; their
+ * count, the cells in out (w h of them). O(w h log(w h)). */
+int64_t hallsplit_frontier(int32_t w, int32_t h, const bool *unknown, const int32_t *room, int32_t a,
+			   const int32_t *dist, int64_t *out);
 /* hallsplit_hidden_look(c): task (i), at the corner, where floor seen that beats it
  * may join the start's room by squares seen only coarsely (roomdoubt_hidden), a
  * look at them first (roomdoubt_hidden_look: c->room_look_at, kept by goals.c
