@@ -728,6 +728,8 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	}
 	if (round_recognise_home(c))
 		c->model.report.corrected = true; /* placed by the first impression: re-plan */
+	c->fix[c->fix_next] = c->model.report.corrected ? vec2_sub(c->model.utak, c->model.report.predicted) : vec2(0, 0);
+	c->fix_next = (c->fix_next + 1) % CONTROLLER_FIXES;
 	path_push(&c->trail, c->model.utak);
 	objects_feel(c);
 	int32_t seen = worldmodel_known_squares(&c->model);

@@ -227,6 +227,12 @@ bool round_recognise_home(Controller *c)
 	return true;
 }
 
+/* Corrections this large (squares) along one axis that turn back ROUND_FIX_TURNS
+ * times within the last CONTROLLER_FIXES impressions put the place along it in
+ * doubt. */
+#define ROUND_FIX_FLIP 0.5
+#define ROUND_FIX_TURNS 2
+
 bool round_home_doubt(const Controller *c, char *why, size_t size)
 {
 	double e = worldmodel_motion_error(&c->model);
@@ -239,12 +245,40 @@ bool round_home_doubt(const Controller *c, char *why, size_t size)
 	double sd[2];
 	for (int a = 0; a < 2; a++)
 		sd[a] = placed[a] ? 0 : e * sqrt(c->model.unplaced[a]);
+	/* Corrected one way and back again, again and again, along an axis in the last
+	 * moves: the impressions fit two places there, and whichever he stands at
+	 * places him (worlds/west.w under noise, seed 1: each move home set him a
+	 * square one way, the next a square the other, and he claimed home 2 squares
+	 * off). Two such turns in a row, at least: he may be off by their spread. */
+	bool flip[2] = {false, false};
+	for (int b = 0; b < 2; b++) {
+		int turns = 0;
+		double prev = 0, lo = 0, hi = 0;
+		for (int i = 0; i < CONTROLLER_FIXES; i++) {
+			Vec2 f = c->fix[(c->fix_next + i) % CONTROLLER_FIXES];
+			double v = b ? f.y : f.x;
+			if (fabs(v) < ROUND_FIX_FLIP)
+				continue;
+			turns += prev * v < 0;
+			prev = v;
+			lo = fmin(lo, v);
+			hi = fmax(hi, v);
+		}
+		if (turns >= ROUND_FIX_TURNS && hi - lo > sd[b]) {
+			sd[b] = hi - lo;
+			flip[b] = true;
+		}
+	}
 	int a = sd[1] > sd[0];
 	if (sd[a] <= CONTROLLER_HOME_SD)
 		return false;
-	snprintf(why, size,
-		 "motion errs by about %.2f squares a square, and nothing seen since his last moves places him %s: "
-		 "he may be %.1f off",
-		 e, a ? "ahead or behind" : "left or right", sd[a]);
+	if (flip[a])
+		snprintf(why, size, "what he saw set him one way and back again %s in his last moves: he may be %.1f off",
+			 a ? "ahead and behind" : "left and right", sd[a]);
+	else
+		snprintf(why, size,
+			 "motion errs by about %.2f squares a square, and nothing seen since his last moves places him %s: "
+			 "he may be %.1f off",
+			 e, a ? "ahead or behind" : "left or right", sd[a]);
 	return true;
 }

@@ -125,6 +125,8 @@ typedef enum ControllerPhase {
  * colour on (objects_feel), and squares a tug has been tried at (tug.h), at most:
  * a few per object against a wall. */
 #define CONTROLLER_FELT_SQUARES 64
+/* Corrections of Utak's place remembered (round.c: the last this many impressions). */
+#define CONTROLLER_FIXES 8
 
 typedef struct Controller {
 	Task task;
@@ -233,6 +235,11 @@ typedef struct Controller {
 	 * tug has been tried at, each at most once (tug.h). */
 	int32_t felt_x[CONTROLLER_FELT_SQUARES], felt_y[CONTROLLER_FELT_SQUARES];
 	int felt_squares;
+	/* The corrections of Utak's place the last CONTROLLER_FIXES impressions made
+	 * (believed less predicted; 0 where none), a ring from fix_next (round.c,
+	 * round_home_doubt). */
+	Vec2 fix[CONTROLLER_FIXES];
+	int fix_next;
 	/* Squares of corners of the wall touch has felt B on (wallbump.h). */
 	int32_t wall_felt_x[CONTROLLER_FELT_SQUARES], wall_felt_y[CONTROLLER_FELT_SQUARES];
 	int wall_felt_squares;
