@@ -38,6 +38,7 @@
 #include "utak/mind/pushclear.h"
 #include "utak/mind/pushseen.h"
 #include "utak/mind/pushturn.h"
+#include "utak/mind/wallbump.h"
 #include "utak/mind/roomdoubt.h"
 #include "utak/mind/shape.h"
 #include "utak/plan/cspace.h"
@@ -558,6 +559,11 @@ void push_seat_finish(Controller *c)
 			 task_corner_name(c->task.corner), task_shape_name(c->task.shape));
 	} else if (goals_corner_hidden(c) || held_room_split(c, short_by)) {
 		/* failed, with his doubt */
+	} else if (wallbump_in_corner(c, short_by + goals_subject_score(c), &at)) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: a corner of the wall toward it, at (%.1f, %.1f), not felt, may be one of an object pressed into it (wallbump.h)",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
 	} else if (c->doubt[0]) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why, "Utak doubts the object he pushed into the %s is the %s: %s",

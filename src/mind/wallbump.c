@@ -191,3 +191,55 @@ void wallbump_feel(Controller *c)
 			objects_note_square(c->bump_tried_x, c->bump_tried_y, &c->bump_tried, x, y);
 	}
 }
+
+/* held_at(c, x, y): square (x, y) is one of the held object's (Utak pushing it). */
+static bool held_at(const Controller *c, int32_t x, int32_t y)
+{
+	const WorldModel *m = &c->model;
+	int32_t ux, uy;
+	worldmodel_utak_square(m, &ux, &uy);
+	for (int32_t k = 0; k < m->held_count && m->holding; k++)
+		if (ux + m->held_dx[k] == x && uy + m->held_dy[k] == y)
+			return true;
+	return false;
+}
+
+/* The held object's squares taken for floor (it moves, and was floor's before it
+ * came), wall and floor as above elsewhere. */
+static bool wall_h(const Controller *c, int32_t x, int32_t y)
+{
+	return !held_at(c, x, y) && wall(c, x, y);
+}
+
+static bool floor_h(const Controller *c, int32_t x, int32_t y)
+{
+	return held_at(c, x, y) || floor_at(c, x, y);
+}
+
+/* corner_h(c, x, y, dx, dy): corner, the held squares taken for floor. */
+static bool corner_h(const Controller *c, int32_t x, int32_t y, int dx, int dy)
+{
+	return wall_h(c, x, y) && floor_h(c, x + dx, y) && floor_h(c, x, y + dy) && floor_h(c, x + dx, y + dy) &&
+	       wall_h(c, x - dx, y) && floor_h(c, x - dx, y + dy) && wall_h(c, x, y - dy) && floor_h(c, x + dx, y - dy);
+}
+
+bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at)
+{
+	const WorldModel *m = &c->model;
+	if (m->seen_count == 0 || best == INT64_MIN)
+		return false;
+	/* The corner's direction: the sign of each axis in its score. */
+	int sx = goals_corner_score(c->task.corner, 1, 0) > goals_corner_score(c->task.corner, 0, 0) ? 1 : -1;
+	int sy = goals_corner_score(c->task.corner, 0, 1) > goals_corner_score(c->task.corner, 0, 0) ? 1 : -1;
+	for (int32_t y = m->seen_y0; y <= m->seen_y1; y++)
+		for (int32_t x = m->seen_x0; x <= m->seen_x1; x++) {
+			/* Its body (away from the floor) toward the corner, and near it. */
+			if (!corner_h(c, x, y, -sx, -sy) || settled(c, x, y, -sx, -sy) ||
+			    goals_corner_score(c->task.corner, x, y) < best - 2 * WALLBUMP_MAX_SIDE ||
+			    !goals_in_start_room(c, &(Vec2){x - sx + 0.5, y - sy + 0.5}, 1))
+				continue;
+			*at = goals_centre(x, y);
+			return true;
+		}
+	return false;
+}

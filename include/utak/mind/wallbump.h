@@ -52,6 +52,16 @@ bool wallbump_within(const Controller *c, Vec2 from, double d, Vec2 *at, bool *o
  * WALLBUMP_TRIPS places a task are set off for (wallbump_going). */
 bool wallbump_look(const Controller *c, const int32_t *dist, Vec2 from, double d, Vec2 *goal);
 
+/* wallbump_in_corner(c, best, at): a corner of the wall not felt B whose square,
+ * its body away from the floor, lies toward the task's corner (the corner of an
+ * object pressed into it) within 2 WALLBUMP_MAX_SIDE of the room's best score
+ * `best`, beside floor of the start's room; its centre in *at. WHY: the judge
+ * counts an object's squares as the room's (judge.h), and an object pressed into
+ * the corner reads as the wall: a square pushed against it stops short of the
+ * judge's corner, and Utak, behind the square, cannot feel what it presses on
+ * (push.c, push_seat_finish: a doubt). */
+bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at);
+
 /* wallbump_going(c, goal): goals.c sets off for a place wallbump_look chose; a
  * place other than the last counts one trip of WALLBUMP_TRIPS. */
 void wallbump_going(Controller *c, Vec2 goal);
