@@ -38,13 +38,39 @@ static bool floor_at(const Controller *c, int32_t x, int32_t y)
 	return exact(&c->model, x, y, 0.0f);
 }
 
-/* corner(c, x, y, dx, dy): (x, y) is a wall square with floor at x + dx, at y + dy
- * and on the diagonal between, and a face of 2 squares of wall each way: (x - dx,
- * y) with floor at y + dy, (x, y - dy) with floor at x + dx. */
+/* held_at(c, x, y): square (x, y) is one of the held object's (Utak pushing it). */
+static bool held_at(const Controller *c, int32_t x, int32_t y)
+{
+	const WorldModel *m = &c->model;
+	int32_t ux, uy;
+	worldmodel_utak_square(m, &ux, &uy);
+	for (int32_t k = 0; k < m->held_count && m->holding; k++)
+		if (ux + m->held_dx[k] == x && uy + m->held_dy[k] == y)
+			return true;
+	return false;
+}
+
+/* corner_of(c, x, y, dx, dy, held_floor): (x, y) is a wall square with floor at x +
+ * dx, at y + dy and on the diagonal between, and a face of 2 squares of wall each
+ * way: (x - dx, y) with floor at y + dy, (x, y - dy) with floor at x + dx. With
+ * held_floor the held object's squares are taken for floor (it moves, and was
+ * floor's before it came: wallbump_in_corner). */
+static bool corner_of(const Controller *c, int32_t x, int32_t y, int dx, int dy, bool held_floor)
+{
+	const int32_t wx[3] = {x, x - dx, x}, wy[3] = {y, y, y - dy};
+	const int32_t fx[5] = {x + dx, x, x + dx, x - dx, x + dx}, fy[5] = {y, y + dy, y + dy, y + dy, y - dy};
+	for (int i = 0; i < 3; i++)
+		if (!wall(c, wx[i], wy[i]) || (held_floor && held_at(c, wx[i], wy[i])))
+			return false;
+	for (int i = 0; i < 5; i++)
+		if (!floor_at(c, fx[i], fy[i]) && !(held_floor && held_at(c, fx[i], fy[i])))
+			return false;
+	return true;
+}
+
 static bool corner(const Controller *c, int32_t x, int32_t y, int dx, int dy)
 {
-	return wall(c, x, y) && floor_at(c, x + dx, y) && floor_at(c, x, y + dy) && floor_at(c, x + dx, y + dy) &&
-	       wall(c, x - dx, y) && floor_at(c, x - dx, y + dy) && wall(c, x, y - dy) && floor_at(c, x + dx, y - dy);
+	return corner_of(c, x, y, dx, dy, false);
 }
 
 static bool felt_wall(const Controller *c, int32_t x, int32_t y)
@@ -169,58 +195,22 @@ void wallbump_feel(Controller *c)
 	worldmodel_utak_square(&c->model, &ux, &uy);
 	for (int i = 0; i < TOUCH_CELLS; i++) {
 		int32_t x = ux + goals_touch_offset[i][0], y = uy + goals_touch_offset[i][1];
-		if (c->impression.touch[i] != 'B' || !wall(c, x, y))
-			continue;
-		/* A square of some corner: the corner itself or the next of a face. */
-		bool part = false;
-		for (int dir = 0; dir < 4 && !part; dir++) {
+		/* A corner square within touch's reach is tried, whatever it showed: a
+		 * trip to it is not made again (a letter leaves the doubt standing). B on
+		 * a square of some corner (the corner itself or the next of a face) is
+		 * wall felt. */
+		bool any = false, part = false;
+		for (int dir = 0; dir < 4; dir++) {
 			int dx = dir & 1 ? 1 : -1, dy = dir & 2 ? 1 : -1;
-			part = corner(c, x, y, dx, dy) || corner(c, x + dx, y, dx, dy) || corner(c, x, y + dy, dx, dy);
+			bool here = corner(c, x, y, dx, dy);
+			any |= here;
+			part |= here || corner(c, x + dx, y, dx, dy) || corner(c, x, y + dy, dx, dy);
 		}
-		if (part)
+		if (part && c->impression.touch[i] == 'B' && wall(c, x, y))
 			objects_note_square(c->wall_felt_x, c->wall_felt_y, &c->wall_felt_squares, x, y);
-	}
-	/* Every corner square within touch's reach is tried, whatever it showed: a
-	 * trip to it is not made again (a letter leaves the doubt standing). */
-	for (int i = 0; i < TOUCH_CELLS; i++) {
-		int32_t x = ux + goals_touch_offset[i][0], y = uy + goals_touch_offset[i][1];
-		bool any = false;
-		for (int dir = 0; dir < 4 && !any; dir++)
-			any = corner(c, x, y, dir & 1 ? 1 : -1, dir & 2 ? 1 : -1);
 		if (any)
 			objects_note_square(c->bump_tried_x, c->bump_tried_y, &c->bump_tried, x, y);
 	}
-}
-
-/* held_at(c, x, y): square (x, y) is one of the held object's (Utak pushing it). */
-static bool held_at(const Controller *c, int32_t x, int32_t y)
-{
-	const WorldModel *m = &c->model;
-	int32_t ux, uy;
-	worldmodel_utak_square(m, &ux, &uy);
-	for (int32_t k = 0; k < m->held_count && m->holding; k++)
-		if (ux + m->held_dx[k] == x && uy + m->held_dy[k] == y)
-			return true;
-	return false;
-}
-
-/* The held object's squares taken for floor (it moves, and was floor's before it
- * came), wall and floor as above elsewhere. */
-static bool wall_h(const Controller *c, int32_t x, int32_t y)
-{
-	return !held_at(c, x, y) && wall(c, x, y);
-}
-
-static bool floor_h(const Controller *c, int32_t x, int32_t y)
-{
-	return held_at(c, x, y) || floor_at(c, x, y);
-}
-
-/* corner_h(c, x, y, dx, dy): corner, the held squares taken for floor. */
-static bool corner_h(const Controller *c, int32_t x, int32_t y, int dx, int dy)
-{
-	return wall_h(c, x, y) && floor_h(c, x + dx, y) && floor_h(c, x, y + dy) && floor_h(c, x + dx, y + dy) &&
-	       wall_h(c, x - dx, y) && floor_h(c, x - dx, y + dy) && wall_h(c, x, y - dy) && floor_h(c, x + dx, y - dy);
 }
 
 bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at)
@@ -234,7 +224,7 @@ bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at)
 	for (int32_t y = m->seen_y0; y <= m->seen_y1; y++)
 		for (int32_t x = m->seen_x0; x <= m->seen_x1; x++) {
 			/* Its body (away from the floor) toward the corner, and near it. */
-			if (!corner_h(c, x, y, -sx, -sy) || settled(c, x, y, -sx, -sy) ||
+			if (!corner_of(c, x, y, -sx, -sy, true) || settled(c, x, y, -sx, -sy) ||
 			    goals_corner_score(c->task.corner, x, y) < best - 2 * WALLBUMP_MAX_SIDE ||
 			    !goals_in_start_room(c, &(Vec2){x - sx + 0.5, y - sy + 0.5}, 1))
 				continue;
