@@ -37,6 +37,7 @@
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/pushseen.h"
+#include "utak/mind/pushslant.h"
 #include "utak/mind/pushturn.h"
 #include "utak/mind/wallbump.h"
 #include "utak/mind/roomdoubt.h"
@@ -528,8 +529,9 @@ void push_seat_finish(Controller *c)
 {
 	if (c->phase != PHASE_SEAT)
 		return; /* squared up, the push into the corner goes on (pushturn.h) */
-	int64_t short_by = goals_corner_shortfall(c);
+	int64_t short_by = goals_corner_shortfall(c), bound;
 	Vec2 at = c->model.utak;
+	double deg, width;
 	if (!push_held_is_task_shape(c)) {
 		/* What came along is not what the task named: another object touching
 		 * it was grasped, or the model lost part of it. */
@@ -545,6 +547,13 @@ void push_seat_finish(Controller *c)
 	else if (pushturn_begin(c)) {
 		/* Within the slack by his model, but held at a slant: squared up
 		 * first (pushturn.h), and judged again after. */
+	} else if (pushslant_short(c, &deg, &width, &bound)) {
+		/* Still at a slant: seated, it touches each wall with a vertex and
+		 * stays short by geometry, whatever the held squares say (pushslant.h). */
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: it reads %.0f degrees off the walls, at least %.1f wide, and not squared up: seated at that slant it stays at least %lld short",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), deg, width, (long long)bound);
 	} else if (pushseen_check(c, short_by, &at)) {
 		/* The held squares that reach the corner, by the model, are not all
 		 * the last impression establishes (pushseen.h). */

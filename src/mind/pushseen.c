@@ -51,8 +51,10 @@ bool pushseen_check(const Controller *c, int64_t short_by, Vec2 *at)
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
 	/* The best corner score of the held squares the impression establishes,
-	 * against the best floor seen in the start's room (got + short_by). */
-	int64_t got = goals_subject_score(c), best = got + short_by, est = INT64_MIN;
+	 * against the best floor seen in the start's room (got + short_by) or, when
+	 * the held set reaches beyond it, the held set's own best (got): those of
+	 * its squares the eye has not shown may be floor (pushseen.h). */
+	int64_t got = goals_subject_score(c), best = got + (short_by > 0 ? short_by : 0), est = INT64_MIN;
 	for (int32_t k = 0; k < m->held_count; k++) {
 		int32_t dx = m->held_dx[k], dy = m->held_dy[k], i = eye_cell_at(dx, dy);
 		int64_t v = goals_corner_score(c->task.corner, ux + dx, uy + dy);

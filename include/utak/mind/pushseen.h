@@ -32,8 +32,19 @@ bool pushseen_forced(int level, int32_t n);
 /* pushseen_check(c, short_by, at): after seating, whether the last impression
  * fails to establish that the held object reaches within CONTROLLER_CORNER_SLACK of
  * the corner (short_by: goals_corner_shortfall, by all the held squares): true
- * when the held squares it establishes (pushseen_forced) fall short of the best
- * floor seen in the start's room by more than the slack, or it establishes none;
+ * when the held squares it establishes (pushseen_forced) fall short by more than
+ * the slack of the best floor seen in the start's room or of the held square the
+ * model has farthest toward the corner, or it establishes none. WHY the second:
+ * after a turn the held set is a guess (heldobject.c wm_refind_held), and a
+ * square of it the eye has not shown may be floor that beats the object; a square
+ * 8 wide turned 45 degrees, squared up and pushed into a corner, kept two columns
+ * the eye saw only in 4 x 4 cells, the best floor the model knew lay behind them,
+ * and Utak claimed it 2 short (tests/worlds/turned-square-push.w). The cost: the
+ * far squares of an object 10 wide, seen from behind it, lie in 4 x 4 cells,
+ * which establish nothing (a 4 x 4 cell at level 7 leaves one square floor, and
+ * counting the second best held square of such a cell gave the false success
+ * back: the cell's other occupied squares were the wall's), so such a push is
+ * doubted (tests/golden/big-square-push);
  * at is then set to the held square the model has nearest the corner. Holding
  * nothing (the subject is Utak's own square) it is false. */
 bool pushseen_check(const Controller *c, int64_t short_by, Vec2 *at);
