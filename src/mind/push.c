@@ -22,7 +22,10 @@
  * only coarsely or in the fovea), taken for wall, may part the start's hall from
  * all of them, nor may any set of faint squares (hallsplit.h FAINT, as task (i)
  * asks of Utak: held_room_split); the survey does not yet make (i)'s looks; and only on
- * the held squares the last impression shows whole (pushseen.h). Seated
+ * the held squares the last impression shows whole (pushseen.h), and only when
+ * no square touch felt a letter on, read by the eye as wall, lies nearer the
+ * corner than the whole held object (pushseen_felt_object: an object pressed into
+ * the corner, felt while surveying it, whose squares the judge counts). Seated
  * short, with another object in the way, Utak moves it out of the way first
  * (pushclear.h). */
 #include "utak/mind/push.h"
@@ -573,6 +576,12 @@ void push_seat_finish(Controller *c)
 		snprintf(c->why, sizeof c->why,
 			 "Utak cannot tell the %s is in the %s: a corner of the wall toward it, at (%.1f, %.1f), not felt, may be one of an object pressed into it (wallbump.h)",
 			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y);
+	} else if (pushseen_felt_object(c, &at)) {
+		c->phase = PHASE_FAILED;
+		snprintf(c->why, sizeof c->why,
+			 "Utak cannot tell the %s is in the %s: touch felt an object at (%.1f, %.1f), nearer the corner than the %s, that the eye reads as wall: its squares, the room's for the corner, may reach farther into it",
+			 task_shape_name(c->task.shape), task_corner_name(c->task.corner), at.x, at.y,
+			 task_shape_name(c->task.shape));
 	} else if (c->doubt[0]) {
 		c->phase = PHASE_FAILED;
 		snprintf(c->why, sizeof c->why, "Utak doubts the object he pushed into the %s is the %s: %s",

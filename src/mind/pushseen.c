@@ -1,7 +1,7 @@
-/* pushseen.c - what the eye establishes of a pushed object's place before Utak
- * claims it in a corner (paper 3.4.1 the gray levels, 3.5 the disparity of
- * predicted and actual impressions, 2.3 task (v)). CONTROLLER SIDE: the impression
- * and the world model only. See pushseen.h.
+/* pushseen.c - what the eye and touch establish of a pushed object's place before
+ * Utak claims it in a corner (paper 3.4.1 the gray levels, 3.5 the disparity of
+ * predicted and actual impressions, 3.4.2 touch, 2.3 task (v)). CONTROLLER SIDE:
+ * the impression, touch and the world model only. See pushseen.h.
  *
  * WHY: the held object's squares are offsets from Utak's square, carried by his own
  * motion and put down where the impression fits them best (heldobject.c). Under
@@ -13,7 +13,12 @@
  * squares were occupied (adversarial worlds with a pier near the corner, --noise
  * 0.05: tests/worlds/push-pier-noise.w seed 2 and 4 more of 600 runs), and once with 4 held
  * squares in a cell showing 1. The claim now rests only on held squares the last
- * impression leaves no room to be floor. */
+ * impression leaves no room to be floor.
+ *
+ * And what touch established (pushseen_felt_object, paper 3.4.2: an occupied set
+ * joined to the verge is ambiguous, and only touch's colour tells an object
+ * leaning on the wall from the wall): no object felt beyond the held one toward
+ * the corner. */
 #include "utak/mind/pushseen.h"
 
 #include <stdlib.h>
@@ -67,4 +72,71 @@ bool pushseen_check(const Controller *c, int64_t short_by, Vec2 *at)
 			est = v;
 	}
 	return est == INT64_MIN || best - est > CONTROLLER_CORNER_SLACK;
+}
+
+bool pushseen_beyond(Corner k, const int32_t *hx, const int32_t *hy, int32_t nh, int32_t x,
+                     int32_t y)
+{
+	if (nh <= 0)
+		return false;
+	int64_t v = goals_corner_score(k, x, y);
+	for (int32_t i = 0; i < nh; i++)
+		if (goals_corner_score(k, hx[i], hy[i]) >= v)
+			return false;
+	return true;
+}
+
+/* held_here(m, ux, uy, x, y): square (x, y) is one of the held object's. */
+static bool held_here(const WorldModel *m, int32_t ux, int32_t uy, int32_t x, int32_t y)
+{
+	for (int32_t k = 0; k < m->held_count; k++)
+		if (ux + m->held_dx[k] == x && uy + m->held_dy[k] == y)
+			return true;
+	return false;
+}
+
+bool pushseen_felt_object(const Controller *c, Vec2 *at)
+{
+	const WorldModel *m = &c->model;
+	if (!m->holding || m->held_count == 0)
+		return false;
+	int32_t ux, uy, n = m->held_count;
+	worldmodel_utak_square(m, &ux, &uy);
+	int32_t *hx = util_alloc((size_t)n, sizeof *hx), *hy = util_alloc((size_t)n, sizeof *hy);
+	for (int32_t k = 0; k < n; k++) {
+		hx[k] = ux + m->held_dx[k];
+		hy[k] = uy + m->held_dy[k];
+	}
+	bool found = false;
+	int64_t best = INT64_MIN;
+	for (int f = 0; f < c->felt_squares; f++) {
+		int32_t x = c->felt_x[f], y = c->felt_y[f];
+		int64_t v = goals_corner_score(c->task.corner, x, y);
+		/* Still occupied to the model (the squares a pushed object was felt on
+		 * before it moved are floor or held now), and nearer the corner than
+		 * the whole held object. */
+		if (v <= best || worldmodel_belief(m, x, y) != BELIEF_OCCUPIED ||
+		    held_here(m, ux, uy, x, y) || !pushseen_beyond(c->task.corner, hx, hy, n, x, y))
+			continue;
+		/* Of the start's room: beside the held object (which held_room_split
+		 * has placed in it), or beside floor of that room. */
+		static const int nb[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+		Vec2 p[4];
+		int32_t np = 0;
+		bool room = false;
+		for (int i = 0; i < 4 && !room; i++) {
+			int32_t qx = x + nb[i][0], qy = y + nb[i][1];
+			room = held_here(m, ux, uy, qx, qy);
+			if (worldmodel_belief(m, qx, qy) == BELIEF_FLOOR)
+				p[np++] = goals_centre(qx, qy);
+		}
+		if (room || goals_in_start_room(c, p, np)) {
+			found = true;
+			best = v;
+			*at = goals_centre(x, y);
+		}
+	}
+	free(hx);
+	free(hy);
+	return found;
 }

@@ -1,8 +1,8 @@
-/* pushseen.h - what the eye establishes of a pushed object's place before Utak
- * claims it in a corner (paper 3.4.1: a cell's gray level is how many of its squares
- * are occupied; 3.5: the held object's place is inferred from his own motion, and
- * the impression is the only check on it; 2.3 task (v)). CONTROLLER SIDE: called by
- * push.c's push_seat_finish.
+/* pushseen.h - what the eye and touch establish of a pushed object's place before
+ * Utak claims it in a corner (paper 3.4.1: a cell's gray level is how many of its
+ * squares are occupied; 3.5: the held object's place is inferred from his own
+ * motion, and the impression is the only check on it; 3.4.2: touch tells an object
+ * from the wall; 2.3 task (v)). CONTROLLER SIDE: called by push.c's push_seat_finish.
  *
  * A cell of the retina over s x s squares has the level round(7 k / s^2) of the k of
  * them occupied: for a fovea cell (1 x 1) and an intermediate one (2 x 2) every k
@@ -48,5 +48,30 @@ bool pushseen_forced(int level, int32_t n);
  * at is then set to the held square the model has nearest the corner. Holding
  * nothing (the subject is Utak's own square) it is false. */
 bool pushseen_check(const Controller *c, int64_t short_by, Vec2 *at);
+
+/* pushseen_beyond(k, hx, hy, nh, x, y): square (x, y) lies farther toward corner k
+ * than every one of the nh squares (hx, hy), by the judge's measure of a corner
+ * (its score, goals_corner_score: x + y with the corner's signs, which orders
+ * squares as the L1 distance to the room's corner point does, reversed). False
+ * with nh 0. */
+bool pushseen_beyond(Corner k, const int32_t *hx, const int32_t *hy, int32_t nh, int32_t x,
+                     int32_t y);
+
+/* pushseen_felt_object(c, at): after seating, whether touch has felt an object's
+ * letter (not the verge's B) on a square the model holds occupied and takes for
+ * wall (c->felt_x, y: objects_feel), not one of the held squares, that lies
+ * farther toward the task's corner than the whole held object (pushseen_beyond)
+ * and borders the held object or floor of the start's room; *at is then the
+ * centre of the one nearest the corner. WHY: the judge counts an object's squares
+ * as the room's (judge.h), and an object pressed into the corner reads, to the
+ * eye, as the wall it leans on (paper 3.4.2): the square pushed against it stops
+ * short of the judge's corner while the model's best floor is beside it. Touch
+ * is the sense that tells an object from the wall, and surveying the corner
+ * before the push (controller.c) brings him beside such an object; how far it
+ * reaches into the corner the eye cannot say, so any square of it beyond the held
+ * object puts the claim in doubt (as corner_felt_object does for task (i)).
+ * Hand-written worlds: a triangle, a brick and a square pressed into the corner
+ * (set 2 h107 and h111, set 3 h231), 5, 3 and 7 short, were claimed. */
+bool pushseen_felt_object(const Controller *c, Vec2 *at);
 
 #endif
