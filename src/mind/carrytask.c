@@ -27,6 +27,7 @@
 
 #include "carryoutline.h"
 #include "utak/base/util.h"
+#include "utak/mind/carryframe.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/nextroom.h"
 #include "utak/mind/objects.h"
@@ -292,9 +293,22 @@ static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
 		 * the square pushed through "the door" was a false success). */
 		bool *past = util_alloc((size_t)s->w * (size_t)s->h, sizeof *past);
 		nextroom_beyond(c, &rm->known, rm, oi, oj, past);
+		/* And in every frame the TABLE may have, and past every cell along a
+		 * face a door square may move to (carryframe.h): the judge breaks ties
+		 * of clearance by the TABLE's order of squares, not Utak's, and a door
+		 * at a wall's end puts its doorway along the face into the far room. */
+		bool *every = util_alloc((size_t)s->w * (size_t)s->h, sizeof *every);
+		bool sized = rm->known.w == s->w && rm->known.h == s->h && s->fixed.w == s->w && s->fixed.h == s->h;
+		if (!sized || carryframe_beyond(&rm->known, oi, oj, every) == 0)
+			memset(past, 0, (size_t)s->w * (size_t)s->h * sizeof *past);
 		for (int32_t at = 0; at < s->w * s->h; at++)
-			if (!past[at])
+			past[at] = past[at] && every[at];
+		if (!sized || carryframe_beyond(&s->fixed, oi, oj, every) == 0)
+			memset(past, 0, (size_t)s->w * (size_t)s->h * sizeof *past);
+		for (int32_t at = 0; at < s->w * s->h; at++)
+			if (!past[at] || !every[at])
 				ct->region.cells[at] = GRID_BLOCKED;
+		free(every);
 		free(past);
 	}
 	carryroom_free(&cr);
