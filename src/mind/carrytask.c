@@ -3,10 +3,9 @@
  * through the world model and the screen only (carrytask.h says what the steps
  * and the goal region are).
  *
- * ALGORITHM. The object's outline is traced from its squares on the screen (crack
- * following, the set on the left, turning left at pinch points: the outer boundary
- * of a 4-connected set, a rectilinear simple polygon that contains the object, as
- * the TABLE's rule covers every square the object meets). The grasp is chosen by
+ * ALGORITHM. The object's outline is traced from its squares on the screen
+ * (carryoutline.h: the outer boundary of their 4-connected set, a rectilinear simple
+ * polygon that contains the object). The grasp is chosen by
  * carry_grasp over the free squares beside the object, nearest Utak first; the
  * carry by carry_plan (carry.h: A* over (x, y, theta) on the screen, resolution
  * complete, the reason in words when no carry exists). While he holds it, the
@@ -26,13 +25,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "carryoutline.h"
 #include "utak/base/util.h"
+#include "utak/mind/carryframe.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/nextroom.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/rooms.h"
 #include "utak/mind/shape.h"
+#include "utak/mind/wallbump.h"
 #include "utak/plan/carry.h"
 #include "utak/plan/pathgraph.h"
 #include "utak/plan/skeleton.h"
@@ -60,127 +62,6 @@ void carrytask_delete(CarryTask *ct)
 		return;
 	grid_free(&ct->region);
 	free(ct);
-}
-
-/* ---- the object's outline ------------------------------------------------------ */
-
-/* ct_in(set, w, h, x, y): square (x, y) of the set (outside: not). */
-static bool ct_in(const uint8_t *set, int32_t w, int32_t h, int32_t x, int32_t y)
-{
-	return x >= 0 && y >= 0 && x < w && y < h && set[y * w + x];
-}
-
-/* ct_hull(set, w, h, out): the convex hull of the set's square corners (Andrew's
- * monotone chain): the fallback for an outline of too many vertices (a slanted
- * edge seen as a staircase). False when it too has too many. */
-static bool ct_hull(const uint8_t *set, int32_t w, int32_t h, Polygon *out)
-{
-	int32_t n = 0;
-	Vec2 *pt = util_alloc((size_t)(w + 1) * (size_t)(h + 1), sizeof *pt);
-	for (int32_t x = 0; x <= w; x++) /* sorted by x, then y */
-		for (int32_t y = 0; y <= h; y++)
-			if (ct_in(set, w, h, x, y) || ct_in(set, w, h, x - 1, y) || ct_in(set, w, h, x, y - 1) ||
-			    ct_in(set, w, h, x - 1, y - 1))
-				pt[n++] = vec2(x, y);
-	Vec2 *hull = util_alloc((size_t)2 * (size_t)n + 2, sizeof *hull);
-	int32_t k = 0;
-	for (int32_t i = 0; i < n; i++) {
-		while (k >= 2 && geom_orient(hull[k - 2], hull[k - 1], pt[i]) <= 0)
-			k--;
-		hull[k++] = pt[i];
-	}
-	for (int32_t i = n - 2, lower = k + 1; i >= 0; i--) {
-		while (k >= lower && geom_orient(hull[k - 2], hull[k - 1], pt[i]) <= 0)
-			k--;
-		hull[k++] = pt[i];
-	}
-	k--; /* the last point is the first */
-	bool ok = k >= 3 && k <= GEOM_MAX_VERTICES;
-	if (ok) {
-		out->count = k;
-		memcpy(out->v, hull, (size_t)k * sizeof *hull);
-	}
-	free(pt);
-	free(hull);
-	return ok;
-}
-
-/* ct_outline(set, w, h, out): the outer boundary of the 4-connected set holding the
- * lowest, leftmost square of set (w x h, one byte a square), counter-clockwise, its
- * vertices where it turns; the hull when that has more than GEOM_MAX_VERTICES. */
-static bool ct_outline(const uint8_t *set, int32_t w, int32_t h, Polygon *out)
-{
-	int32_t sx = -1, sy = -1;
-	for (int32_t at = 0; at < w * h && sx < 0; at++)
-		if (set[at]) {
-			sx = at % w;
-			sy = at / w;
-		}
-	if (sx < 0)
-		return false;
-	/* Directions east, north, west, south; the set lies on the left of each edge.
-	 * At a vertex heading d, the squares ahead are ahead-left and ahead-right. */
-	static const int dxs[4] = {1, 0, -1, 0}, dys[4] = {0, 1, 0, -1};
-	/* The bottom edge of the lowest, leftmost square is on the boundary (nothing
-	 * lies below it), and its left end is a corner. */
-	int32_t x = sx + 1, y = sy, d = 0, n = 0;
-	out->v[n++] = vec2(sx, sy);
-	bool ok = true;
-	while (!(x == sx && y == sy)) {
-		int32_t lx = d == 0 || d == 3 ? x : x - 1, ly = d == 0 || d == 1 ? y : y - 1;
-		int32_t rx = d == 0 || d == 1 ? x : x - 1, ry = d == 1 || d == 2 ? y : y - 1;
-		bool left = ct_in(set, w, h, lx, ly), right = ct_in(set, w, h, rx, ry);
-		int nd = !left ? (d + 1) % 4 : right ? (d + 3) % 4 : d;
-		if (nd != d) {
-			if (n == GEOM_MAX_VERTICES) {
-				ok = false;
-				break;
-			}
-			out->v[n++] = vec2(x, y);
-		}
-		d = nd;
-		x += dxs[d];
-		y += dys[d];
-	}
-	out->count = n;
-	if (!ok || n < 4)
-		return ct_hull(set, w, h, out);
-	return true;
-}
-
-/* ct_object_outline(c, k, out): object node k's outline from its squares on the
- * screen, in screen units. */
-static bool ct_object_outline(const Controller *c, int32_t k, Polygon *out)
-{
-	const Screen *s = &c->screen;
-	uint8_t *set = util_alloc((size_t)s->w * (size_t)s->h, 1);
-	memset(set, 0, (size_t)s->w * (size_t)s->h);
-	for (int32_t at = 0; at < s->w * s->h; at++)
-		set[at] = s->label[at] == k;
-	bool ok = ct_outline(set, s->w, s->h, out);
-	free(set);
-	return ok;
-}
-
-static Polygon ct_moved(const Polygon *p, Vec2 by)
-{
-	Polygon q = *p;
-	for (int32_t i = 0; i < q.count; i++)
-		q.v[i] = vec2_add(q.v[i], by);
-	return q;
-}
-
-static Vec2 ct_centroid(const Polygon *p)
-{
-	double a = 0, cx = 0, cy = 0;
-	for (int32_t i = 0; i < p->count; i++) {
-		Vec2 u = p->v[i], v = p->v[(i + 1) % p->count];
-		double cr = vec2_cross(u, v);
-		a += cr;
-		cx += (u.x + v.x) * cr;
-		cy += (u.y + v.y) * cr;
-	}
-	return fabs(a) > 0 ? vec2(cx / (3 * a), cy / (3 * a)) : p->v[0];
 }
 
 /* ---- the grids ------------------------------------------------------------------ */
@@ -413,9 +294,22 @@ static int32_t ct_region_fix(Controller *c, const RoomMap *rm)
 		 * the square pushed through "the door" was a false success). */
 		bool *past = util_alloc((size_t)s->w * (size_t)s->h, sizeof *past);
 		nextroom_beyond(c, &rm->known, rm, oi, oj, past);
+		/* And in every frame the TABLE may have, and past every cell along a
+		 * face a door square may move to (carryframe.h): the judge breaks ties
+		 * of clearance by the TABLE's order of squares, not Utak's, and a door
+		 * at a wall's end puts its doorway along the face into the far room. */
+		bool *every = util_alloc((size_t)s->w * (size_t)s->h, sizeof *every);
+		bool sized = rm->known.w == s->w && rm->known.h == s->h && s->fixed.w == s->w && s->fixed.h == s->h;
+		if (!sized || carryframe_beyond(&rm->known, oi, oj, every) == 0)
+			memset(past, 0, (size_t)s->w * (size_t)s->h * sizeof *past);
 		for (int32_t at = 0; at < s->w * s->h; at++)
-			if (!past[at])
+			past[at] = past[at] && every[at];
+		if (!sized || carryframe_beyond(&s->fixed, oi, oj, every) == 0)
+			memset(past, 0, (size_t)s->w * (size_t)s->h * sizeof *past);
+		for (int32_t at = 0; at < s->w * s->h; at++)
+			if (!past[at] || !every[at])
 				ct->region.cells[at] = GRID_BLOCKED;
+		free(every);
 		free(past);
 	}
 	carryroom_free(&cr);
@@ -518,7 +412,7 @@ static int ct_printf(char *buf, size_t size, int n, const char *fmt, ...)
 /* ct_side(grasp, shape): which side of the object the grasp is on, by compass. */
 static const char *ct_side(Vec2 at, const Polygon *shape)
 {
-	Vec2 m = ct_centroid(shape), d = vec2_sub(at, m);
+	Vec2 m = carryoutline_centroid(shape), d = vec2_sub(at, m);
 	static const char *const names[8] = {"east", "north-east", "north", "north-west",
 					     "west", "south-west", "south", "south-east"};
 	double a = atan2(d.y, d.x) * 4 / 3.14159265358979323846;
@@ -592,7 +486,7 @@ static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalR
 	CarryTask *ct = c->carry;
 	const Screen *s = &c->screen;
 	Polygon shape;
-	if (!ct_object_outline(c, k, &shape)) {
+	if (!carryoutline_object(c, k, &shape)) {
 		snprintf(out->why, sizeof out->why, "the %s's outline cannot be traced", task_shape_name(c->task.shape));
 		return;
 	}
@@ -663,7 +557,7 @@ static void ct_choose_grasp(Controller *c, int32_t k, const int32_t *dist, GoalR
 	if (chosen >= 0) {
 		ct->grasp_at = screen_to_model(s, at[chosen]);
 		ct->have_grasp = true;
-		ct->held = ct_moved(&shape, vec2(s->x0, s->y0));
+		ct->held = carryoutline_moved(&shape, vec2(s->x0, s->y0));
 		out->found = true;
 		out->goal = ct->grasp_at;
 		ct_plan_text(c, &best.plan, false);
@@ -683,7 +577,7 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		 * told from what it stands against (an L let go in a doorway reads as
 		 * one with the wall): no grasp can be chosen. Said so, rather than
 		 * looking for another object of the shape until the cycles run out. */
-		Vec2 at = ct_centroid(&ct->held);
+		Vec2 at = carryoutline_centroid(&ct->held);
 		snprintf(out->why, sizeof out->why,
 			 "the %s, let go at (%.1f, %.1f), is no longer told from what it stands against: no grasp "
 			 "can be chosen",
@@ -717,6 +611,18 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		/* The object is grasped only when the fovea has seen all of it (as for
 		 * any task's object, objects.h): look closer first. */
 		out->found = true;
+		return true;
+	}
+	if (ct->stage == CARRY_STAGE_FETCH && c->task.shape == SHAPE_SQUARE &&
+	    wallbump_look(c, dist, c->start, goals_distance(centre, c->start), &out->goal)) {
+		/* A corner of the wall nearer the start may be a square pressed against
+		 * it, the task's square then (the nearest to the start, objects.h):
+		 * arriving beside this one, Utak doubts it and sets off to feel that
+		 * corner (controller.c, bump_trip), as any push does (goals.c, whose
+		 * goal this one is: the carry's goals come first). Without it the grasp
+		 * was chosen again where he stood, and the run ended "no progress". */
+		wallbump_going(c, out->goal);
+		out->exploring = out->found = true;
 		return true;
 	}
 	if (ct->stage == CARRY_STAGE_FETCH && ct->have_grasp) {
@@ -840,7 +746,7 @@ static CarryStatus ct_plan_carry(Controller *c, bool *inside, char *why, size_t 
 	screen_build(&c->screen, &c->model, &extra, 1);
 	ct_region_grow(c);
 	const Screen *s = &c->screen;
-	Polygon shape = ct_moved(&ct->held, vec2(-s->x0, -s->y0));
+	Polygon shape = carryoutline_moved(&ct->held, vec2(-s->x0, -s->y0));
 	Grid space, goal;
 	ct_carry_grid(c, -1, &shape, &space);
 	Vec2 at = screen_from_model(s, c->model.utak);
@@ -969,7 +875,7 @@ void carrytask_perceive(Controller *c, const MotorCommand *cmd)
 {
 	CarryTask *ct = c->carry;
 	if (cmd->kind == MOTOR_PUSH) {
-		ct->held = ct_moved(&ct->held, vec2_sub(c->model.utak, ct->issued_from));
+		ct->held = carryoutline_moved(&ct->held, vec2_sub(c->model.utak, ct->issued_from));
 	} else if (cmd->kind == MOTOR_TURN) {
 		/* Turned about the point he turned at; then moved with him by whatever
 		 * the model corrected his position by: the object is held rigidly. */
