@@ -38,6 +38,7 @@
 #include "utak/mind/pushclear.h"
 #include "utak/mind/pushturn.h"
 #include "utak/mind/roomdoubt.h"
+#include "utak/mind/roomlean.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
@@ -352,6 +353,52 @@ static bool corner_felt_object(Controller *c)
 	return false;
 }
 
+/* corner_leaning(c, look): a door the corner's claim rests on whose jamb may be an
+ * object (roomlean.h): with look, true when a jamb nearby is to be touched first
+ * (c->room_look_at beside it); without, true when touch felt an object on one, and
+ * then the task fails with his doubt. */
+static bool corner_leaning(Controller *c, bool look)
+{
+	Vec2 at, from;
+	int32_t *dist = look ? utak_reach(c) : NULL;
+	RoomLean r = roomlean_corner(c, goals_subject_score(c), dist, &at, &from);
+	free(dist);
+	if (look) {
+		if (r == ROOMLEAN_LOOK)
+			c->room_look_at = from;
+		return r == ROOMLEAN_LOOK;
+	}
+	if (r != ROOMLEAN_DOUBT)
+		return false;
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why,
+		 "Utak cannot tell he is in the %s: the door that parts his room from floor that would beat the corner may be no door: touch felt an object's colour on its jamb at (%.1f, %.1f), and objects are space to rooms",
+		 task_corner_name(c->task.corner), at.x, at.y);
+	return true;
+}
+
+/* next_leaning(c, look): as corner_leaning, for "go next-room" at Utak's place
+ * (roomlean_next). */
+static bool next_leaning(Controller *c, bool look)
+{
+	Vec2 at, from;
+	int32_t *dist = look ? utak_reach(c) : NULL;
+	RoomLean r = roomlean_next(c, dist, &at, &from);
+	free(dist);
+	if (look) {
+		if (r == ROOMLEAN_LOOK)
+			c->room_look_at = from;
+		return r == ROOMLEAN_LOOK;
+	}
+	if (r != ROOMLEAN_DOUBT)
+		return false;
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why,
+		 "Utak cannot tell he is in another room: the door that parts him from the room he started in may be no door: touch felt an object's colour on its jamb at (%.1f, %.1f), and objects are space to rooms",
+		 at.x, at.y);
+	return true;
+}
+
 /* bump_trip(c, k): a corner of the wall that may be a square pressed against it,
  * nearer the start than node k, can still be reached and felt (wallbump.h): the
  * claim waits, and the next goal (goals.c) is beside it. */
@@ -389,7 +436,10 @@ static void arrive(Controller *c)
 		return; /* an object in the way of the corner: grasp it, or let it go */
 	switch (c->task.kind) {
 	case TASK_GO_NEXT_ROOM:
-		c->phase = PHASE_DONE;
+		if (next_leaning(c, true))
+			c->room_look = true; /* the next goal: beside a door's jamb, to touch it (roomlean.h) */
+		else if (!next_leaning(c, false))
+			c->phase = PHASE_DONE; /* (next_leaning fails it, with his doubt) */
 		return;
 	case TASK_GO_CORNER:
 		if ((short_by = goals_corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
@@ -404,8 +454,11 @@ static void arrive(Controller *c)
 			; /* not sure of the room: the next goal is a look at the wall between */
 		else if (hallsplit_hidden_look(c))
 			c->room_look = true; /* the next goal: a look at what may join a better floor */
-		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split and corner_felt_object fail it, with his doubt) */
+		else if (corner_leaning(c, true))
+			c->room_look = true; /* the next goal: beside a door's jamb nearby, to touch it (roomlean.h) */
+		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c) &&
+			 !corner_leaning(c, false))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object and corner_leaning fail it, with his doubt) */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

@@ -900,6 +900,11 @@ static bool hidden_floor(const WorldModel *m, int32_t x, int32_t y)
 	return false;
 }
 
+bool roomdoubt_maybe_floor(const WorldModel *m, int32_t x, int32_t y)
+{
+	return hidden_floor(m, x, y);
+}
+
 /* hidden(c, got, at, dist, goal): roomdoubt_hidden; with dist, also a look (*goal,
  * true in *look) at the square that may be floor under a coarse cell, beside the
  * start's room or the room of the floor that beats, nearest Utak and not looked at

@@ -213,4 +213,9 @@ bool roomdoubt_hidden(const Controller *c, int64_t got, Vec2 *at);
  * and O(w h) goals_near for each square kept. */
 bool roomdoubt_hidden_look(const Controller *c, const int32_t *dist, int64_t got, Vec2 *goal);
 
+/* roomdoubt_maybe_floor(m, x, y): square (x, y) is occupied on the model but seen only
+ * coarsely, within a cell less a square of floor seen: it may be floor (the squares
+ * roomdoubt_hidden's optimistic map takes for floor; roomlean.h). */
+bool roomdoubt_maybe_floor(const WorldModel *m, int32_t x, int32_t y);
+
 #endif
