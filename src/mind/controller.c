@@ -30,6 +30,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/carrytask.h"
+#include "utak/mind/doorsure.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/probe.h"
@@ -323,6 +324,28 @@ static bool corner_hall_split(Controller *c)
 	return true;
 }
 
+/* corner_door_sure(c): whether a door the judge may count lies between the start
+ * and Utak's point on some reading the eye leaves open (doorsure.h); if so the next
+ * goal is a look at the squares that can tell (c->room_look), or, with none left,
+ * the task fails with his doubt. */
+static bool corner_door_sure(Controller *c)
+{
+	int32_t *dist = utak_reach(c);
+	DoorSure d = doorsure_corner(c, dist, c->model.utak, &c->room_look_at);
+	free(dist);
+	if (d == DOORSURE_SURE)
+		return false;
+	if (d == DOORSURE_LOOK) {
+		c->room_look = true;
+		return true;
+	}
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why,
+		 "Utak cannot tell he is in the %s: a door the judge may count, by a square or a wall seen only from afar, may part him from the room he started in",
+		 task_corner_name(c->task.corner));
+	return true;
+}
+
 /* corner_felt_object(c): touch feels an object (a letter, not the verge's B) on a
  * square beside Utak that lies farther toward the task's corner than his own; if
  * so the task fails with his doubt. WHY: the judge counts an object's squares as
@@ -404,6 +427,8 @@ static void arrive(Controller *c)
 			; /* not sure of the room: the next goal is a look at the wall between */
 		else if (hallsplit_hidden_look(c))
 			c->room_look = true; /* the next goal: a look at what may join a better floor */
+		else if (corner_door_sure(c))
+			; /* a door the judge may count between: a look first, or his doubt (doorsure.h) */
 		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c))
 			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split and corner_felt_object fail it, with his doubt) */
 		return;
