@@ -4,9 +4,10 @@
 # a false success at 49e82b6 (Utak sure of the corner, the judge: in the next room,
 # or short of the corner of the one room the judge counts); the simulator's judge
 # is the oracle. None may end "(Utak believes it achieved)" with the judge saying
-# failed, and the cases achieved by looking first must stay achieved.
-# Case: THICKNESS DOOR-WIDTH DOOR-X HEADING CORNER WANT (a: achieved, sure or
-# not; h: not a false success).
+# failed (each now ends in his doubt: the judge says failed, he does not claim).
+# And the rule is no blanket doubt: the cases marked a, achieved and claimed at
+# 49e82b6, stay achieved and claimed.
+# Case: THICKNESS DOOR-WIDTH DOOR-X HEADING CORNER [a].
 fails=0
 tmp=${TMPDIR:-/tmp}/utak-doors.$$
 mkdir -p "$tmp"; trap 'rm -rf "$tmp"' EXIT INT TERM
@@ -20,18 +21,24 @@ EOW
 	r=$("$UTAK" -q "$tmp/t.w" "go $corner-corner" 2>&1 | tail -n 1)
 	case "$r" in
 	*"believes it achieved"*) echo "FAIL: th=$th dw=$dw x0=$x0 $h $corner: a false success: $r"; fails=$((fails + 1)) ;;
-	"task: achieved"*) ;;
-	*) [ "$want" = a ] && { echo "FAIL: th=$th dw=$dw x0=$x0 $h $corner: not achieved: $r"; fails=$((fails + 1)); } ;;
+	*"believes it not"*|"task: failed"*) [ "$want" = a ] && { echo "FAIL: th=$th dw=$dw x0=$x0 $h $corner: not claimed: $r"; fails=$((fails + 1)); } ;;
 	esac
 done <<EOC
-1 5 5 north ne h
-1 5 29 east sw h
-1 6 5 south sw h
-1 6 29 north nw h
-2 5 15 east nw a
-2 6 29 east nw a
-3 5 15 east nw a
-3 5 29 north nw a
-3 6 5 south se a
+1 5 5 north ne
+1 5 29 east sw
+1 6 5 south sw
+1 6 29 north nw
+2 5 15 east nw
+2 6 29 east nw
+3 5 15 east nw
+3 5 29 north nw
+3 6 5 south se
+1 3 5 north ne a
+1 4 29 south ne a
+2 4 15 south ne a
+2 6 15 west sw a
+3 3 29 west ne a
+3 5 5 west se a
+3 6 29 north sw a
 EOC
 [ $fails = 0 ]

@@ -324,21 +324,17 @@ static bool corner_hall_split(Controller *c)
 	return true;
 }
 
-/* corner_door_sure(c): whether a door the judge may count lies between the start
- * and Utak's point on some reading the eye leaves open (doorsure.h); if so the next
- * goal is a look at the squares that can tell (c->room_look), or, with none left,
- * the task fails with his doubt. */
-static bool corner_door_sure(Controller *c)
+/* corner_door_doubt(c): whether a door the judge may count lies between the start
+ * and Utak's point, or the start's room may hold a better corner, on some reading
+ * the eye leaves open (doorsure.h); if so the task fails with his doubt. Asked
+ * last, where the claim would be made: it only ever turns a claim into a doubt, at
+ * the same square, so it cannot change the judge's verdict (a look first, tried,
+ * changed the way and the other checks' looks, and made a false success of its
+ * own on a two-room world: doorsure.h). */
+static bool corner_door_doubt(Controller *c)
 {
-	int32_t *dist = utak_reach(c);
-	DoorSure d = doorsure_corner(c, dist, c->model.utak, &c->room_look_at);
-	free(dist);
-	if (d == DOORSURE_SURE)
+	if (doorsure_corner(c, c->model.utak) == DOORSURE_SURE)
 		return false;
-	if (d == DOORSURE_LOOK) {
-		c->room_look = true;
-		return true;
-	}
 	c->phase = PHASE_FAILED;
 	snprintf(c->why, sizeof c->why,
 		 "Utak cannot tell he is in the %s: a door the judge may count, by a square or a wall seen only from afar, may part him from the room he started in",
@@ -427,10 +423,8 @@ static void arrive(Controller *c)
 			; /* not sure of the room: the next goal is a look at the wall between */
 		else if (hallsplit_hidden_look(c))
 			c->room_look = true; /* the next goal: a look at what may join a better floor */
-		else if (corner_door_sure(c))
-			; /* a door the judge may count between: a look first, or his doubt (doorsure.h) */
-		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split and corner_felt_object fail it, with his doubt) */
+		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c) && !corner_door_doubt(c))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object and corner_door_doubt fail it, with his doubt) */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

@@ -163,42 +163,7 @@ static bool coarse(const Controller *c, int64_t k)
 	return e.res > WORLDMODEL_UNSEEN && e.res < WORLDMODEL_RES_FOVEA;
 }
 
-/* mark_unsettled(c, g, room, start, mark): marks (1) each cell seen only coarsely,
- * faint floor or occupied (coarse), within one (8-neighbour) of a door cell of room
- * (free on g, no region), or within one of a cell of the start's region and of a
- * cell of another: the squares whose closer look can change this reading. */
-static void mark_unsettled(const Controller *c, const Grid *g, const int32_t *room, int32_t start, uint8_t *mark)
-{
-	const Screen *s = &c->screen;
-	int32_t w = s->w, h = s->h;
-	for (int32_t j = 0; j < h; j++)
-		for (int32_t i = 0; i < w; i++) {
-			int64_t k = (int64_t)j * w + i;
-			if (mark[k] || !coarse(c, k))
-				continue;
-			if (s->label[k] == SCREEN_SPACE && !faint_cell(&c->model, s, k))
-				continue; /* floor a zero cell read: settled */
-			bool door = false, own = false, other = false;
-			for (int32_t b = j - 1; b <= j + 1; b++)
-				for (int32_t a = i - 1; a <= i + 1; a++) {
-					if (a < 0 || b < 0 || a >= w || b >= h)
-						continue;
-					int64_t q = (int64_t)b * w + a;
-					if (g->cells[q] != GRID_FREE)
-						continue;
-					if (room[q] < 0)
-						door = true;
-					else if (room[q] == start)
-						own = true;
-					else
-						other = true;
-				}
-			if (door || (own && other))
-				mark[k] = 1;
-		}
-}
-
-DoorSure doorsure_corner(Controller *c, const int32_t *dist, Vec2 at, Vec2 *look)
+DoorSure doorsure_corner(const Controller *c, Vec2 at)
 {
 	const Screen *s = &c->screen;
 	int32_t w = s->w, h = s->h, si, sj, pi, pj;
@@ -208,13 +173,12 @@ DoorSure doorsure_corner(Controller *c, const int32_t *dist, Vec2 at, Vec2 *look
 	Grid g;
 	grid_init(&g, w, h, GRID_BLOCKED);
 	int32_t *room = util_alloc((size_t)n, sizeof *room);
-	uint8_t *mark = util_alloc((size_t)n, 1), *jamb = util_alloc((size_t)n, 1);
-	memset(mark, 0, (size_t)n);
+	uint8_t *jamb = util_alloc((size_t)n, 1);
 	memset(jamb, 0, (size_t)n);
 	bool parted = false;
 	int32_t px = s->x0 + pi, py = s->y0 + pj;
 	int64_t here = goals_corner_score(c->task.corner, px, py);
-	for (int reading = 0; reading < 5; reading++) {
+	for (int reading = 0; reading < 5 && !parted; reading++) {
 		bool faint_wall = reading & 1;
 		double slack = reading == 2 || reading == 3 ? DOORSURE_SLACK : 0;
 		memcpy(g.cells, s->fixed.cells, (size_t)n);
@@ -256,50 +220,10 @@ DoorSure doorsure_corner(Controller *c, const int32_t *dist, Vec2 at, Vec2 *look
 			apart |= room[k] == start && s->label[k] != SCREEN_UNKNOWN &&
 				 goals_corner_score(c->task.corner, s->x0 + (int32_t)(k % w), s->y0 + (int32_t)(k / w)) - here >
 				     CONTROLLER_CORNER_SLACK;
-		if (!apart)
-			continue;
-		parted = true;
-		mark_unsettled(c, &g, room, start, mark);
-		if (reading == 4)
-			for (int64_t k = 0; k < n; k++)
-				mark[k] |= jamb[k]; /* the jambs that may lie back: a look settles them */
-	}
-	DoorSure verdict = DOORSURE_SURE;
-	if (parted) {
-		verdict = DOORSURE_DOUBT;
-		/* The reachable cell nearest Utak from which the fovea (offsets -4..3 every
-		 * way, FAINT_FOVEA_REACH) shows a marked square, not a goal reached before
-		 * and not where he stands, within DOORSURE_REACH steps: the look is kept
-		 * until reached (goals.c), and one far off, its way lengthening as the
-		 * unseen fills in, took every cycle left (random g151). */
-		int32_t ui, uj, best = INT32_MAX;
-		goals_cell_of(s, c->model.utak, &ui, &uj);
-		for (int64_t k = 0; k < n && c->doorsure_looks < DOORSURE_LOOKS; k++) {
-			if (dist[k] < 0 || dist[k] >= best || dist[k] > DOORSURE_REACH || k == (int64_t)uj * w + ui)
-				continue;
-			int32_t i = (int32_t)(k % w), j = (int32_t)(k / w);
-			bool shows = false;
-			for (int32_t b = j - FAINT_FOVEA_REACH; b <= j + FAINT_FOVEA_REACH && !shows; b++)
-				for (int32_t a = i - FAINT_FOVEA_REACH; a <= i + FAINT_FOVEA_REACH && !shows; a++)
-					shows = a >= 0 && b >= 0 && a < w && b < h && mark[(int64_t)b * w + a];
-			if (!shows)
-				continue;
-			Vec2 from = goals_centre(s->x0 + i, s->y0 + j);
-			bool visited = false;
-			for (int v = 0; v < c->visited_count && !visited; v++)
-				visited = goals_distance(from, c->visited[v]) < 0.5;
-			if (visited)
-				continue;
-			best = dist[k];
-			*look = from;
-			verdict = DOORSURE_LOOK;
-		}
-		if (verdict == DOORSURE_LOOK)
-			c->doorsure_looks++;
+		parted = apart;
 	}
 	free(jamb);
-	free(mark);
 	free(room);
 	grid_free(&g);
-	return verdict;
+	return parted ? DOORSURE_DOUBT : DOORSURE_SURE;
 }

@@ -162,7 +162,6 @@ typedef struct Controller {
 				   followed from the last look at it (roomdoubt_frontier) */
 	Vec2 room_follow_at;	/* ... that look */
 	bool room_following;	/* ... and it is the current goal, kept until reached */
-	int doorsure_looks;	/* looks taken at squares that may part the corner from the start (doorsure.h) */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];

@@ -34,24 +34,25 @@
  * doorway). On any reading where P is on a door cell, or in another region than
  * S's, or where a free cell of S's region seen (floor or an object) scores more
  * than the verdict's slack above P (the judge's best square of the room), the claim
- * may be the judge's failure.
- * Then he LOOKS: the squares seen only coarsely (faint floor, or occupied) beside a
- * door cell of a reading that doubts, or beside both S's region and another, and
- * the jambs of reading 4, are the ones that can change the verdict (a closer look
- * settles them: the fovea's squares are 0 or 7); he goes to the reachable cell
- * nearest him from which the fovea (FAINT_FOVEA_REACH every way) shows one, not a
- * goal reached before, within DOORSURE_REACH steps, at most DOORSURE_LOOKS a task,
- * and judges the corner again
- * (a look that closes the wall gives the model two rooms, and goals.c then picks
- * the corner of the start's). With no look left, or none to make, he DOUBTS.
- * Space never seen is left to roomdoubt.h and hallsplit.h (a better corner in the
- * unseen is their look).
+ * may be the judge's failure, and he DOUBTS it. Space never seen is left to
+ * roomdoubt.h and hallsplit.h (a better corner in the unseen is their look).
+ * It is asked last (controller.c, corner_door_doubt), where the claim would be
+ * made: it turns a claim into a doubt at the same square and changes nothing else,
+ * so it cannot make a false success. LOOKS TRIED: going first to look, from nearby,
+ * at the squares seen only coarsely that could tell (beside a door cell of a
+ * reading that doubts, or between S's region and another, and the jambs of reading
+ * 4), at most 6 a task, within 60 steps, achieved more (the simplest two-room
+ * worlds: 368 sure of 576 against 266 doubting only) but changed the way and the
+ * other checks' looks, and made a false success of its own (a wall 2 thick at row
+ * 21 with a door 4 wide, facing east, "go nw-corner": 8 short, claimed, where
+ * 49e82b6 doubted); dropped.
  *
  * LIMITS. A wall the model has lost outright (its squares floor read by a zero cell,
  * or placed a square or two off when Utak's believed point slid along it: the
  * simplest worlds' wall 1 thick, heading east, door at 29) is not seen by any
  * reading. The slack is one square on the peak only: a room misread by two squares
- * (a_north in the report: the far room 8 rows for 10) is not caught. A knife-edge
+ * (a wall 1 thick, a door 6 wide at column 5, facing north, "go nw-corner": the far
+ * room read 8 rows for 10) is not caught. A knife-edge
  * door the judge does not count (one room) doubts a corner Utak does reach. */
 #ifndef UTAK_DOORSURE_H
 #define UTAK_DOORSURE_H
@@ -65,29 +66,26 @@
 struct Controller;
 
 #define DOORSURE_SLACK 1.0 /* squares a peak may read short of the judge's */
-#define DOORSURE_LOOKS 6   /* looks a task before the doubt */
 #define DOORSURE_JAMB 3    /* squares a jamb seen only coarsely may lie back */
-#define DOORSURE_REACH 60  /* steps from Utak a look may be, at most */
 
 typedef enum DoorSure {
-	DOORSURE_SURE,	/* one room with the start on every reading */
-	DOORSURE_LOOK,	/* not sure: a look from *look first */
-	DOORSURE_DOUBT	/* not sure, and no look left that can tell */
+	DOORSURE_SURE,	/* one room with the start on every reading, and no better corner in it */
+	DOORSURE_DOUBT	/* not sure */
 } DoorSure;
 
 /* doorsure_watershed(g, slack, room): the judge's watershed (carryroom_watershed)
  * on grid g, each peak counted slack squares more in the door rule (slack 0: the
  * judge's rule). room[i]: the region (one of its cells' indices), -1 for a blocked
- * or door cell. COMPLEXITY: O(w h log(w h)). */
+ * or door cell. COMPLEXITY: O(w h log(w h)). MEMORY: 17 bytes a cell while it works. */
 void doorsure_watershed(const Grid *g, double slack, int32_t *room);
 
 /* doorsure_start_room(g, room, si, sj): the region of the cell nearest (si, sj)
- * (Euclidean, ties by index) that has one; -1 if none. */
+ * (Euclidean, ties by index) that has one; -1 if none. COMPLEXITY: O(w h). */
 int32_t doorsure_start_room(const Grid *g, const int32_t *room, int32_t si, int32_t sj);
 
-/* doorsure_corner(c, dist, at, look): the rule above for Utak's point `at` (model
- * frame) on this cycle's screen; dist: steps from Utak (goals_reach). On
- * DOORSURE_LOOK *look is the point to look from, and the look is counted. */
-DoorSure doorsure_corner(struct Controller *c, const int32_t *dist, Vec2 at, Vec2 *look);
+/* doorsure_corner(c, at): the rule above for Utak's point `at` (model frame) on
+ * this cycle's screen. COMPLEXITY: five watersheds, O(w h log(w h)) each, and
+ * O(w h DOORSURE_JAMB^2) for the jambs. */
+DoorSure doorsure_corner(const struct Controller *c, Vec2 at);
 
 #endif
