@@ -30,6 +30,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/carrytask.h"
+#include "utak/mind/doorsure.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/probe.h"
@@ -324,6 +325,24 @@ static bool corner_hall_split(Controller *c)
 	return true;
 }
 
+/* corner_door_doubt(c): whether a door the judge may count lies between the start
+ * and Utak's point, or the start's room may hold a better corner, on some reading
+ * the eye leaves open (doorsure.h); if so the task fails with his doubt. Asked
+ * last, where the claim would be made: it only ever turns a claim into a doubt, at
+ * the same square, so it cannot change the judge's verdict (a look first, tried,
+ * changed the way and the other checks' looks, and made a false success of its
+ * own on a two-room world: doorsure.h). */
+static bool corner_door_doubt(Controller *c)
+{
+	if (doorsure_corner(c, c->model.utak) == DOORSURE_SURE)
+		return false;
+	c->phase = PHASE_FAILED;
+	snprintf(c->why, sizeof c->why,
+		 "Utak cannot tell he is in the %s: a door the judge may count, by a square or a wall seen only from afar, may part him from the room he started in",
+		 task_corner_name(c->task.corner));
+	return true;
+}
+
 /* corner_felt_object(c): touch feels an object (a letter, not the verge's B) on a
  * square beside Utak that lies farther toward the task's corner than his own; if
  * so the task fails with his doubt. WHY: the judge counts an object's squares as
@@ -457,8 +476,8 @@ static void arrive(Controller *c)
 		else if (corner_leaning(c, true))
 			c->room_look = true; /* the next goal: beside a door's jamb nearby, to touch it (roomlean.h) */
 		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c) &&
-			 !corner_leaning(c, false))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object and corner_leaning fail it, with his doubt) */
+			 !corner_leaning(c, false) && !corner_door_doubt(c))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object, corner_leaning and corner_door_doubt fail it, with his doubt) */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

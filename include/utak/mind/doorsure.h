@@ -1,0 +1,91 @@
+/* doorsure.h - a corner claimed only where every reading of the model the eye leaves
+ * open puts it in the starting room (paper 2.3 task (i); issue 13, "a corner is the
+ * corner of Utak's starting room, never of the next"). CONTROLLER SIDE: it reads
+ * the screen and the world model's evidence, nothing of the TABLE.
+ *
+ * WHY. The judge (doc/verdicts.md (i)) counts a door wherever both sides' peak
+ * clearance p satisfies p >= 2 c and p >= c + 2 (c the door square's clearance,
+ * chamfer, centre to centre). Two things the eye does make Utak's model say "one
+ * room" where the judge says two:
+ *  - a wall 1 thick seen only from afar: a 4 x 4 cell over it holds 4 of its 16
+ *    squares, level 2, and the world model spreads that over all 16 as floor below
+ *    half occupied (worldmodel.c). Only a zero cell is floorspace (paper 3.4.2): such
+ *    FAINT floor (faint.h, faint_cell) may be the wall. With it read as floor the
+ *    two rooms are one, and "go nw-corner" walked through the door into the next
+ *    room's corner and claimed it (the simplest two-room worlds: 79 false successes
+ *    in 576 runs);
+ *  - a door 5 or 6 wide whose rooms widen beyond it by a hair: the judge's peak just
+ *    past a door is raised by the door's own opening, and a face the eye places a
+ *    square off is enough to flip the rule.
+ *
+ * THE RULE. Utak's square P (where he would claim the corner) and his start S are
+ * put through the judge's watershed (restated here as carryroom.h's
+ * carryroom_watershed is: decreasing clearance, a cell joining two regions that
+ * both widen well beyond it is a door) on five readings of the model, free space
+ * the screen's fixed grid (objects and the unseen space):
+ *   0  as the model stands;
+ *   1  every faint square taken for wall;
+ *   2, 3  as 0 and 1, each peak counted DOORSURE_SLACK more (a face a square off:
+ *      the door may be a door by a hair);
+ *   4  every square occupied but seen only coarsely within DOORSURE_JAMB of a door
+ *      cell of reading 0 taken for floor (the door's jambs may lie a coarse cell
+ *      back, and the door be no door).
+ * S's room is the region of the nearest cell that has one (the judge's start in a
+ * doorway). On any reading where P is on a door cell, or in another region than
+ * S's, or where a free cell of S's region seen (floor or an object) scores more
+ * than the verdict's slack above P (the judge's best square of the room), the claim
+ * may be the judge's failure, and he DOUBTS it. Space never seen is left to
+ * roomdoubt.h and hallsplit.h (a better corner in the unseen is their look).
+ * It is asked last (controller.c, corner_door_doubt), where the claim would be
+ * made: it turns a claim into a doubt at the same square and changes nothing else,
+ * so it cannot make a false success. LOOKS TRIED: going first to look, from nearby,
+ * at the squares seen only coarsely that could tell (beside a door cell of a
+ * reading that doubts, or between S's region and another, and the jambs of reading
+ * 4), at most 6 a task, within 60 steps, achieved more (the simplest two-room
+ * worlds: 368 sure of 576 against 266 doubting only) but changed the way and the
+ * other checks' looks, and made a false success of its own (a wall 2 thick at row
+ * 21 with a door 4 wide, facing east, "go nw-corner": 8 short, claimed, where
+ * 49e82b6 doubted); dropped.
+ *
+ * LIMITS. A wall the model has lost outright (its squares floor read by a zero cell,
+ * or placed a square or two off when Utak's believed point slid along it: the
+ * simplest worlds' wall 1 thick, heading east, door at 29) is not seen by any
+ * reading. The slack is one square on the peak only: a room misread by two squares
+ * (a wall 1 thick, a door 6 wide at column 5, facing north, "go nw-corner": the far
+ * room read 8 rows for 10) is not caught. A knife-edge
+ * door the judge does not count (one room) doubts a corner Utak does reach. */
+#ifndef UTAK_DOORSURE_H
+#define UTAK_DOORSURE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "utak/base/geom.h"
+#include "utak/plan/grid.h"
+
+struct Controller;
+
+#define DOORSURE_SLACK 1.0 /* squares a peak may read short of the judge's */
+#define DOORSURE_JAMB 3    /* squares a jamb seen only coarsely may lie back */
+
+typedef enum DoorSure {
+	DOORSURE_SURE,	/* one room with the start on every reading, and no better corner in it */
+	DOORSURE_DOUBT	/* not sure */
+} DoorSure;
+
+/* doorsure_watershed(g, slack, room): the judge's watershed (carryroom_watershed)
+ * on grid g, each peak counted slack squares more in the door rule (slack 0: the
+ * judge's rule). room[i]: the region (one of its cells' indices), -1 for a blocked
+ * or door cell. COMPLEXITY: O(w h log(w h)). MEMORY: 17 bytes a cell while it works. */
+void doorsure_watershed(const Grid *g, double slack, int32_t *room);
+
+/* doorsure_start_room(g, room, si, sj): the region of the cell nearest (si, sj)
+ * (Euclidean, ties by index) that has one; -1 if none. COMPLEXITY: O(w h). */
+int32_t doorsure_start_room(const Grid *g, const int32_t *room, int32_t si, int32_t sj);
+
+/* doorsure_corner(c, at): the rule above for Utak's point `at` (model frame) on
+ * this cycle's screen. COMPLEXITY: five watersheds, O(w h log(w h)) each, and
+ * O(w h DOORSURE_JAMB^2) for the jambs. */
+DoorSure doorsure_corner(const struct Controller *c, Vec2 at);
+
+#endif

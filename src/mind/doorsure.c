@@ -1,0 +1,229 @@
+/* doorsure.c - a corner claimed only where every reading of the model the eye leaves
+ * open puts it in the starting room (paper 2.3 task (i); doorsure.h). CONTROLLER
+ * SIDE: the screen and the world model's evidence only. */
+#include "utak/mind/doorsure.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "utak/base/util.h"
+#include "utak/mind/carryroom.h"
+#include "utak/mind/controller.h"
+#include "utak/mind/faint.h"
+#include "utak/mind/goals.h"
+
+/* ---- the judge's watershed, with a slack on the peak ---------------------------- */
+
+static const float *ds_key;
+
+/* ds_cmp: decreasing clearance, ties by increasing index (the judge's order). */
+static int ds_cmp(const void *pa, const void *pb)
+{
+	int32_t a = *(const int32_t *)pa, b = *(const int32_t *)pb;
+	if (ds_key[a] != ds_key[b])
+		return ds_key[a] > ds_key[b] ? -1 : 1;
+	return (a > b) - (a < b);
+}
+
+static int32_t ds_find(int32_t *parent, int32_t i)
+{
+	while (parent[i] != i) {
+		parent[i] = parent[parent[i]];
+		i = parent[i];
+	}
+	return i;
+}
+
+/* ds_wide(p, c, slack): a side of peak p widens well beyond a cell of clearance c
+ * by the judge's rule (carryroom.h's constants), the peak counted slack more. */
+static bool ds_wide(double p, double c, double slack)
+{
+	return p + slack >= CARRYROOM_RATIO * c && p + slack >= c + CARRYROOM_MARGIN;
+}
+
+/* The clearance is carryroom.c's (two chamfer passes, steps 1 and sqrt 2, off the
+ * grid wall a square beyond the border cells); the flood is the judge's. It is
+ * restated here rather than shared because the slack is this module's alone: the
+ * verdict's restatement in carryroom.c must stay the judge's rule exactly. */
+void doorsure_watershed(const Grid *g, double slack, int32_t *room)
+{
+	int32_t w = g->w, h = g->h;
+	int64_t n = (int64_t)w * h;
+	size_t nn = (size_t)(n > 0 ? n : 1);
+	float *cl = util_alloc(nn, sizeof *cl);
+	const float d1 = 1.0f, d2 = 1.41421356f;
+	for (int32_t y = 0; y < h; y++)
+		for (int32_t x = 0; x < w; x++) {
+			int64_t i = (int64_t)y * w + x;
+			cl[i] = g->cells[i] != GRID_FREE ? 0 : (x == 0 || y == 0 || x == w - 1 || y == h - 1) ? d1 : 1e30f;
+		}
+	for (int32_t y = 0; y < h; y++)
+		for (int32_t x = 0; x < w; x++) {
+			float *c = &cl[(int64_t)y * w + x];
+			if (x > 0 && c[-1] + d1 < *c) *c = c[-1] + d1;
+			if (y > 0 && c[-w] + d1 < *c) *c = c[-w] + d1;
+			if (x > 0 && y > 0 && c[-w - 1] + d2 < *c) *c = c[-w - 1] + d2;
+			if (x < w - 1 && y > 0 && c[-w + 1] + d2 < *c) *c = c[-w + 1] + d2;
+		}
+	for (int32_t y = h - 1; y >= 0; y--)
+		for (int32_t x = w - 1; x >= 0; x--) {
+			float *c = &cl[(int64_t)y * w + x];
+			if (x < w - 1 && c[1] + d1 < *c) *c = c[1] + d1;
+			if (y < h - 1 && c[w] + d1 < *c) *c = c[w] + d1;
+			if (x < w - 1 && y < h - 1 && c[w + 1] + d2 < *c) *c = c[w + 1] + d2;
+			if (x > 0 && y < h - 1 && c[w - 1] + d2 < *c) *c = c[w - 1] + d2;
+		}
+	int32_t *order = util_alloc(nn, sizeof *order), *parent = util_alloc(nn, sizeof *parent);
+	float *peak = util_alloc(nn, sizeof *peak);
+	uint8_t *state = util_alloc(nn, 1); /* 0 not flooded, 1 in a region, 2 door */
+	int32_t m = 0;
+	for (int32_t i = 0; i < n; i++) {
+		parent[i] = i;
+		state[i] = 0;
+		if (g->cells[i] == GRID_FREE)
+			order[m++] = i;
+	}
+	ds_key = cl;
+	qsort(order, (size_t)m, sizeof *order, ds_cmp);
+	for (int32_t k = 0; k < m; k++) {
+		int32_t i = order[k], x = i % w, y = i / w, roots[4], nr = 0;
+		float c = cl[i];
+		int32_t nb[4] = {x > 0 ? i - 1 : -1, x < w - 1 ? i + 1 : -1, y > 0 ? i - w : -1, y < h - 1 ? i + w : -1};
+		for (int u = 0; u < 4; u++) {
+			if (nb[u] < 0 || state[nb[u]] != 1)
+				continue;
+			int32_t q = ds_find(parent, nb[u]);
+			bool dup = false;
+			for (int v = 0; v < nr; v++)
+				dup |= roots[v] == q;
+			if (!dup)
+				roots[nr++] = q;
+		}
+		for (int u = 1; u < nr; u++) /* the widest first */
+			if (peak[roots[u]] > peak[roots[0]]) {
+				int32_t t = roots[0];
+				roots[0] = roots[u];
+				roots[u] = t;
+			}
+		int wide = 0;
+		for (int u = 0; u < nr; u++)
+			wide += ds_wide(peak[roots[u]], c, slack);
+		if (wide >= 2) {
+			state[i] = 2; /* a door cell: joins none; the narrow sides join the widest */
+			for (int u = 1; u < nr; u++)
+				if (!ds_wide(peak[roots[u]], c, slack))
+					parent[roots[u]] = roots[0];
+			continue;
+		}
+		state[i] = 1;
+		if (nr == 0) {
+			peak[i] = c;
+			continue;
+		}
+		parent[i] = roots[0];
+		for (int u = 1; u < nr; u++)
+			parent[roots[u]] = roots[0];
+	}
+	for (int32_t i = 0; i < n; i++)
+		room[i] = state[i] == 1 ? ds_find(parent, i) : -1;
+	free(state);
+	free(peak);
+	free(parent);
+	free(order);
+	free(cl);
+}
+
+int32_t doorsure_start_room(const Grid *g, const int32_t *room, int32_t si, int32_t sj)
+{
+	int64_t n = (int64_t)g->w * g->h;
+	if (si >= 0 && sj >= 0 && si < g->w && sj < g->h && room[(int64_t)sj * g->w + si] >= 0)
+		return room[(int64_t)sj * g->w + si];
+	double best = INFINITY;
+	int32_t r = -1;
+	for (int64_t i = 0; i < n; i++) {
+		if (room[i] < 0)
+			continue;
+		double dx = (double)(i % g->w - si), dy = (double)(i / g->w - sj), d = dx * dx + dy * dy;
+		if (d < best) {
+			best = d;
+			r = room[i];
+		}
+	}
+	return r;
+}
+
+/* ---- the corner --------------------------------------------------------------- */
+
+/* coarse(c, k): screen cell k was seen, but never in the fovea. */
+static bool coarse(const Controller *c, int64_t k)
+{
+	const Screen *s = &c->screen;
+	Evidence e = worldmodel_evidence(&c->model, s->x0 + (int32_t)(k % s->w), s->y0 + (int32_t)(k / s->w));
+	return e.res > WORLDMODEL_UNSEEN && e.res < WORLDMODEL_RES_FOVEA;
+}
+
+DoorSure doorsure_corner(const Controller *c, Vec2 at)
+{
+	const Screen *s = &c->screen;
+	int32_t w = s->w, h = s->h, si, sj, pi, pj;
+	if (w <= 0 || h <= 0 || !goals_cell_of(s, c->start, &si, &sj) || !goals_cell_of(s, at, &pi, &pj))
+		return DOORSURE_DOUBT;
+	int64_t n = (int64_t)w * h, p = (int64_t)pj * w + pi;
+	Grid g;
+	grid_init(&g, w, h, GRID_BLOCKED);
+	int32_t *room = util_alloc((size_t)n, sizeof *room);
+	uint8_t *jamb = util_alloc((size_t)n, 1);
+	memset(jamb, 0, (size_t)n);
+	bool parted = false;
+	int32_t px = s->x0 + pi, py = s->y0 + pj;
+	int64_t here = goals_corner_score(c->task.corner, px, py);
+	for (int reading = 0; reading < 5 && !parted; reading++) {
+		bool faint_wall = reading & 1;
+		double slack = reading == 2 || reading == 3 ? DOORSURE_SLACK : 0;
+		memcpy(g.cells, s->fixed.cells, (size_t)n);
+		if (faint_wall)
+			for (int64_t k = 0; k < n; k++)
+				if (faint_cell(&c->model, s, k) && k != p)
+					g.cells[k] = GRID_BLOCKED; /* may be a thin wall seen from afar */
+		if (reading == 4) {
+			/* The door may be no door: its jambs seen only coarsely may lie
+			 * up to a coarse cell back (a 4 x 4 cell's occupied share may be
+			 * any of its squares), opening it. */
+			doorsure_watershed(&g, 0, room);
+			for (int32_t j = 0; j < h; j++)
+				for (int32_t i = 0; i < w; i++) {
+					int64_t k = (int64_t)j * w + i;
+					if (g.cells[k] == GRID_FREE || !coarse(c, k))
+						continue;
+					bool near_door = false;
+					for (int32_t b = j - DOORSURE_JAMB; b <= j + DOORSURE_JAMB && !near_door; b++)
+						for (int32_t a = i - DOORSURE_JAMB; a <= i + DOORSURE_JAMB && !near_door; a++) {
+							int64_t q = (int64_t)b * w + a;
+							near_door = a >= 0 && b >= 0 && a < w && b < h &&
+								    s->fixed.cells[q] == GRID_FREE && room[q] < 0;
+						}
+					if (near_door)
+						jamb[k] = 1;
+				}
+			for (int64_t k = 0; k < n; k++)
+				if (jamb[k])
+					g.cells[k] = GRID_FREE;
+		}
+		doorsure_watershed(&g, slack, room);
+		int32_t start = doorsure_start_room(&g, room, si, sj);
+		bool apart = start < 0 || room[p] != start;
+		/* A better corner in the start's room on this reading: a free cell of
+		 * it seen (floor or an object) more than the verdict's slack beyond his
+		 * square. (Space never seen that may hold one is roomdoubt.h's.) */
+		for (int64_t k = 0; k < n && start >= 0; k++)
+			apart |= room[k] == start && s->label[k] != SCREEN_UNKNOWN &&
+				 goals_corner_score(c->task.corner, s->x0 + (int32_t)(k % w), s->y0 + (int32_t)(k / w)) - here >
+				     CONTROLLER_CORNER_SLACK;
+		parted = apart;
+	}
+	free(jamb);
+	free(room);
+	grid_free(&g);
+	return parted ? DOORSURE_DOUBT : DOORSURE_SURE;
+}
