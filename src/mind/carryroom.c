@@ -301,9 +301,9 @@ static int ws_cmp(const void *pa, const void *pb)
 	return (a > b) - (a < b);
 }
 
-/* ws_flood(g, room, clear): carryroom_watershed, and with clear (w h of them) each
- * cell's clearance (0 blocked) kept for the caller. */
-static void ws_flood(const Grid *g, int32_t *room, float *clear)
+/* ws_flood(g, slack, room, clear): carryroom_watershed_slack, and with clear (w h
+ * of them) each cell's clearance (0 blocked) kept for the caller. */
+static void ws_flood(const Grid *g, double slack, int32_t *room, float *clear)
 {
 	int32_t w = g->w, h = g->h;
 	int64_t n = (int64_t)w * h;
@@ -367,11 +367,11 @@ static void ws_flood(const Grid *g, int32_t *room, float *clear)
 			}
 		int wide = 0;
 		for (int u = 0; u < nr; u++)
-			wide += cr_wide(peak[roots[u]], c);
+			wide += cr_wide(peak[roots[u]] + slack, c);
 		if (wide >= 2) {
 			state[i] = 2;
 			for (int u = 1; u < nr; u++)
-				if (!cr_wide(peak[roots[u]], c))
+				if (!cr_wide(peak[roots[u]] + slack, c))
 					parent[roots[u]] = roots[0];
 			continue;
 		}
@@ -397,12 +397,17 @@ static void ws_flood(const Grid *g, int32_t *room, float *clear)
 
 void carryroom_watershed(const Grid *g, int32_t *room)
 {
-	ws_flood(g, room, NULL);
+	ws_flood(g, 0, room, NULL);
 }
 
 void carryroom_watershed_clear(const Grid *g, int32_t *room, float *clear)
 {
-	ws_flood(g, room, clear);
+	ws_flood(g, 0, room, clear);
+}
+
+void carryroom_watershed_slack(const Grid *g, double slack, int32_t *room)
+{
+	ws_flood(g, slack, room, NULL);
 }
 
 /* ---- beyond the door line (carryroom_beyond) ------------------------------------ */
@@ -413,7 +418,7 @@ int64_t carryroom_beyond(const Grid *g, int32_t si, int32_t sj, bool *out)
 	int64_t n = (int64_t)w * h, got = 0;
 	int32_t *room = util_alloc((size_t)(n > 0 ? n : 1), sizeof *room);
 	float *cl = util_alloc((size_t)(n > 0 ? n : 1), sizeof *cl);
-	ws_flood(g, room, cl);
+	ws_flood(g, 0, room, cl);
 	/* The start's rooms: the room of the nearest cell in one (the judge's
 	 * judge_rooms_nearest: a start in a doorway counts in the nearest room), and,
 	 * when the start lies within a door cell's doorway (as the judge's), every

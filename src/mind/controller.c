@@ -372,16 +372,12 @@ static bool corner_felt_object(Controller *c)
 	return false;
 }
 
-/* corner_leaning(c, look): a door the corner's claim rests on whose jamb may be an
- * object (roomlean.h): with look, true when a jamb nearby is to be touched first
- * (c->room_look_at beside it); without, true when touch felt an object on one, and
- * then the task fails with his doubt. */
-static bool corner_leaning(Controller *c, bool look)
+/* lean_settle(c, r, at, from, look, claim): what roomlean.h's answer r means for a
+ * claim: with look, true when a jamb nearby is to be touched first (c->room_look_at
+ * beside it, at from); without, true when touch felt an object on one (at), and then
+ * the task fails with his doubt, claim naming what he cannot tell. */
+static bool lean_settle(Controller *c, RoomLean r, Vec2 at, Vec2 from, bool look, const char *claim)
 {
-	Vec2 at, from;
-	int32_t *dist = look ? utak_reach(c) : NULL;
-	RoomLean r = roomlean_corner(c, goals_subject_score(c), dist, &at, &from);
-	free(dist);
 	if (look) {
 		if (r == ROOMLEAN_LOOK)
 			c->room_look_at = from;
@@ -391,9 +387,23 @@ static bool corner_leaning(Controller *c, bool look)
 		return false;
 	c->phase = PHASE_FAILED;
 	snprintf(c->why, sizeof c->why,
-		 "Utak cannot tell he is in the %s: the door that parts his room from floor that would beat the corner may be no door: touch felt an object's colour on its jamb at (%.1f, %.1f), and objects are space to rooms",
-		 task_corner_name(c->task.corner), at.x, at.y);
+		 "Utak cannot tell %s may be no door: touch felt an object's colour on its jamb at (%.1f, %.1f), and objects are space to rooms",
+		 claim, at.x, at.y);
 	return true;
+}
+
+/* corner_leaning(c, look): a door the corner's claim rests on whose jamb may be an
+ * object (roomlean.h; lean_settle). */
+static bool corner_leaning(Controller *c, bool look)
+{
+	Vec2 at, from;
+	char claim[160];
+	int32_t *dist = look ? utak_reach(c) : NULL;
+	RoomLean r = roomlean_corner(c, goals_subject_score(c), dist, &at, &from);
+	free(dist);
+	snprintf(claim, sizeof claim, "he is in the %s: the door that parts his room from floor that would beat the corner",
+		 task_corner_name(c->task.corner));
+	return lean_settle(c, r, at, from, look, claim);
 }
 
 /* next_leaning(c, look): as corner_leaning, for "go next-room" at Utak's place
@@ -404,18 +414,8 @@ static bool next_leaning(Controller *c, bool look)
 	int32_t *dist = look ? utak_reach(c) : NULL;
 	RoomLean r = roomlean_next(c, dist, &at, &from);
 	free(dist);
-	if (look) {
-		if (r == ROOMLEAN_LOOK)
-			c->room_look_at = from;
-		return r == ROOMLEAN_LOOK;
-	}
-	if (r != ROOMLEAN_DOUBT)
-		return false;
-	c->phase = PHASE_FAILED;
-	snprintf(c->why, sizeof c->why,
-		 "Utak cannot tell he is in another room: the door that parts him from the room he started in may be no door: touch felt an object's colour on its jamb at (%.1f, %.1f), and objects are space to rooms",
-		 at.x, at.y);
-	return true;
+	return lean_settle(c, r, at, from, look,
+			   "he is in another room: the door that parts him from the room he started in");
 }
 
 /* bump_trip(c, k): a corner of the wall that may be a square pressed against it,

@@ -111,6 +111,10 @@ void carryroom_watershed(const Grid *g, int32_t *room);
 /* carryroom_watershed_clear(g, room, clear): the same, and each cell's clearance
  * (the chamfer's; 0 blocked) in clear (w h of them). */
 void carryroom_watershed_clear(const Grid *g, int32_t *room, float *clear);
+/* carryroom_watershed_slack(g, slack, room): the same with every region's peak
+ * counted slack squares more (a door by a hair: doorsure.h); slack 0 is
+ * carryroom_watershed. */
+void carryroom_watershed_slack(const Grid *g, double slack, int32_t *room);
 
 #define CARRYROOM_DOORWAY_REACH 1.0  /* judgerooms.h's JUDGE_DOORWAY_REACH */
 #define CARRYROOM_DOORWAY_MARGIN 2.0 /* squares more: a wall on the model may lie a square or two off */
