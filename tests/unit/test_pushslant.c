@@ -6,8 +6,8 @@
  * TABLE's are), turned by t (1 to 89 degrees, every degree), its other side w or
  * 2 w, seated (both vertices on the walls) or held off them by a fraction of a
  * square; a square (i, j) belongs to it when the square's open interior meets the
- * closed rectangle (../shared/READING.md's rule), decided by separating axes with no
- * sampling. The shortfall is the least i + j of its squares (the corner's own square
+ * closed rectangle (utak(5)'s rule for the TABLE's squares), decided by separating
+ * axes with no sampling. The shortfall is the least i + j of its squares (the corner's own square
  * scores 0). pushslant_bound(w, t) must never exceed it, must equal it for every
  * seated pose, and must say 2 or more where a square 8 wide stands at 30 degrees
  * (the adversarial worlds' case). */
