@@ -18,6 +18,7 @@
 
 #include "oracle.h"
 #include "test.h"
+#include "room_worlds.h"
 #include "world_fixture.h"
 #include "utak/body/judgerooms.h"
 #include "utak/mind/carryroom.h"
@@ -47,17 +48,6 @@ static int32_t merged_count(const CarryRooms *cr, const RoomMap *rm)
 		}
 	free(seen);
 	return n;
-}
-
-/* load_two_rooms(W, H, wx, lo, door): a W x H TABLE cut by a wall 2 thick at
- * columns wx..wx+2 with a door from row lo to lo + door. */
-static void load_two_rooms(int W, int H, int wx, int lo, int door)
-{
-	char text[512];
-	snprintf(text, sizeof text,
-		 "table %d %d\nwall %d 1 %d 1 %d %d %d %d\nwall %d %d %d %d %d %d %d %d\nutak 1.5 1.5 north\n", W, H,
-		 wx, wx + 2, wx + 2, lo, wx, lo, wx, lo + door, wx + 2, lo + door, wx + 2, H - 1, wx, H - 1);
-	load(text);
 }
 
 /* seen_in_part(hide, s, rm): the loaded TABLE as a screen whose columns from `hide`
@@ -245,17 +235,7 @@ TEST_CASE(watershed_agrees_with_the_judge)
 	oracle_seed = 13;
 	int parted = 0;
 	for (int t = 0; t < 80; t++) {
-		int W = 20 + oracle_rand_below(40), H = 20 + oracle_rand_below(40), piers = 1 + oracle_rand_below(4);
-		char text[1024];
-		int n = snprintf(text, sizeof text, "table %d %d\n", W, H);
-		for (int k = 0; k < piers; k++) {
-			int pw = 1 + oracle_rand_below(W / 2), ph = 1 + oracle_rand_below(H / 2);
-			int x = 3 + oracle_rand_below(W - pw - 4), y = 3 + oracle_rand_below(H - ph - 4);
-			n += snprintf(text + n, sizeof text - (size_t)n, "wall %d %d %d %d %d %d %d %d\n", x, y, x + pw, y,
-				      x + pw, y + ph, x, y + ph);
-		}
-		snprintf(text + n, sizeof text - (size_t)n, "utak 1.5 1.5 north\n"); /* (no pier reaches it) */
-		load(text);
+		load_hall_with_piers(20, 4);
 		JudgeRooms jr;
 		judge_rooms_find(&jr, &table);
 		Grid g;
@@ -280,8 +260,10 @@ TEST_CASE(watershed_agrees_with_the_judge)
 		for (int32_t a = 0; a < jr.count && same; a++)
 			for (int32_t b = a + 1; b < jr.count && same; b++)
 				same = of[a] != of[b] || of[a] == -2;
-		if (!same)
-			fprintf(stderr, "  world %d:\n%s", t, text);
+		if (!same) {
+			fprintf(stderr, "  world %d:\n", t);
+			world_write(&world, stderr);
+		}
 		TEST_CHECK(same);
 		parted += jr.count > 1;
 		free(of);
@@ -309,17 +291,7 @@ TEST_CASE(beyond_is_in_another_room_by_the_judge)
 	int worlds_with = 0;
 	for (int t = 0; t < 120; t++) {
 		if (t % 2 == 0) {
-			int W = 24 + oracle_rand_below(40), H = 24 + oracle_rand_below(40), piers = 1 + oracle_rand_below(5);
-			char text[1024];
-			int n = snprintf(text, sizeof text, "table %d %d\n", W, H);
-			for (int k = 0; k < piers; k++) {
-				int pw = 1 + oracle_rand_below(W / 2), ph = 1 + oracle_rand_below(H / 2);
-				int x = 3 + oracle_rand_below(W - pw - 4), y = 3 + oracle_rand_below(H - ph - 4);
-				n += snprintf(text + n, sizeof text - (size_t)n, "wall %d %d %d %d %d %d %d %d\n", x, y,
-					      x + pw, y, x + pw, y + ph, x, y + ph);
-			}
-			snprintf(text + n, sizeof text - (size_t)n, "utak 1.5 1.5 north\n");
-			load(text);
+			load_hall_with_piers(24, 5);
 		} else {
 			int west = 3 + oracle_rand_below(22), east = 3 + oracle_rand_below(22), h = 8 + oracle_rand_below(20);
 			int door = 2 + oracle_rand_below(6);

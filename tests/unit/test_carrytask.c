@@ -16,20 +16,11 @@
 
 #include "oracle.h"
 #include "test.h"
+#include "room_worlds.h"
 #include "world_fixture.h"
 #include "utak/body/judgerooms.h"
 #include "utak/mind/carryroom.h"
 #include "utak/mind/carrytask.h"
-
-/* load_two_rooms(W, H, wx, lo, door): the TABLE (as test_carryroom.c builds it). */
-static void load_two_rooms(int W, int H, int wx, int lo, int door)
-{
-	char text[512];
-	snprintf(text, sizeof text,
-		 "table %d %d\nwall %d 1 %d 1 %d %d %d %d\nwall %d %d %d %d %d %d %d %d\nutak 1.5 1.5 north\n", W, H,
-		 wx, wx + 2, wx + 2, lo, wx, lo, wx, lo + door, wx + 2, lo + door, wx + 2, H - 1, wx, H - 1);
-	load(text);
-}
 
 /* model(rm, W, H, wx, lo, door): the room map of a model of such a world: the verge
  * on the grid's edge, the wall's columns wx, wx + 1 blocked but for rows lo ..

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "first_look.h"
 #include "test.h"
 #include "utak/base/geom.h"
 #include "utak/body/retina.h"
@@ -32,10 +33,7 @@ static uint64_t rng = 0x9e3779b97f4a7c15u;
 
 static double uniform(void)
 {
-	rng ^= rng << 13;
-	rng ^= rng >> 7;
-	rng ^= rng << 17;
-	return (double)(rng >> 11) / 9007199254740992.0;
+	return xorshift_uniform(&rng);
 }
 
 /* Utak's square; the world is written with the wall north of him, then turned
@@ -79,15 +77,10 @@ static Seen sense(const char *text, const char *heading)
 	snprintf(full, sizeof full, "%sutak %d.5 %d.5 %s\n", text, UX, UY, heading);
 	World w;
 	Table t;
-	Diag d;
 	Seen out = {0};
-	TEST_CHECK(world_parse(&w, "test", full, strlen(full), &d) == 0);
-	TEST_CHECK(table_build(&t, &w, &d) == 0);
 	WorldModel m;
-	worldmodel_init(&m);
 	Impression imp;
-	retina_sense(&w, &t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	first_look(full, &w, &t, &m, &imp);
 	Screen s;
 	screen_init(&s);
 	screen_build(&s, &m, NULL, 0);

@@ -20,6 +20,7 @@
 
 #include "oracle.h"
 #include "test.h"
+#include "room_worlds.h"
 #include "world_fixture.h"
 #include "utak/body/judgerooms.h"
 #include "utak/mind/doorsure.h"
@@ -78,18 +79,8 @@ TEST_CASE(no_slack_is_the_judge)
 	oracle_seed = 26;
 	int worlds = 0, parted = 0;
 	for (int t = 0; t < 60 + 36; t++) {
-		char text[1024];
 		if (t < 60) {
-			int W = 20 + oracle_rand_below(40), H = 20 + oracle_rand_below(40), piers = 1 + oracle_rand_below(4);
-			int n = snprintf(text, sizeof text, "table %d %d\n", W, H);
-			for (int k = 0; k < piers; k++) {
-				int pw = 1 + oracle_rand_below(W / 2), ph = 1 + oracle_rand_below(H / 2);
-				int x = 3 + oracle_rand_below(W - pw - 4), y = 3 + oracle_rand_below(H - ph - 4);
-				n += snprintf(text + n, sizeof text - (size_t)n, "wall %d %d %d %d %d %d %d %d\n", x, y,
-					      x + pw, y, x + pw, y + ph, x, y + ph);
-			}
-			snprintf(text + n, sizeof text - (size_t)n, "utak 1.5 1.5 north\n");
-			load(text);
+			load_hall_with_piers(20, 4);
 		} else {
 			int k = t - 60;
 			two_rooms(1 + k % 3, 3 + (k / 3) % 4, (int[]){5, 15, 29}[k / 12]);
@@ -102,8 +93,10 @@ TEST_CASE(no_slack_is_the_judge)
 		int32_t *mine = malloc((size_t)cells * sizeof *mine);
 		doorsure_watershed(&g, 0, mine);
 		bool same = agrees(&jr, mine, cells);
-		if (!same)
-			fprintf(stderr, "  world %d:\n%s", t, text);
+		if (!same) {
+			fprintf(stderr, "  world %d:\n", t);
+			world_write(&world, stderr);
+		}
 		TEST_CHECK(same);
 		worlds++;
 		parted += jr.count > 1;

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "first_look.h"
 #include "test.h"
 #include "utak/base/eye.h"
 #include "utak/base/geom.h"
@@ -35,10 +36,7 @@ static uint64_t rng = 0x2545f4914f6cdd1du;
 
 static double uniform(void)
 {
-	rng ^= rng << 13;
-	rng ^= rng >> 7;
-	rng ^= rng << 17;
-	return (double)(rng >> 11) / 9007199254740992.0;
+	return xorshift_uniform(&rng);
 }
 
 /* Utak stands on square (40, 40) facing north: his model's frame is the TABLE's,
@@ -57,15 +55,10 @@ static Seen sense(const char *text)
 {
 	World w;
 	Table t;
-	Diag d;
 	Seen out = {0};
-	TEST_CHECK(world_parse(&w, "test", text, strlen(text), &d) == 0);
-	TEST_CHECK(table_build(&t, &w, &d) == 0);
 	WorldModel m;
-	worldmodel_init(&m);
 	Impression imp;
-	retina_sense(&w, &t, &imp);
-	worldmodel_accommodate_first(&m, &imp);
+	first_look(text, &w, &t, &m, &imp);
 	Screen s;
 	screen_init(&s);
 	screen_build(&s, &m, NULL, 0);

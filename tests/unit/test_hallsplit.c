@@ -31,6 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "first_look.h"
 #include "test.h"
 #include "utak/base/eye.h"
 #include "utak/body/retina.h"
@@ -43,10 +44,7 @@ static uint64_t rng = 0x9e3779b97f4a7c15u;
 
 static uint32_t next(void)
 {
-	rng ^= rng << 13;
-	rng ^= rng >> 7;
-	rng ^= rng << 17;
-	return (uint32_t)(rng >> 11);
+	return (uint32_t)(xorshift64(&rng) >> 11);
 }
 
 /* brute(w, h, pass, costly, u, b): the least costly cells entered from u to b by
@@ -211,14 +209,9 @@ TEST_CASE(faint_squares_cover_every_thin_stub_read_as_floor)
 			 x1, y0, x1, y1, x0, y1);
 		World w;
 		Table t;
-		Diag d;
-		TEST_CHECK(world_parse(&w, "test", text, strlen(text), &d) == 0);
-		TEST_CHECK(table_build(&t, &w, &d) == 0);
 		WorldModel m;
-		worldmodel_init(&m);
 		Impression imp;
-		retina_sense(&w, &t, &imp);
-		worldmodel_accommodate_first(&m, &imp);
+		first_look(text, &w, &t, &m, &imp);
 		for (int32_t i = 0; i < RETINA_CELLS; i++) {
 			EyeCell c = eye_cell(i);
 			if (c.zone == EYE_FOVEA)
