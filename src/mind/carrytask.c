@@ -614,15 +614,13 @@ bool carrytask_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		return true;
 	}
 	if (ct->stage == CARRY_STAGE_FETCH && c->task.shape == SHAPE_SQUARE &&
-	    wallbump_look(c, dist, c->start, goals_distance(centre, c->start), &out->goal)) {
+	    wallbump_set_off(c, dist, goals_distance(centre, c->start), out)) {
 		/* A corner of the wall nearer the start may be a square pressed against
 		 * it, the task's square then (the nearest to the start, objects.h):
 		 * arriving beside this one, Utak doubts it and sets off to feel that
 		 * corner (controller.c, bump_trip), as any push does (goals.c, whose
 		 * goal this one is: the carry's goals come first). Without it the grasp
 		 * was chosen again where he stood, and the run ended "no progress". */
-		wallbump_going(c, out->goal);
-		out->exploring = out->found = true;
 		return true;
 	}
 	if (ct->stage == CARRY_STAGE_FETCH && ct->have_grasp) {

@@ -737,11 +737,8 @@ void goals_choose(Controller *c, GoalResult *out)
 			 * then home (wallbump.h); the whole trail counts. */
 			int32_t k = objects_find_target(c);
 			double nearer = k >= 0 ? goals_distance(objects_read(c, k).centroid, c->start) : 0;
-			if (k >= 0 && wallbump_look(c, dist, c->start, nearer, &out->goal)) {
-				wallbump_going(c, out->goal);
-				out->exploring = out->found = true;
+			if (k >= 0 && wallbump_set_off(c, dist, nearer, out))
 				break;
-			}
 			c->bump_home = false;
 			round_home(c, k);
 		}
@@ -801,11 +798,8 @@ void goals_choose(Controller *c, GoalResult *out)
 			}
 			/* A corner of the wall nearer the start may be a square pressed
 			 * against it: touch settles it first (wallbump.h). */
-			if (k >= 0 && c->task.shape == SHAPE_SQUARE && wallbump_look(c, dist, c->start, nearer, &out->goal)) {
-				wallbump_going(c, out->goal);
-				out->exploring = out->found = true;
+			if (k >= 0 && c->task.shape == SHAPE_SQUARE && wallbump_set_off(c, dist, nearer, out))
 				break;
-			}
 			/* A target the fovea has shown misread (objects_misread: read
 			 * between a square and a brick, or fitted by no rectangle exactly)
 			 * may be no object of the task's shape: while anything reachable

@@ -189,6 +189,15 @@ void wallbump_going(Controller *c, Vec2 goal)
 	c->bump_goal = goal;
 }
 
+bool wallbump_set_off(Controller *c, const int32_t *dist, double d, GoalResult *out)
+{
+	if (!wallbump_look(c, dist, c->start, d, &out->goal))
+		return false;
+	wallbump_going(c, out->goal);
+	out->exploring = out->found = true;
+	return true;
+}
+
 void wallbump_feel(Controller *c)
 {
 	int32_t ux, uy;

@@ -33,6 +33,7 @@
 #include <stdint.h>
 
 #include "utak/mind/controller.h"
+#include "utak/mind/goals.h"
 
 /* The largest square side tried behind a corner (squares): its centroid is then
  * this deep in the wall, half of it each way. */
@@ -65,6 +66,11 @@ bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at);
 /* wallbump_going(c, goal): goals.c sets off for a place wallbump_look chose; a
  * place other than the last counts one trip of WALLBUMP_TRIPS. */
 void wallbump_going(Controller *c, Vec2 goal);
+
+/* wallbump_set_off(c, dist, d, out): wallbump_look from the start for a square
+ * nearer it than d, and, if there is a place, the goal set for it (out found and
+ * exploring) and counted (wallbump_going). */
+bool wallbump_set_off(Controller *c, const int32_t *dist, double d, GoalResult *out);
 
 /* wallbump_feel(c): after an impression: the squares round Utak touch shows B
  * that are squares of such a corner (the corner or the next of a face) are
