@@ -13,15 +13,6 @@
 #include "utak/mind/faint.h"
 #include "utak/mind/goals.h"
 
-/* ---- the judge's watershed, with a slack on the peak ---------------------------- */
-
-/* The watershed is carryroom.c's, the verdict's rule restated, with the slack added
- * to every peak (slack 0: the verdict's rooms exactly). */
-void doorsure_watershed(const Grid *g, double slack, int32_t *room)
-{
-	carryroom_watershed_slack(g, slack, room);
-}
-
 int32_t doorsure_start_room(const Grid *g, const int32_t *room, int32_t si, int32_t sj)
 {
 	int64_t n = (int64_t)g->w * g->h;
@@ -78,7 +69,7 @@ DoorSure doorsure_corner(const Controller *c, Vec2 at)
 			/* The door may be no door: its jambs seen only coarsely may lie
 			 * up to a coarse cell back (a 4 x 4 cell's occupied share may be
 			 * any of its squares), opening it. */
-			doorsure_watershed(&g, 0, room);
+			carryroom_watershed_slack(&g, 0, room);
 			for (int32_t j = 0; j < h; j++)
 				for (int32_t i = 0; i < w; i++) {
 					int64_t k = (int64_t)j * w + i;
@@ -98,7 +89,7 @@ DoorSure doorsure_corner(const Controller *c, Vec2 at)
 				if (jamb[k])
 					g.cells[k] = GRID_FREE;
 		}
-		doorsure_watershed(&g, slack, room);
+		carryroom_watershed_slack(&g, slack, room);
 		int32_t start = doorsure_start_room(&g, room, si, sj);
 		bool apart = start < 0 || room[p] != start;
 		/* A better corner in the start's room on this reading: a free cell of

@@ -3,7 +3,7 @@
  *
  * THE ORACLE is the judge (judgerooms.h: its own code, from the real TABLE; a test
  * may see both sides).
- *  - With no slack, doorsure_watershed on the TABLE's own grid (verge blocked,
+ *  - With no slack, carryroom_watershed_slack on the TABLE's own grid (verge blocked,
  *    floor and objects free) parts the squares exactly as the judge's rooms do, on
  *    halls with free-standing piers at random and on the two-room worlds of the
  *    grid (a wall across with a door).
@@ -23,6 +23,7 @@
 #include "room_worlds.h"
 #include "world_fixture.h"
 #include "utak/body/judgerooms.h"
+#include "utak/mind/carryroom.h"
 #include "utak/mind/doorsure.h"
 
 /* table_grid(g, thicken_from, thicken_to): the loaded TABLE's grid, verge blocked,
@@ -91,7 +92,7 @@ TEST_CASE(no_slack_is_the_judge)
 		table_grid(&g, 0, 0);
 		int64_t cells = (int64_t)table.w * table.h;
 		int32_t *mine = malloc((size_t)cells * sizeof *mine);
-		doorsure_watershed(&g, 0, mine);
+		carryroom_watershed_slack(&g, 0, mine);
 		bool same = agrees(&jr, mine, cells);
 		if (!same) {
 			fprintf(stderr, "  world %d:\n", t);
@@ -130,10 +131,10 @@ TEST_CASE(slack_covers_a_face_a_square_off)
 				Grid g;
 				table_grid(&g, 18 + th, 18 + th + 1); /* the wall read a square thicker */
 				int32_t *mine = malloc((size_t)table.w * (size_t)table.h * sizeof *mine);
-				doorsure_watershed(&g, DOORSURE_SLACK, mine);
+				carryroom_watershed_slack(&g, DOORSURE_SLACK, mine);
 				int32_t ms = doorsure_start_room(&g, mine, 15, 7);
 				TEST_CHECK(ms >= 0 && mine[28 * table.w + 1] != ms);
-				doorsure_watershed(&g, 0, mine);
+				carryroom_watershed_slack(&g, 0, mine);
 				ms = doorsure_start_room(&g, mine, 15, 7);
 				lost_without += mine[28 * table.w + 1] == ms;
 				free(mine);

@@ -73,12 +73,6 @@ typedef enum DoorSure {
 	DOORSURE_DOUBT	/* not sure */
 } DoorSure;
 
-/* doorsure_watershed(g, slack, room): the judge's watershed (carryroom_watershed)
- * on grid g, each peak counted slack squares more in the door rule (slack 0: the
- * judge's rule). room[i]: the region (one of its cells' indices), -1 for a blocked
- * or door cell. COMPLEXITY: O(w h log(w h)). MEMORY: 17 bytes a cell while it works. */
-void doorsure_watershed(const Grid *g, double slack, int32_t *room);
-
 /* doorsure_start_room(g, room, si, sj): the region of the cell nearest (si, sj)
  * (Euclidean, ties by index) that has one; -1 if none. COMPLEXITY: O(w h). */
 int32_t doorsure_start_room(const Grid *g, const int32_t *room, int32_t si, int32_t sj);
