@@ -32,6 +32,7 @@
 #include "utak/mind/carrytask.h"
 #include "utak/mind/doorsure.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/joined.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/push.h"
@@ -438,6 +439,8 @@ static void arrive(Controller *c)
 	c->have_plan = false;
 	if (rival_arrive(c))
 		return; /* going to another object the claim is in doubt over (rival.h) */
+	if (joined_arrive(c))
+		return; /* where the object he would claim can be pulled from (joined.h) */
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
 		c->room_look = c->room_following = false;
@@ -488,7 +491,8 @@ static void arrive(Controller *c)
 			} else if (objects_doubt(c, objects_find_target(c), doubt, sizeof doubt)) {
 				/* A doubt over another object: settle it first where he can
 				 * (rival.h), then beside this one again. */
-				if (!rival_begin(c, objects_find_target(c)) && !bump_trip(c, objects_find_target(c))) {
+				if (!rival_begin(c, objects_find_target(c)) && !bump_trip(c, objects_find_target(c)) &&
+				    !joined_begin(c, objects_find_target(c))) {
 					c->phase = PHASE_FAILED; /* beside it, and no nearer being sure */
 					snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
 						 task_shape_name(c->task.shape), doubt);
@@ -514,6 +518,9 @@ static void arrive(Controller *c)
 		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && rival_loop_closed(c)) {
 			/* The loop closed round an object a doubt over another names:
 			 * settled from here, beside it, then home (rival.h). */
+		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && joined_loop_closed(c)) {
+			/* The loop closed round one object or two pressed together: pulled
+			 * from here, beside it, then home (joined.h). */
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
@@ -531,6 +538,8 @@ static void arrive(Controller *c)
 					/* a corner of the wall: felt first, then home again (wallbump.h) */
 					c->round_count = 0;
 					c->bump_home = true;
+				} else if (objects_doubt(c, k, doubt, sizeof doubt) && joined_begin(c, k)) {
+					/* one object or two pressed together: pulled first, then home again (joined.h) */
 				} else if (objects_doubt(c, k, doubt, sizeof doubt)) {
 					c->phase = PHASE_FAILED;
 					snprintf(c->why, sizeof c->why, "Utak doubts he went round the %s: %s",
@@ -695,12 +704,17 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	 * rival.h). */
 	if (rival_decide(c, cmd))
 		return true;
+	/* The object he would claim pulled first, to see it one (joined.h). */
+	if (joined_decide(c, cmd))
+		return true;
 	/* An object not yet told from the wall it leans on: touch and motion. */
 	if (tug_decide(c, cmd))
 		return true;
 	/* Step 8 and 9, a few times over if arriving changes the phase. */
 	for (int round = 0; round < 4; round++) {
 		if (rival_decide(c, cmd)) /* begun on arriving (arrive) */
+			return true;
+		if (joined_decide(c, cmd)) /* begun on arriving (arrive) */
 			return true;
 		switch (c->phase) {
 		case PHASE_DONE:
@@ -821,6 +835,11 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if (c->rival.note[0]) { /* a rival gone to, or settled (rival.h) */
 		n += snprintf(c->note + n, sizeof c->note - (size_t)n, "%s", c->rival.note);
 		c->rival.note[0] = '\0';
+	}
+	if (joined_perceive(c, cmd, c->note + n, sizeof c->note - (size_t)n)) {
+		c->last_position = c->model.utak; /* its pulls are short by design */
+		c->stuck = 0;
+		return;
 	}
 	if (rival_perceive(c, cmd, c->note + n, sizeof c->note - (size_t)n)) {
 		c->last_position = c->model.utak; /* its pushes are short by design */

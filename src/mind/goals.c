@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "utak/base/util.h"
+#include "utak/mind/joined.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
@@ -732,6 +733,8 @@ void goals_choose(Controller *c, GoalResult *out)
 	default: /* an object's task (going round it first finds it) */
 		if (!pushing && rival_goal(c, dist, out))
 			break; /* another object the claim is in doubt over: settled first (rival.h) */
+		if (!pushing && joined_goal(c, out))
+			break; /* where the object he would claim can be pulled from (joined.h) */
 		if (c->task.kind == TASK_GO_ROUND && c->bump_home) {
 			/* Home from a loop, a corner of the wall in doubt: felt first,
 			 * then home (wallbump.h); the whole trail counts. */

@@ -12,6 +12,7 @@
 #include "utak/mind/apart.h"
 #include "utak/mind/coarsewall.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/joined.h"
 #include "utak/mind/faint.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
@@ -719,7 +720,10 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 		 * whole, nothing does (a trip to look would be NEARER THE START's). */
 		if (!objects_merged_rival(c, *rival))
 			*rival = -1;
-	} else
+	} else if (joined_open(c, k))
+		snprintf(why, size, "the %s may be two objects pressed together (paper 3.4.2): no pull showed it come away whole (joined.h)",
+			 shape);
+	else
 		return false;
 	return true;
 }

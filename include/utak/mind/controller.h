@@ -20,6 +20,7 @@
 #include "utak/plan/path.h"
 #include "utak/mind/planner.h"
 #include "utak/mind/apart.h"
+#include "utak/mind/joined.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
@@ -256,6 +257,9 @@ typedef struct Controller {
 	RivalRun rival;
 	/* Pulling a rival of the MERGED doubt, to see it come away whole (apart.h). */
 	ApartRun apart;
+	/* Pulling the object he would claim, a shape other than the square, to see it
+	 * come away whole (joined.h). */
+	JoinedRun joined;
 	/* Settling a hall doubt by touching the blob (hallsplit.h). */
 	HallRun hall;
 	ShapeMemo memo[CONTROLLER_MEMOS];
