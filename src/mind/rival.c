@@ -8,9 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "utak/base/eye.h"
 #include "utak/base/util.h"
 #include "utak/mind/apart.h"
 #include "utak/mind/controller.h"
+#include "utak/mind/fovealook.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/probe.h"
@@ -99,17 +101,53 @@ static bool own_may_probe(Controller *c, int32_t k)
 	return true;
 }
 
-/* rival_way(c, j, dist, goal): where to go next for rival node j: near the square of
- * it, or of the floor round it, the fovea has not seen nearest Utak, or, all seen,
- * beside it (where touch reaches it). */
+/* Lacking: the rival whose squares still to be seen a place's fovea counts. */
+typedef struct Lacking {
+	const Controller *c;
+	int32_t j;
+} Lacking;
+
+/* lacking(ctx, px, py): how many squares of node j, or of the floor round it, not
+ * yet seen in the fovea (objects_lacks) Utak's fovea holds from square (px, py). */
+static int32_t lacking(void *ctx, int32_t px, int32_t py)
+{
+	const Lacking *l = ctx;
+	int32_t n = 0;
+	for (int32_t oy = -EYE_FOVEA_HALF; oy < EYE_FOVEA_HALF; oy++)
+		for (int32_t ox = -EYE_FOVEA_HALF; ox < EYE_FOVEA_HALF; ox++)
+			n += objects_lacks(l->c, l->j, px + ox, py + oy);
+	return n;
+}
+
+/* look_at(c, j, x, y, dist, goal): where to look at square (x, y) of rival node j
+ * or of the floor round it: where the fovea holds it (fovealook.h), else the place
+ * nearest it (goals_near, as before: a square the fovea can be taken to from
+ * nowhere reachable may yet be seen whole from near it by the deep rule,
+ * objects_seen_exactly). */
+static bool look_at(const Controller *c, int32_t j, int32_t x, int32_t y, const int32_t *dist, Vec2 *goal)
+{
+	Lacking l = {c, j};
+	return fovealook_place(&c->screen, dist, x, y, lacking, &l, goal) ||
+	       goals_near(c, goals_centre(x, y), dist, goal);
+}
+
+/* spent(r): the arrivals going to the rival that count against RIVAL_ARRIVALS. */
+static int spent(const RivalRun *r)
+{
+	return r->arrivals - r->gained;
+}
+
+/* rival_way(c, j, dist, goal): where to go next for rival node j: where the fovea
+ * shows the square of it, or of the floor round it, the fovea has not seen
+ * nearest Utak (look_at), or, all seen, beside it (where touch reaches it). */
 static bool rival_way(Controller *c, int32_t j, const int32_t *dist, Vec2 *goal)
 {
 	int32_t x, y;
 	if (objects_unconfirmed_square(c, j, &x, &y) &&
-	    goals_near(c, goals_centre(x, y), dist, goal))
+	    look_at(c, j, x, y, dist, goal))
 		return true;
-	if (c->rival.arrivals < RIVAL_ARRIVALS - 1 && ring_unseen(c, j, &x, &y) &&
-	    goals_near(c, goals_centre(x, y), dist, goal) &&
+	if (spent(&c->rival) < RIVAL_ARRIVALS - 1 && ring_unseen(c, j, &x, &y) &&
+	    look_at(c, j, x, y, dist, goal) &&
 	    goals_distance(*goal, c->model.utak) > CONTROLLER_ARRIVED)
 		return true;
 	/* MERGED: only where a pull can be made (apart.h): no look or touch beside
@@ -143,6 +181,24 @@ static void rival_end(Controller *c, const char *what)
 		r->returning = true; /* back where he would have claimed (rival_goal) */
 }
 
+/* rival_lost(c): the rival gone to is no longer in the model (its squares joined to
+ * another node's, or renumbered beyond OBJECTS_SAME of where it was): the trip
+ * ends, but the rival is not marked settled, nor the trip counted against
+ * RIVAL_MAX (at most RIVAL_MAX such trips a task, r->lost), so that where the
+ * model holds it again it may be gone to again. WHY: a look on the
+ * way may part and join nodes for a while; marked tried, the rival seen again in
+ * the same place was left and the doubt stood on it unvisited (random g148, once
+ * the look went where the fovea holds it, fovealook.h). */
+static void rival_lost(Controller *c)
+{
+	RivalRun *r = &c->rival;
+	if (r->stage == RIVAL_GO && r->count > 0 && r->lost < RIVAL_MAX) {
+		r->lost++;
+		r->count--; /* its slot free again: at most RIVAL_MAX such, a task */
+	}
+	rival_end(c, "no longer in the model");
+}
+
 /* rival_set_off(c, j, stage): going to object node j begun (stage RIVAL_GO, a
  * rival; RIVAL_OWN_GO, the object gone round), only when the way there is known
  * (on this cycle's screen and space); false, nothing begun, when it is not. */
@@ -158,16 +214,18 @@ static bool rival_set_off(Controller *c, int32_t j, RivalStage stage)
 	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
 	goals_reach(g, ui, uj, dist);
 	Vec2 goal;
-	int arrivals = r->arrivals;
-	r->arrivals = 0; /* rival_way's looks at the ring count from the start */
+	int arrivals = r->arrivals, gained = r->gained;
+	r->arrivals = r->gained = 0; /* rival_way's looks at the ring count from the start */
 	bool way = rival_way(c, j, dist, &goal);
 	r->arrivals = arrivals;
+	r->gained = gained;
 	free(dist);
 	if (!way)
 		return false;
 	r->ident = (int32_t)c->model.node[j].ident;
 	r->at = node_centre(c, j);
-	r->arrivals = 0;
+	r->arrivals = r->gained = 0;
+	r->foveal = objects_read(c, j).foveal;
 	r->home_after = c->task.kind == TASK_GO_ROUND;
 	r->back = c->model.utak;
 	r->returning = false;
@@ -311,7 +369,7 @@ bool rival_goal(Controller *c, const int32_t *dist, GoalResult *out)
 		return false;
 	int32_t j = rival_node(c);
 	if (j < 0) {
-		rival_end(c, "no longer in the model");
+		rival_lost(c);
 		return c->rival.stage == RIVAL_GO && rival_goal(c, dist, out);
 	}
 	if (!rival_way(c, j, dist, &out->goal)) {
@@ -347,7 +405,7 @@ bool rival_arrive(Controller *c)
 	r->arrived_at = c->model.utak;
 	int32_t j = rival_node(c);
 	if (j < 0) {
-		rival_end(c, "no longer in the model");
+		rival_lost(c);
 		return true;
 	}
 	if (r->stage == RIVAL_OWN_GO) {
@@ -363,6 +421,11 @@ bool rival_arrive(Controller *c)
 			rival_end(c, "no probe can be made safely from where Utak can stand");
 		return true;
 	}
+	/* A look that showed more of it than any before is not counted (RIVAL_GAINS). */
+	int32_t foveal = objects_read(c, j).foveal;
+	if (foveal > r->foveal && r->gained < RIVAL_GAINS)
+		r->gained++;
+	r->foveal = foveal > r->foveal ? foveal : r->foveal;
 	if (j == objects_find_target(c)) {
 		rival_end(c, "seen closer, it is the task's object now");
 		return true;
@@ -377,7 +440,7 @@ bool rival_arrive(Controller *c)
 			snprintf(r->note + n, sizeof r->note - n,
 			         "; rival at (%.1f, %.1f): to pull it %d straight back twice and look (apart.h)", r->at.x,
 			         r->at.y, TUG_STEP);
-		} else if (r->arrivals >= RIVAL_ARRIVALS || !objects_merged_rival(c, j))
+		} else if (spent(r) >= RIVAL_ARRIVALS || !objects_merged_rival(c, j))
 			rival_end(c, "no pull can be made from where Utak can stand: the doubt stands");
 		return true;
 	}
@@ -392,13 +455,18 @@ bool rival_arrive(Controller *c)
 		return true;
 	}
 	if (q.confirmed && objects_touching(c, j)) {
+		/* Not from here: from beside it elsewhere, maybe (rival_goal: goals_beside,
+		 * and where that is here, nothing more is to be had). A look taken
+		 * where the fovea holds it (fovealook.h) may leave him touching it
+		 * where no probe can be made: tests/worlds/rival-piece.w, going
+		 * round, probed from the side goals_beside chooses. */
 		if (probe_begin_object(c, j))
 			r->stage = RIVAL_PROBE;
-		else
+		else if (spent(r) >= RIVAL_ARRIVALS)
 			rival_end(c, "no probe can be made safely here: the doubt stands");
 		return true;
 	}
-	if (r->arrivals >= RIVAL_ARRIVALS)
+	if (spent(r) >= RIVAL_ARRIVALS)
 		rival_end(c, "not seen whole from where Utak can stand: the doubt stands");
 	return true;
 }

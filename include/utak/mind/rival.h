@@ -29,8 +29,11 @@
  *
  * HOW. Utak goes to the rival: first to look at the squares of it the fovea has not
  * seen (objects_unconfirmed_square), and at the floor round it not seen in the
- * fovea (the probe asks for it), then beside it (goals_beside), at most
- * RIVAL_ARRIVALS goals. Each arrival asks whether the rival is still open
+ * fovea (the probe asks for it), each look from where the fovea holds the square
+ * (fovealook.h: it reaches three squares north and east of him, four south and
+ * west), then beside it (goals_beside), at most RIVAL_ARRIVALS goals, a look that
+ * showed more of it than any before not counted (RIVAL_GAINS). A rival that
+ * leaves the model on the way is not marked settled (rival_lost). Each arrival asks whether the rival is still open
  * (objects_rival_open): seen whole and named no square (nor an unnamed crumb), it
  * is settled. Touching it, seen whole, he probes it exactly as the claimed square
  * is probed (probe_begin: grasp, quarter-square pushes, looks, push back, release;
@@ -95,6 +98,12 @@
 /* Goals reached going to one rival (looks at its unseen squares, then beside it),
  * at most: a rival whose squares stay unseen from where Utak can stand is left. */
 #define RIVAL_ARRIVALS 4
+/* Arrivals whose look showed more of the rival in the fovea than any before it,
+ * not counted against RIVAL_ARRIVALS, at most: a rival wider than the fovea (8
+ * squares) is seen whole only a part a look (random g188: a piece of 98 squares,
+ * 85 of them seen in four looks, and the doubt stood). Each such look shows a
+ * square more at least, so the trip ends. */
+#define RIVAL_GAINS 6
 
 typedef enum RivalStage {
 	RIVAL_IDLE,
@@ -111,12 +120,15 @@ typedef struct RivalRun {
 	Vec2 at;         /* ... the centre of its rectangle when chosen, model frame */
 	int arrivals;    /* goals reached going to it */
 	Vec2 arrived_at; /* ... the last of them */
+	int gained;      /* ... of them, those that showed more of it in the fovea (RIVAL_GAINS) */
+	int32_t foveal;  /* its squares seen in the fovea, the most at any arrival */
 	bool home_after; /* "go round": home again when it is settled */
 	bool merged;     /* set off to as MERGED's rival: only a pull settles it (apart.h),
 			    never a probe (a pair is disproved as one square) */
 	Vec2 back;       /* where he stood beside the object he would claim ... */
 	bool returning;  /* ... and he is going back there (the others) */
 	int count;       /* rivals begun this task */
+	int lost;        /* ... and trips to one that left the model, not counted (rival_lost) */
 	int32_t tried_ident[RIVAL_MAX];
 	Vec2 tried_at[RIVAL_MAX];
 	char note[400]; /* what settling did since the last impression, for the trace */
