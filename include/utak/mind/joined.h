@@ -8,8 +8,8 @@
  *
  * WHY. Two squares of 5 side by side cover exactly a 10 x 5 brick's squares; a 9 x
  * 3 brick and a 3 x 6 one against its end, an L's; a brick against a free-standing
- * block of wall, an L's too. No look tells them from one polygon. Before, on such
- * hand-written worlds (/tmp/s27/shapes27/adv), "go brick" and "go lshape" claimed
+ * block of wall, an L's too. No look tells them from one polygon. Before, on 44 such
+ * hand-written worlds (not in the tree), "go brick" and "go lshape" claimed
  * the pair in 6 of 44 "go" runs, a false success each (the judge: "there is no
  * brick in this world").
  * HOW. Beside the object he would claim ("go round": where the loop closes, or from
