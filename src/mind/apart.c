@@ -78,13 +78,6 @@ const char *apart_verdict_text(ApartVerdict v)
 	}
 }
 
-/* node_centre(c, k): the centre of node k's rectangle, model frame. */
-static Vec2 node_centre(const Controller *c, int32_t k)
-{
-	const Box *r = &c->model.node[k].rect;
-	return vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
-}
-
 /* in_view(c, j, x, y, mx, my): moved from model square (x, y) by TUG_STEP along
  * (mx, my), every square node j's motion leaves empty (S \ (S + t)) would lie in
  * a cell of 1 or 2 x 2 squares of the look after it (apart_vacated_clear asks no
@@ -232,7 +225,7 @@ bool apart_begin(Controller *c, int32_t j)
 	a->verdict = APART_UNTRIED;
 	a->stage = APART_GRASPED;
 	a->grasp_due = true;
-	a->at = node_centre(c, j);
+	a->at = objects_node_centre(c, j);
 	a->squares = m->node[j].squares;
 	return true;
 }
@@ -345,7 +338,7 @@ bool apart_one(const Controller *c, int32_t j)
 		return false;
 	const ModelNode *n = &c->model.node[j];
 	for (int i = 0; i < a->kept; i++)
-		if ((a->one_ident[i] == n->ident || goals_distance(a->one_at[i], node_centre(c, j)) < OBJECTS_SAME) &&
+		if (objects_same(a->one_ident[i], a->one_at[i], n->ident, objects_node_centre(c, j)) &&
 		    a->one_squares[i] == n->squares)
 			return true;
 	return false;

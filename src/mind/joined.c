@@ -15,13 +15,6 @@
 #include "utak/mind/objects.h"
 #include "utak/mind/round.h"
 
-/* centre(c, k): the centre of node k's rectangle, model frame. */
-static Vec2 centre(const Controller *c, int32_t k)
-{
-	const Box *r = &c->model.node[k].rect;
-	return vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
-}
-
 bool joined_open(Controller *c, int32_t k)
 {
 	if ((c->task.kind != TASK_GO_SHAPE && c->task.kind != TASK_GO_ROUND) || c->task.shape == SHAPE_SQUARE || k < 0 ||
@@ -36,9 +29,9 @@ bool joined_tried(const Controller *c, int32_t k)
 	const JoinedRun *j = &c->joined;
 	if (k < 0)
 		return false;
-	Vec2 at = centre(c, k);
+	Vec2 at = objects_node_centre(c, k);
 	for (int i = 0; i < j->tried; i++)
-		if (j->tried_ident[i] == (int32_t)c->model.node[k].ident || goals_distance(j->tried_at[i], at) < OBJECTS_SAME)
+		if (objects_same(j->tried_ident[i], j->tried_at[i], (int32_t)c->model.node[k].ident, at))
 			return true;
 	return false;
 }
@@ -49,7 +42,7 @@ bool joined_begin(Controller *c, int32_t k)
 	if (j->pulling || j->going || j->tried >= JOINED_TRIED || !joined_open(c, k) || joined_tried(c, k))
 		return false;
 	j->tried_ident[j->tried] = (int32_t)c->model.node[k].ident;
-	j->tried_at[j->tried++] = centre(c, k);
+	j->tried_at[j->tried++] = objects_node_centre(c, k);
 	if (objects_touching(c, k) && apart_begin(c, k)) {
 		j->pulling = true;
 		c->have_plan = false;

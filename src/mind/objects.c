@@ -741,6 +741,12 @@ int32_t objects_rival(Controller *c, int32_t k)
 	return doubt_of(c, k, why, sizeof why, &rival) ? rival : -1;
 }
 
+Vec2 objects_node_centre(const Controller *c, int32_t k)
+{
+	const Box *r = &c->model.node[k].rect;
+	return vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
+}
+
 bool objects_lacks(const Controller *c, int32_t k, int32_t x, int32_t y)
 {
 	const WorldModel *m = &c->model;

@@ -811,7 +811,7 @@ bool probe_disproved(const Controller *c, int32_t ident, Vec2 at)
 {
 	const ProbeRun *p = &c->probe;
 	for (int i = 0; i < p->disproved_count; i++)
-		if (p->disproved_ident[i] == ident || goals_distance(p->disproved_at[i], at) < OBJECTS_SAME)
+		if (objects_same(p->disproved_ident[i], p->disproved_at[i], ident, at))
 			return true;
 	return false;
 }
@@ -821,7 +821,7 @@ double probe_width(const Controller *c, int32_t ident, Vec2 at)
 	const ProbeRun *p = &c->probe;
 	double most = 0;
 	for (int i = 0; i < p->measured_count; i++)
-		if (p->measured_ident[i] == ident || goals_distance(p->measured_at[i], at) < OBJECTS_SAME)
+		if (objects_same(p->measured_ident[i], p->measured_at[i], ident, at))
 			most = fmax(most, p->measured_width[i]);
 	return most;
 }

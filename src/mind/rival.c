@@ -19,14 +19,6 @@
 #include "utak/mind/round.h"
 #include "utak/mind/tug.h"
 
-/* node_centre(c, k): the centre of node k's rectangle, model frame: where an object
- * is remembered (a renumbered node is found again by it, within OBJECTS_SAME). */
-static Vec2 node_centre(const Controller *c, int32_t k)
-{
-	const Box *r = &c->model.node[k].rect;
-	return vec2((r->lo.x + r->hi.x) / 2, (r->lo.y + r->hi.y) / 2);
-}
-
 /* rival_node(c): the rival's node now, by ident or, renumbered, by place; -1 when
  * the model holds it no longer. */
 static int32_t rival_node(const Controller *c)
@@ -39,7 +31,7 @@ static int32_t rival_node(const Controller *c)
 			continue;
 		if ((int32_t)m->node[k].ident == c->rival.ident)
 			return k;
-		double d = goals_distance(node_centre(c, k), c->rival.at);
+		double d = goals_distance(objects_node_centre(c, k), c->rival.at);
 		if (d < best) {
 			best = d;
 			near = k;
@@ -223,7 +215,7 @@ static bool rival_set_off(Controller *c, int32_t j, RivalStage stage)
 	if (!way)
 		return false;
 	r->ident = (int32_t)c->model.node[j].ident;
-	r->at = node_centre(c, j);
+	r->at = objects_node_centre(c, j);
 	r->arrivals = r->gained = 0;
 	r->foveal = objects_read(c, j).foveal;
 	r->home_after = c->task.kind == TASK_GO_ROUND;
@@ -240,10 +232,9 @@ bool rival_own_probed(const Controller *c, int32_t k)
 	const RivalRun *r = &c->rival;
 	if (k < 0)
 		return false;
-	Vec2 at = node_centre(c, k);
+	Vec2 at = objects_node_centre(c, k);
 	for (int i = 0; i < r->own_count; i++)
-		if (r->own_ident[i] == (int32_t)c->model.node[k].ident ||
-		    goals_distance(r->own_at[i], at) < OBJECTS_SAME)
+		if (objects_same(r->own_ident[i], r->own_at[i], (int32_t)c->model.node[k].ident, at))
 			return true;
 	return false;
 }
@@ -291,7 +282,7 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	if (own && !rival_own_probed(c, k) && r->own_count < PROBE_RUNS && objects_touching(c, k) &&
 	    probe_begin_object(c, k)) {
 		r->own_ident[r->own_count] = (int32_t)c->model.node[k].ident;
-		r->own_at[r->own_count++] = node_centre(c, k);
+		r->own_at[r->own_count++] = objects_node_centre(c, k);
 		r->stage = RIVAL_OWN;
 		r->own_alone = !rival;
 		c->have_plan = false;
@@ -328,10 +319,9 @@ static bool begin(Controller *c, int32_t k, bool own_trip)
 	 * seed 6, a version that went: 3.17 off, a false success). */
 	if (merged_rival && c->task.kind == TASK_GO_ROUND && c->round_count > 0 && c->round_next >= c->round_count)
 		return false;
-	Vec2 at = node_centre(c, j);
+	Vec2 at = objects_node_centre(c, j);
 	for (int i = 0; i < r->count; i++)
-		if (r->tried_ident[i] == (int32_t)c->model.node[j].ident ||
-		    goals_distance(r->tried_at[i], at) < OBJECTS_SAME)
+		if (objects_same(r->tried_ident[i], r->tried_at[i], (int32_t)c->model.node[j].ident, at))
 			return false; /* settled once already: what it left stands */
 	if (!rival_set_off(c, j, RIVAL_GO))
 		return false;
@@ -415,7 +405,7 @@ bool rival_arrive(Controller *c)
 			rival_end(c, "no longer the task's object");
 		else if (objects_touching(c, j) && probe_begin_object(c, j)) {
 			r->own_ident[r->own_count] = (int32_t)c->model.node[j].ident;
-			r->own_at[r->own_count++] = node_centre(c, j);
+			r->own_at[r->own_count++] = objects_node_centre(c, j);
 			r->stage = RIVAL_OWN;
 		} else if (r->arrivals >= RIVAL_ARRIVALS)
 			rival_end(c, "no probe can be made safely from where Utak can stand");

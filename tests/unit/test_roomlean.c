@@ -20,60 +20,8 @@
 
 #include "test.h"
 #include "world_fixture.h"
-#include "utak/body/judge.h"
-#include "utak/body/motion.h"
-#include "utak/body/retina.h"
+#include "task_run.h"
 #include "utak/mind/controller.h"
-
-/* A run's outcome: the judge's verdict, Utak's belief, and his reason. */
-typedef struct Outcome {
-	bool achieved, believed;
-	char why[320];
-} Outcome;
-
-/* run(text, task_text): the task on the world, by the action cycle, at most 300
- * cycles (main.c's run_task, without output). */
-static Outcome run(const char *text, const char *task_text)
-{
-	Outcome o = {0};
-	load(text);
-	Task task;
-	Diag d;
-	TEST_CHECK(task_parse(task_text, &task, &d) == 0);
-	World start = world;
-	start.objects = calloc((size_t)world.object_count + 1, sizeof *start.objects);
-	if (world.object_count > 0)
-		memcpy(start.objects, world.objects, sizeof *start.objects * (size_t)world.object_count);
-	Controller *ctl = calloc(1, sizeof *ctl);
-	controller_init(ctl, PLANNER_SKELETON);
-	controller_set_task(ctl, &task);
-	MotionNoise noise;
-	motion_noise_init(&noise, 0, 1);
-	Impression sensed;
-	retina_sense(&world, &table, &sensed);
-	controller_start(ctl, &sensed);
-	Vec2 *trail = malloc(sizeof *trail * 302);
-	int32_t n = 0;
-	trail[n++] = world.utak;
-	MotorCommand cmd;
-	for (int cycle = 0; cycle < 300 && controller_decide(ctl, &cmd); cycle++) {
-		MotorOutcome mo;
-		motion_execute_noisy(&world, &table, &cmd, &noise, &mo);
-		trail[n++] = world.utak;
-		retina_sense(&world, &table, &sensed);
-		controller_perceive(ctl, &cmd, &sensed);
-	}
-	char why[256];
-	o.achieved = judge_task(&start, &world, &table, &task, trail, n, why, sizeof why);
-	o.believed = ctl->phase == PHASE_DONE;
-	snprintf(o.why, sizeof o.why, "%s", ctl->why);
-	controller_free(ctl);
-	free(ctl);
-	free(trail);
-	free(start.objects);
-	unload();
-	return o;
-}
 
 /* lean_world(text, size, gap, brick_x, ux): a 30 x 20 TABLE, a wall 1 thick across at
  * row 9 with a gap `gap` wide in its middle, a 6 x 6 square flush against the south

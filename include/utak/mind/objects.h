@@ -33,6 +33,7 @@
 #ifndef UTAK_OBJECTS_H
 #define UTAK_OBJECTS_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -47,6 +48,19 @@
  * the model has given it another number (seen coarsely, an object can merge with
  * the unknown for an impression and come back; squares). */
 #define OBJECTS_SAME 2.0
+
+/* objects_same(ident, at, node_ident, node_at): an object remembered by its model
+ * number and the centre of its rectangle is node's (number node_ident, centre
+ * node_at): the same number, or, renumbered, centres within OBJECTS_SAME. The one
+ * rule by which the probe, the rival's trips, the pulls and joined.h remember what
+ * they have settled. */
+static inline bool objects_same(int32_t ident, Vec2 at, int32_t node_ident, Vec2 node_at)
+{
+	return ident == node_ident || hypot(at.x - node_at.x, at.y - node_at.y) < OBJECTS_SAME;
+}
+
+/* objects_node_centre(c, k): the centre of node k's rectangle, model frame. */
+Vec2 objects_node_centre(const Controller *c, int32_t k);
 
 typedef struct ObjectReading {
 	Shape shape;

@@ -1,0 +1,70 @@
+/* task_run.h - a task run whole by the action cycle on a world from text, and the
+ * judge's verdict on it beside Utak's belief (paper 2.2's perceive-plan-act cycle,
+ * as main.c's run_task runs it, without output): for the controller's tests that
+ * take the simulator and the judge as their oracle. Shared by test_joined.c and
+ * test_roomlean.c. Include after world_fixture.h (load, unload, world, table). */
+#ifndef UTAK_TEST_TASK_RUN_H
+#define UTAK_TEST_TASK_RUN_H
+
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "test.h"
+#include "utak/body/judge.h"
+#include "utak/body/motion.h"
+#include "utak/body/retina.h"
+#include "utak/mind/controller.h"
+
+/* A run's outcome: the judge's verdict, Utak's belief, and his reason. */
+typedef struct Outcome {
+	bool achieved, believed;
+	char why[320];
+} Outcome;
+
+/* run(text, task_text): the task on the world, by the action cycle, at most 300
+ * cycles (main.c's run_task, without output). */
+static inline Outcome run(const char *text, const char *task_text)
+{
+	Outcome o = {0};
+	load(text);
+	Task task;
+	Diag d;
+	TEST_CHECK(task_parse(task_text, &task, &d) == 0);
+	World start = world;
+	start.objects = calloc((size_t)world.object_count + 1, sizeof *start.objects);
+	if (world.object_count > 0)
+		memcpy(start.objects, world.objects, sizeof *start.objects * (size_t)world.object_count);
+	Controller *ctl = calloc(1, sizeof *ctl);
+	controller_init(ctl, PLANNER_SKELETON);
+	controller_set_task(ctl, &task);
+	MotionNoise noise;
+	motion_noise_init(&noise, 0, 1);
+	Impression sensed;
+	retina_sense(&world, &table, &sensed);
+	controller_start(ctl, &sensed);
+	Vec2 *trail = malloc(sizeof *trail * 302);
+	int32_t n = 0;
+	trail[n++] = world.utak;
+	MotorCommand cmd;
+	for (int cycle = 0; cycle < 300 && controller_decide(ctl, &cmd); cycle++) {
+		MotorOutcome mo;
+		motion_execute_noisy(&world, &table, &cmd, &noise, &mo);
+		trail[n++] = world.utak;
+		retina_sense(&world, &table, &sensed);
+		controller_perceive(ctl, &cmd, &sensed);
+	}
+	char why[256];
+	o.achieved = judge_task(&start, &world, &table, &task, trail, n, why, sizeof why);
+	o.believed = ctl->phase == PHASE_DONE;
+	snprintf(o.why, sizeof o.why, "%s", ctl->why);
+	controller_free(ctl);
+	free(ctl);
+	free(trail);
+	free(start.objects);
+	unload();
+	return o;
+}
+
+#endif
