@@ -22,7 +22,10 @@
  * wall nothing places him at all. Near the start his first impression, taken where
  * he knew where he stood, corrects him (round_recognise_home); home, he claims the
  * task only when he may be no more than CONTROLLER_HOME_SD off on each axis
- * (round_home_doubt). */
+ * (round_home_doubt). Corrections that set him one way and back on the way (a
+ * probe's quarter pushes, a leg past clutter) put his place in doubt until the look
+ * home settles it: the model's disparity and the first impression, two
+ * recognitions by features, agree on his believed square. */
 #include "utak/mind/round.h"
 
 #include <math.h>
@@ -238,18 +241,34 @@ bool round_home_doubt(const Controller *c, char *why, size_t size)
 	double e = worldmodel_motion_error(&c->model);
 	if (e <= 0)
 		return false; /* motion has looked exact: the belief is as good as the model */
-	int32_t x, y;
-	worldmodel_utak_square(&c->model, &x, &y);
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	int32_t x = ux, y = uy;
 	bool placed[2] = {false, false};
-	worldmodel_recognise_first(&c->model, &c->impression, &x, &y, placed);
+	bool judged = worldmodel_recognise_first(&c->model, &c->impression, &x, &y, placed);
+	/* What he sees now, set against his first impression (taken where he knew
+	 * where he stood): on an axis where it places him on his believed square, he
+	 * is there (recognition by features, paper 3.5's fallback). Where it places him
+	 * on another, it does not count: something it showed may have moved since (a
+	 * square probed beside the start, worlds/square-behind.w under noise, seeds 2,
+	 * 5 and 8: it placed him a square off on both axes, and he was home in each),
+	 * and the moves since the model last placed him say how far off he may be. */
+	bool home[2];
+	for (int a = 0; a < 2; a++)
+		home[a] = judged && placed[a] && (a ? y == uy : x == ux);
 	double sd[2];
 	for (int a = 0; a < 2; a++)
-		sd[a] = placed[a] ? 0 : e * sqrt(c->model.unplaced[a]);
+		sd[a] = home[a] ? 0 : e * sqrt(c->model.unplaced[a]);
 	/* Corrected one way and back again, again and again, along an axis in the last
 	 * moves: the impressions fit two places there, and whichever he stands at
 	 * places him (worlds/west.w under noise, seed 1: each move home set him a
 	 * square one way, the next a square the other, and he claimed home 2 squares
-	 * off). Two such turns in a row, at least: he may be off by their spread. */
+	 * off). Two such turns in a row, at least: he may be off by their spread,
+	 * unless he has looked, home, and two recognitions agree on his square along
+	 * that axis: the model's disparity on this impression placed him there
+	 * (unplaced 0) and so does his first impression (home). Then the turns were
+	 * earlier, and settled since (worlds/nearcorner.w, seed 2: a probe's quarter
+	 * pushes, each set a square one way and the next back; home, both place him). */
 	bool flip[2] = {false, false};
 	for (int b = 0; b < 2; b++) {
 		int turns = 0;
@@ -264,7 +283,8 @@ bool round_home_doubt(const Controller *c, char *why, size_t size)
 			lo = fmin(lo, v);
 			hi = fmax(hi, v);
 		}
-		if (turns >= ROUND_FIX_TURNS && hi - lo > sd[b]) {
+		bool settled = home[b] && c->model.unplaced[b] == 0;
+		if (turns >= ROUND_FIX_TURNS && hi - lo > sd[b] && !settled) {
 			sd[b] = hi - lo;
 			flip[b] = true;
 		}

@@ -1,8 +1,8 @@
 /* task_run.h - a task run whole by the action cycle on a world from text, and the
  * judge's verdict on it beside Utak's belief (paper 2.2's perceive-plan-act cycle,
  * as main.c's run_task runs it, without output): for the controller's tests that
- * take the simulator and the judge as their oracle. Shared by test_joined.c and
- * test_roomlean.c. Include after world_fixture.h (load, unload, world, table). */
+ * take the simulator and the judge as their oracle. Shared by test_joined.c,
+ * test_roomlean.c and test_roundhome.c. Include after world_fixture.h (load, unload, world, table). */
 #ifndef UTAK_TEST_TASK_RUN_H
 #define UTAK_TEST_TASK_RUN_H
 
@@ -17,15 +17,19 @@
 #include "utak/body/retina.h"
 #include "utak/mind/controller.h"
 
-/* A run's outcome: the judge's verdict, Utak's belief, and his reason. */
+/* A run's outcome: the judge's verdict, Utak's belief, and his reason; and the
+ * corrections of his place the last CONTROLLER_FIXES impressions made (oldest
+ * first), which a test may read to see what the run put him through. */
 typedef struct Outcome {
 	bool achieved, believed;
 	char why[320];
+	Vec2 fix[CONTROLLER_FIXES];
 } Outcome;
 
-/* run(text, task_text): the task on the world, by the action cycle, at most 300
- * cycles (main.c's run_task, without output). */
-static inline Outcome run(const char *text, const char *task_text)
+/* run_noisy(text, task_text, sigma, seed): the task on the world, by the action
+ * cycle, at most 300 cycles, the simulator's motion noisy by sigma with that seed
+ * (main.c's run_task with --noise sigma --seed seed, without output). */
+static inline Outcome run_noisy(const char *text, const char *task_text, double sigma, uint64_t seed)
 {
 	Outcome o = {0};
 	load(text);
@@ -40,7 +44,7 @@ static inline Outcome run(const char *text, const char *task_text)
 	controller_init(ctl, PLANNER_SKELETON);
 	controller_set_task(ctl, &task);
 	MotionNoise noise;
-	motion_noise_init(&noise, 0, 1);
+	motion_noise_init(&noise, sigma, seed);
 	Impression sensed;
 	retina_sense(&world, &table, &sensed);
 	controller_start(ctl, &sensed);
@@ -59,12 +63,20 @@ static inline Outcome run(const char *text, const char *task_text)
 	o.achieved = judge_task(&start, &world, &table, &task, trail, n, why, sizeof why);
 	o.believed = ctl->phase == PHASE_DONE;
 	snprintf(o.why, sizeof o.why, "%s", ctl->why);
+	for (int i = 0; i < CONTROLLER_FIXES; i++)
+		o.fix[i] = ctl->fix[(ctl->fix_next + i) % CONTROLLER_FIXES];
 	controller_free(ctl);
 	free(ctl);
 	free(trail);
 	free(start.objects);
 	unload();
 	return o;
+}
+
+/* run(text, task_text): the same with exact motion. */
+static inline Outcome run(const char *text, const char *task_text)
+{
+	return run_noisy(text, task_text, 0, 1);
 }
 
 #endif

@@ -30,7 +30,10 @@ bool round_stale(Controller *c);
  * by what his first impression showed; true when it was (the belief moved). */
 bool round_recognise_home(Controller *c);
 /* round_home_doubt(c, why, size): home, by his belief, but motion has erred and
- * what he sees does not place him where he began: true, and why, when he doubts it. */
+ * what he sees does not place him where he began: true, and why, when he doubts it.
+ * Corrections that set him one way and back along an axis are settled by the look
+ * home when both the model's disparity and his first impression place him on his
+ * believed square along it. */
 bool round_home_doubt(const Controller *c, char *why, size_t size);
 
 #endif
