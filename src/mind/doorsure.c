@@ -42,7 +42,47 @@ static bool coarse(const Controller *c, int64_t k)
 	return e.res > WORLDMODEL_UNSEEN && e.res < WORLDMODEL_RES_FOVEA;
 }
 
+/* mark_unsettled(c, g, room, start, mark): marks (1) each cell seen only coarsely,
+ * faint floor or occupied, within one (8-neighbour) of a door cell of this reading
+ * (free on g, no region), or within one of a cell of the start's region and of a
+ * cell of another: the squares whose closer look can change this reading. */
+static void mark_unsettled(const Controller *c, const Grid *g, const int32_t *room, int32_t start, uint8_t *mark)
+{
+	const Screen *s = &c->screen;
+	int32_t w = s->w, h = s->h;
+	for (int32_t j = 0; j < h; j++)
+		for (int32_t i = 0; i < w; i++) {
+			int64_t k = (int64_t)j * w + i;
+			if (mark[k] || !coarse(c, k))
+				continue;
+			if (s->label[k] == SCREEN_SPACE && !faint_cell(&c->model, s, k))
+				continue; /* floor a zero cell read: settled */
+			bool door = false, own = false, other = false;
+			for (int32_t b = j - 1; b <= j + 1; b++)
+				for (int32_t a = i - 1; a <= i + 1; a++) {
+					if (a < 0 || b < 0 || a >= w || b >= h)
+						continue;
+					int64_t q = (int64_t)b * w + a;
+					if (g->cells[q] != GRID_FREE)
+						continue;
+					if (room[q] < 0)
+						door = true;
+					else if (room[q] == start)
+						own = true;
+					else
+						other = true;
+				}
+			if (door || (own && other))
+				mark[k] = 1;
+		}
+}
+
 DoorSure doorsure_corner(const Controller *c, Vec2 at)
+{
+	return doorsure_corner_marks(c, at, NULL);
+}
+
+DoorSure doorsure_corner_marks(const Controller *c, Vec2 at, uint8_t *mark)
 {
 	const Screen *s = &c->screen;
 	int32_t w = s->w, h = s->h, si, sj, pi, pj;
@@ -57,7 +97,9 @@ DoorSure doorsure_corner(const Controller *c, Vec2 at)
 	bool parted = false;
 	int32_t px = s->x0 + pi, py = s->y0 + pj;
 	int64_t here = goals_corner_score(c->task.corner, px, py);
-	for (int reading = 0; reading < 5 && !parted; reading++) {
+	/* With marks wanted every reading is asked (each doubting one marks what
+	 * would settle it); the verdict is the same (any reading doubting). */
+	for (int reading = 0; reading < 5 && (!parted || mark); reading++) {
 		bool faint_wall = reading & 1;
 		double slack = reading == 2 || reading == 3 ? DOORSURE_SLACK : 0;
 		memcpy(g.cells, s->fixed.cells, (size_t)n);
@@ -99,7 +141,16 @@ DoorSure doorsure_corner(const Controller *c, Vec2 at)
 			apart |= room[k] == start && s->label[k] != SCREEN_UNKNOWN &&
 				 goals_corner_score(c->task.corner, s->x0 + (int32_t)(k % w), s->y0 + (int32_t)(k / w)) - here >
 				     CONTROLLER_CORNER_SLACK;
-		parted = apart;
+		if (!apart)
+			continue;
+		parted = true;
+		if (mark) {
+			mark_unsettled(c, &g, room, start, mark);
+			if (reading == 4)
+				for (int64_t k = 0; k < n; k++)
+					if (jamb[k])
+						mark[k] = 1; /* the jambs that may lie back: a look settles them */
+		}
 	}
 	free(jamb);
 	free(room);

@@ -37,15 +37,15 @@
  * may be the judge's failure, and he DOUBTS it. Space never seen is left to
  * roomdoubt.h and hallsplit.h (a better corner in the unseen is their look).
  * It is asked last (controller.c, corner_door_doubt), where the claim would be
- * made: it turns a claim into a doubt at the same square and changes nothing else,
- * so it cannot make a false success. LOOKS TRIED: going first to look, from nearby,
- * at the squares seen only coarsely that could tell (beside a door cell of a
- * reading that doubts, or between S's region and another, and the jambs of reading
- * 4), at most 6 a task, within 60 steps, achieved more (the simplest two-room
- * worlds: 368 sure of 576 against 266 doubting only) but changed the way and the
- * other checks' looks, and made a false success of its own (a wall 2 thick at row
- * 21 with a door 4 wide, facing east, "go nw-corner": 8 short, claimed, where
- * 49e82b6 doubted); dropped.
+ * made, after every other check of the corner has let it stand. LOOKS: tried first
+ * before the other checks (0e799b9), a look changed the way and those checks'
+ * looks and made a false success of its own (a wall 2 thick at row 21 with a door
+ * 4 wide, facing east, "go nw-corner": 8 short, claimed); dropped (803a97c). Now
+ * (doorlook.h) the look comes only where this rule would doubt, last: each reading
+ * that doubts marks the squares seen only coarsely whose closer look could change
+ * it (doorsure_corner_marks), he looks at them, comes back, every check is asked
+ * again, and this rule decides as before. A claim never rests on a look set off
+ * on and given up on the way (doorlook.h, SAFETY).
  *
  * LIMITS. A wall the model has lost outright (its squares floor read by a zero cell,
  * or placed a square or two off when Utak's believed point slid along it: the
@@ -81,5 +81,12 @@ int32_t doorsure_start_room(const Grid *g, const int32_t *room, int32_t si, int3
  * this cycle's screen. COMPLEXITY: five watersheds, O(w h log(w h)) each, and
  * O(w h DOORSURE_JAMB^2) for the jambs. */
 DoorSure doorsure_corner(const struct Controller *c, Vec2 at);
+
+/* doorsure_corner_marks(c, at, mark): as doorsure_corner; with mark (screen-sized,
+ * zeroed by the caller) not NULL, every reading is asked, and each that doubts sets
+ * mark to 1 on the squares seen only coarsely whose closer look could change it:
+ * beside a door cell of that reading, between the start's region and another, and
+ * (reading 4) the jambs it set back (doorlook.h looks at them). */
+DoorSure doorsure_corner_marks(const struct Controller *c, Vec2 at, uint8_t *mark);
 
 #endif
