@@ -30,6 +30,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/carrytask.h"
+#include "utak/mind/doorlook.h"
 #include "utak/mind/doorsure.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/joined.h"
@@ -328,15 +329,43 @@ static bool corner_hall_split(Controller *c)
 
 /* corner_door_doubt(c): whether a door the judge may count lies between the start
  * and Utak's point, or the start's room may hold a better corner, on some reading
- * the eye leaves open (doorsure.h); if so the task fails with his doubt. Asked
- * last, where the claim would be made: it only ever turns a claim into a doubt, at
- * the same square, so it cannot change the judge's verdict (a look first, tried,
- * changed the way and the other checks' looks, and made a false success of its
- * own on a two-room world: doorsure.h). */
+ * the eye leaves open (doorsure.h); if so the next goal is a look at the squares
+ * seen only coarsely that can tell (doorlook.h: c->room_look), or, with none left,
+ * the task fails with his doubt. Asked last, where the claim would be made: a look
+ * only ever replaces a doubt, and back at the corner every check is asked again. */
 static bool corner_door_doubt(Controller *c)
 {
-	if (doorsure_corner(c, c->model.utak) == DOORSURE_SURE)
+	int64_t n = (int64_t)c->screen.w * c->screen.h;
+	uint8_t *mark = util_alloc((size_t)(n > 0 ? n : 1), 1);
+	memset(mark, 0, (size_t)(n > 0 ? n : 1));
+	DoorSure d = doorsure_corner_marks(c, c->model.utak, mark);
+	int32_t *dist = utak_reach(c);
+	bool look = false;
+	if (c->door_look_pending) {
+		/* A look set off on and given up (another check's look took the
+		 * goal, or the map moved it out of reach): what changed the readings
+		 * since is not the look, and no claim rests on it (doorlook.h,
+		 * SAFETY). It is set off on again, while it can be reached. */
+		int32_t li, lj;
+		look = c->door_look_retries < DOORLOOK_RETRIES && goals_cell_of(&c->screen, c->door_look_at, &li, &lj) &&
+		       dist[(int64_t)lj * c->screen.w + li] >= 0;
+		if (look) {
+			c->door_look_retries++;
+			c->room_look_at = c->door_look_at;
+		}
+		d = DOORSURE_DOUBT;
+	} else if (d == DOORSURE_DOUBT)
+		look = doorlook_choose(c, dist, mark, &c->room_look_at);
+	free(dist);
+	free(mark);
+	if (d == DOORSURE_SURE)
 		return false;
+	if (look) {
+		c->room_look = true; /* the next goal: the look (goals.c keeps it until reached) */
+		c->door_look_at = c->room_look_at;
+		c->door_look_pending = true;
+		return true;
+	}
 	c->phase = PHASE_FAILED;
 	snprintf(c->why, sizeof c->why,
 		 "Utak cannot tell he is in the %s: a door the judge may count, by a square or a wall seen only from afar, may part him from the room he started in",
@@ -443,6 +472,8 @@ static void arrive(Controller *c)
 		return; /* where the object he would claim can be pulled from (joined.h) */
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
+		if (c->door_look_pending && goals_distance(c->goal, c->door_look_at) < 0.5)
+			c->door_look_pending = false; /* doorlook.h's look taken */
 		c->room_look = c->room_following = false;
 		hallsplit_arrive(c); /* beside a blob: touch has felt it, or not (hallsplit.h) */
 		return;
@@ -480,7 +511,7 @@ static void arrive(Controller *c)
 			c->room_look = true; /* the next goal: beside a door's jamb nearby, to touch it (roomlean.h) */
 		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c) &&
 			 !corner_leaning(c, false) && !corner_door_doubt(c))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object, corner_leaning and corner_door_doubt fail it, with his doubt) */
+			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object, corner_leaning and corner_door_doubt fail it, with his doubt; corner_door_doubt may send him to look first) */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

@@ -163,6 +163,10 @@ typedef struct Controller {
 				   followed from the last look at it (roomdoubt_frontier) */
 	Vec2 room_follow_at;	/* ... that look */
 	bool room_following;	/* ... and it is the current goal, kept until reached */
+	int door_looks;		/* looks set off on where doorsure.h would doubt the corner (doorlook.h) */
+	bool door_look_pending;	/* ... the last not yet reached: no claim until it is */
+	Vec2 door_look_at;	/* ... the last, where it is taken from */
+	int door_look_retries;	/* ... set off on again after the goal was dropped on the way */
 	/* Frontier goals already reached: a frontier whose unknown stays unknown
 	 * when Utak stands at it (it is out of the eye's reach) is not tried again. */
 	Vec2 visited[CONTROLLER_MAX_VISITED];
