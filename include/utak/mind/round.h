@@ -33,7 +33,9 @@ bool round_recognise_home(Controller *c);
  * what he sees does not place him where he began: true, and why, when he doubts it.
  * Corrections that set him one way and back along an axis are settled by the look
  * home when both the model's disparity and his first impression place him on his
- * believed square along it. */
+ * believed square along it. Where the first impression does not place him along an
+ * axis and fits what he sees best on another square along it, he doubts it however
+ * the model placed him. */
 bool round_home_doubt(const Controller *c, char *why, size_t size);
 
 #endif
