@@ -16,7 +16,8 @@
  *
  * THE PARTS. The goal of each task and of exploring is chosen in goals.c; going
  * round an object is laid out in round.c; pushing (where to hold an object, its
- * configuration space, seating it in a corner) is push.c. This file keeps the cycle
+ * configuration space, seating it in a corner) is push.c; the checks a corner or
+ * next-room claim rests on are roomclaim.c. This file keeps the cycle
  * itself: the phases (ControllerPhase), the plan and its viability, and what
  * arriving at a goal means in each phase (arrive). A new kind of task adds a goal
  * in goals.c and, if it needs one, a phase here.
@@ -30,8 +31,6 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/carrytask.h"
-#include "utak/mind/doorlook.h"
-#include "utak/mind/doorsure.h"
 #include "utak/mind/goals.h"
 #include "utak/mind/joined.h"
 #include "utak/mind/objects.h"
@@ -40,8 +39,8 @@
 #include "utak/mind/rival.h"
 #include "utak/mind/pushclear.h"
 #include "utak/mind/pushturn.h"
+#include "utak/mind/roomclaim.h"
 #include "utak/mind/roomdoubt.h"
-#include "utak/mind/roomlean.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/round.h"
 #include "utak/mind/shape.h"
@@ -263,191 +262,6 @@ static bool round_trips(Controller *c, const MotorCommand *cmd, int32_t seen)
 	return true;
 }
 
-/* utak_reach(c): breadth-first steps from Utak's cell over this cycle's screen
- * (goals_reach), for roomdoubt.h's checks; the caller frees. */
-static int32_t *utak_reach(const Controller *c)
-{
-	int32_t ui, uj;
-	goals_cell_of(&c->screen, c->model.utak, &ui, &uj);
-	int32_t *dist = util_alloc((size_t)c->screen.w * (size_t)c->screen.h, sizeof *dist);
-	goals_reach(&c->screen.free, ui, uj, dist);
-	return dist;
-}
-
-/* corner_room_doubt(c): whether the model can tell that Utak's point is in the room
- * he started in (roomdoubt.h), on this cycle's screen (goals_corner_shortfall built
- * it). */
-static RoomDoubt corner_room_doubt(Controller *c)
-{
-	int32_t *dist = utak_reach(c);
-	Vec2 look;
-	RoomDoubt d = roomdoubt_check(c, dist, c->model.utak, &look);
-	free(dist);
-	return d;
-}
-
-/* corner_room_look(c, check): whether the start's room may be other than the model
- * shows toward a better corner, by roomdoubt.h's check (roomdoubt_beyond: past a
- * door seen in part; roomdoubt_jambs: a door whose width is set by squares seen
- * coarsely); if so, c->room_look_at is where
- * to look from. */
-static bool corner_room_look(Controller *c, RoomDoubt (*check)(const Controller *, const int32_t *, Vec2 *))
-{
-	int32_t *dist = utak_reach(c);
-	bool look = check(c, dist, &c->room_look_at) == ROOMDOUBT_LOOK;
-	free(dist);
-	return look;
-}
-
-/* corner_frontier(c): whether the start's room runs into the unseen as a passage
- * (roomdoubt_frontier); goals_choose then looks along it before the corner again. */
-static bool corner_frontier(Controller *c)
-{
-	int32_t *dist = utak_reach(c);
-	Vec2 look;
-	bool seen_in_part = roomdoubt_frontier(c, dist, c->model.utak, c->room_follow ? &c->room_follow_at : NULL,
-					       &look) == ROOMDOUBT_LOOK;
-	free(dist);
-	return seen_in_part;
-}
-
-/* corner_hall_split(c): whether a blob seen only coarsely may be a wall that parts
- * the start's room from Utak's point (hallsplit.h); if so he goes to touch it
- * (hallsplit_settle), or, when touch cannot settle it, the task fails with his
- * doubt. */
-static bool corner_hall_split(Controller *c)
-{
-	Vec2 at;
-	HallVerdict v = hallsplit_settle(c, c->model.utak, &at);
-	if (v != HALL_DOUBT)
-		return v == HALL_GOING; /* going: the next goal is beside the blob, to touch it */
-	c->phase = PHASE_FAILED;
-	snprintf(c->why, sizeof c->why, "Utak cannot tell he is in the %s: %s", task_corner_name(c->task.corner),
-		 c->hall.why);
-	return true;
-}
-
-/* corner_door_doubt(c): whether a door the judge may count lies between the start
- * and Utak's point, or the start's room may hold a better corner, on some reading
- * the eye leaves open (doorsure.h); if so the next goal is a look at the squares
- * seen only coarsely that can tell (doorlook.h: c->room_look), or, with none left,
- * the task fails with his doubt. Asked last, where the claim would be made: a look
- * only ever replaces a doubt, and back at the corner every check is asked again. */
-static bool corner_door_doubt(Controller *c)
-{
-	int64_t n = (int64_t)c->screen.w * c->screen.h;
-	uint8_t *mark = util_alloc((size_t)(n > 0 ? n : 1), 1);
-	memset(mark, 0, (size_t)(n > 0 ? n : 1));
-	DoorSure d = doorsure_corner_marks(c, c->model.utak, mark);
-	int32_t *dist = utak_reach(c);
-	bool look = false;
-	if (c->door_look_pending) {
-		/* A look set off on and given up (another check's look took the
-		 * goal, or the map moved it out of reach): what changed the readings
-		 * since is not the look, and no claim rests on it (doorlook.h,
-		 * SAFETY). It is set off on again, while it can be reached. */
-		int32_t li, lj;
-		look = c->door_look_retries < DOORLOOK_RETRIES && goals_cell_of(&c->screen, c->door_look_at, &li, &lj) &&
-		       dist[(int64_t)lj * c->screen.w + li] >= 0;
-		if (look) {
-			c->door_look_retries++;
-			c->room_look_at = c->door_look_at;
-		}
-		d = DOORSURE_DOUBT;
-	} else if (d == DOORSURE_DOUBT)
-		look = doorlook_choose(c, dist, mark, &c->room_look_at);
-	free(dist);
-	free(mark);
-	if (d == DOORSURE_SURE)
-		return false;
-	if (look) {
-		c->room_look = true; /* the next goal: the look (goals.c keeps it until reached) */
-		c->door_look_at = c->room_look_at;
-		c->door_look_pending = true;
-		return true;
-	}
-	c->phase = PHASE_FAILED;
-	snprintf(c->why, sizeof c->why,
-		 "Utak cannot tell he is in the %s: a door the judge may count, by a square or a wall seen only from afar, may part him from the room he started in",
-		 task_corner_name(c->task.corner));
-	return true;
-}
-
-/* corner_felt_object(c): touch feels an object (a letter, not the verge's B) on a
- * square beside Utak that lies farther toward the task's corner than his own; if
- * so the task fails with his doubt. WHY: the judge counts an object's squares as
- * squares of the room (a corner is measured against floor or object, judge.h),
- * and an object pressed into the corner reads, to the eye, as part of the wall it
- * leans on (paper 3.4.2): the model's best floor is then short of the judge's
- * corner, and without this Utak claimed it (a brick in the north-east corner,
- * "go ne-corner": 5 short, believed achieved). Touch is the sense that tells an
- * object from the wall; how far such an object reaches into the corner the eye
- * cannot say, so any square of it beyond his own puts the corner in doubt. */
-static bool corner_felt_object(Controller *c)
-{
-	int32_t ux, uy;
-	worldmodel_utak_square(&c->model, &ux, &uy);
-	int64_t here = goals_corner_score(c->task.corner, ux, uy);
-	for (int i = 0; i < TOUCH_CELLS; i++) {
-		char colour = c->impression.touch[i];
-		int32_t x = ux + goals_touch_offset[i][0], y = uy + goals_touch_offset[i][1];
-		if (colour < 'A' || colour > 'Z' || colour == 'B' || goals_corner_score(c->task.corner, x, y) <= here)
-			continue;
-		c->phase = PHASE_FAILED;
-		snprintf(c->why, sizeof c->why,
-			 "Utak cannot tell he is in the %s: touch feels an object (%c) beside him at (%.1f, %.1f), nearer the corner, that the eye reads as wall: its squares, the room's for the corner, may reach farther into it",
-			 task_corner_name(c->task.corner), colour, x + 0.5, y + 0.5);
-		return true;
-	}
-	return false;
-}
-
-/* lean_settle(c, r, at, from, look, claim): what roomlean.h's answer r means for a
- * claim: with look, true when a jamb nearby is to be touched first (c->room_look_at
- * beside it, at from); without, true when touch felt an object on one (at), and then
- * the task fails with his doubt, claim naming what he cannot tell. */
-static bool lean_settle(Controller *c, RoomLean r, Vec2 at, Vec2 from, bool look, const char *claim)
-{
-	if (look) {
-		if (r == ROOMLEAN_LOOK)
-			c->room_look_at = from;
-		return r == ROOMLEAN_LOOK;
-	}
-	if (r != ROOMLEAN_DOUBT)
-		return false;
-	c->phase = PHASE_FAILED;
-	snprintf(c->why, sizeof c->why,
-		 "Utak cannot tell %s may be no door: touch felt an object's colour on its jamb at (%.1f, %.1f), and objects are space to rooms",
-		 claim, at.x, at.y);
-	return true;
-}
-
-/* corner_leaning(c, look): a door the corner's claim rests on whose jamb may be an
- * object (roomlean.h; lean_settle). */
-static bool corner_leaning(Controller *c, bool look)
-{
-	Vec2 at, from;
-	char claim[160];
-	int32_t *dist = look ? utak_reach(c) : NULL;
-	RoomLean r = roomlean_corner(c, goals_subject_score(c), dist, &at, &from);
-	free(dist);
-	snprintf(claim, sizeof claim, "he is in the %s: the door that parts his room from floor that would beat the corner",
-		 task_corner_name(c->task.corner));
-	return lean_settle(c, r, at, from, look, claim);
-}
-
-/* next_leaning(c, look): as corner_leaning, for "go next-room" at Utak's place
- * (roomlean_next). */
-static bool next_leaning(Controller *c, bool look)
-{
-	Vec2 at, from;
-	int32_t *dist = look ? utak_reach(c) : NULL;
-	RoomLean r = roomlean_next(c, dist, &at, &from);
-	free(dist);
-	return lean_settle(c, r, at, from, look,
-			   "he is in another room: the door that parts him from the room he started in");
-}
-
 /* bump_trip(c, k): a corner of the wall that may be a square pressed against it,
  * nearer the start than node k, can still be reached and felt (wallbump.h): the
  * claim waits, and the next goal (goals.c) is beside it. */
@@ -455,7 +269,7 @@ static bool bump_trip(Controller *c, int32_t k)
 {
 	if (k < 0 || c->task.shape != SHAPE_SQUARE)
 		return false;
-	int32_t *dist = utak_reach(c);
+	int32_t *dist = roomclaim_reach(c);
 	Vec2 goal;
 	bool go = wallbump_look(c, dist, c->start, goals_distance(objects_read(c, k).centroid, c->start), &goal);
 	free(dist);
@@ -489,29 +303,29 @@ static void arrive(Controller *c)
 		return; /* an object in the way of the corner: grasp it, or let it go */
 	switch (c->task.kind) {
 	case TASK_GO_NEXT_ROOM:
-		if (next_leaning(c, true))
+		if (roomclaim_next_leaning(c, true))
 			c->room_look = true; /* the next goal: beside a door's jamb, to touch it (roomlean.h) */
-		else if (!next_leaning(c, false))
-			c->phase = PHASE_DONE; /* (next_leaning fails it, with his doubt) */
+		else if (!roomclaim_next_leaning(c, false))
+			c->phase = PHASE_DONE; /* (roomclaim_next_leaning fails it, with his doubt) */
 		return;
 	case TASK_GO_CORNER:
 		if ((short_by = goals_corner_shortfall(c)) > CONTROLLER_CORNER_SLACK)
 			goals_corner_failed(c, short_by);
-		else if (corner_room_look(c, roomdoubt_beyond))
+		else if (roomclaim_corner_look(c, roomdoubt_beyond))
 			c->room_look = true; /* the next goal: a look past the undecided door */
-		else if (corner_room_look(c, roomdoubt_jambs))
+		else if (roomclaim_corner_look(c, roomdoubt_jambs))
 			c->room_look = true; /* the next goal: a look at the door's coarse side */
-		else if (corner_frontier(c))
+		else if (roomclaim_frontier(c))
 			; /* the room seen in part: the next goal is a look at its unseen side */
-		else if (corner_room_doubt(c) == ROOMDOUBT_LOOK)
+		else if (roomclaim_corner_doubt(c) == ROOMDOUBT_LOOK)
 			; /* not sure of the room: the next goal is a look at the wall between */
 		else if (hallsplit_hidden_look(c))
 			c->room_look = true; /* the next goal: a look at what may join a better floor */
-		else if (corner_leaning(c, true))
+		else if (roomclaim_corner_leaning(c, true))
 			c->room_look = true; /* the next goal: beside a door's jamb nearby, to touch it (roomlean.h) */
-		else if (!goals_corner_hidden(c) && !corner_hall_split(c) && !corner_felt_object(c) &&
-			 !corner_leaning(c, false) && !corner_door_doubt(c))
-			c->phase = PHASE_DONE; /* (goals_corner_hidden, corner_hall_split, corner_felt_object, corner_leaning and corner_door_doubt fail it, with his doubt; corner_door_doubt may send him to look first) */
+		else if (!goals_corner_hidden(c) && !roomclaim_hall_split(c) && !roomclaim_felt_object(c) &&
+			 !roomclaim_corner_leaning(c, false) && !roomclaim_door_doubt(c))
+			c->phase = PHASE_DONE; /* (goals_corner_hidden, roomclaim_hall_split, roomclaim_felt_object, roomclaim_corner_leaning and roomclaim_door_doubt fail it, with his doubt; roomclaim_door_doubt may send him to look first) */
 		return;
 	case TASK_GO_SHAPE:
 		if (objects_touching_target(c)) {

@@ -20,7 +20,7 @@
  *    Utak, faint floor between them and the verge: at most 1 in 20 marked
  *    (thin_bar; the case of tests/worlds/corner-coarse-face.w).
  *  - And whole runs (the action cycle, the judge's verdict: task_run.h) on the 43
- *    two-room worlds of /tmp/s27/door27's grid where Utak claimed a corner of the
+ *    two-room worlds of tests/gen/tworooms.py's grid where Utak claimed a corner of the
  *    room beyond (main 742d775, or door27's corner look): none claims falsely.
  * This test is a helper that sees both sides of the wall (as test_faint.c). */
 #include <stdint.h>
@@ -191,7 +191,7 @@ TEST_CASE(a_square_by_the_wall_is_not)
 }
 
 /* The two-room grid's runs that were false successes at main 742d775 or with the
- * corner look (door27): /tmp/s27/door27/gen.py's worlds, named as it names them
+ * corner look (door27): tests/gen/tworooms.py's worlds, named as it names them
  * (h: a wall across at row R, v: down column R; t thickness, d the door's width, x
  * its place, s the start, then the heading) and the corner. Left out, doorsure.h's
  * LIMITS: h18-t1-d6-x5-s1-south sw (the wall lost outright, floor read by zero

@@ -6,7 +6,7 @@
  * coarsely: a wall 1 thick seen from afar (faint floor), a door's jambs a 4 x 4
  * cell may place a cell back. The fovea settles them. So, asked only where the
  * claim would otherwise be made (after every other check of the corner has let it
- * stand: controller.c corner_door_doubt), Utak first goes to the reachable cell
+ * stand: roomclaim.c roomclaim_door_doubt), Utak first goes to the reachable cell
  * nearest him from which the fovea (FAINT_FOVEA_REACH each way) shows a square a
  * doubting reading marked (doorsure_corner_marks), then back to the corner, where
  * every check is asked again. The rule that decides is doorsure's, unchanged: a
@@ -22,7 +22,7 @@
  * model losing it outright: doorsure.h, LIMITS) had new false successes: the
  * look's goal dropped after a step or two, Utak back at the same square, the
  * squares seen on the way turned the one doubting reading sure, and he claimed a
- * corner of the room beyond the door (/tmp/s27/door27 grid, 10 of 1728 runs). Such
+ * corner of the room beyond the door (a generated two-room grid, 10 of 1728 runs). Such
  * a look is set off on again, at most DOORLOOK_RETRIES times a task, while it can be
  * reached; else he doubts. A look is not taken from a cell reached before
  * (controller visited list), nor farther than DOORLOOK_REACH steps, and at most

@@ -45,7 +45,7 @@
  * (the judge's best square of the room), the claim may be the judge's failure, and
  * he DOUBTS it. Space never seen is left to
  * roomdoubt.h and hallsplit.h (a better corner in the unseen is their look).
- * It is asked last (controller.c, corner_door_doubt), where the claim would be
+ * It is asked last (roomclaim.c, roomclaim_door_doubt), where the claim would be
  * made, after every other check of the corner has let it stand. LOOKS: tried first
  * before the other checks (0e799b9), a look changed the way and those checks'
  * looks and made a false success of its own (a wall 2 thick at row 21 with a door
@@ -57,7 +57,7 @@
  * on and given up on the way (doorlook.h, SAFETY).
  *
  * LOST WALLS (door28). The "wall lost outright" of the two-room grid
- * (/tmp/s27/door27/gen.py, 4320 runs; 37 false successes at main 742d775) was
+ * (tests/gen/tworooms.py, 4320 of its runs; 37 false successes at main 742d775) was
  * mostly no loss of evidence: traced (h10-t1-d3-x15-s0-east, "go nw-corner"), the
  * stretch beside the door, seen closely, stayed occupied and its ends faint, but as
  * an object it was space to the rooms, and reading 1 closed the faint ends only;

@@ -69,7 +69,7 @@ bool pushseen_beyond(Corner k, const int32_t *hx, const int32_t *hy, int32_t nh,
  * is the sense that tells an object from the wall, and surveying the corner
  * before the push (controller.c) brings him beside such an object; how far it
  * reaches into the corner the eye cannot say, so any square of it beyond the held
- * object puts the claim in doubt (as corner_felt_object does for task (i)).
+ * object puts the claim in doubt (as roomclaim_felt_object does for task (i)).
  * Hand-written worlds: a triangle, a brick and a square pressed into the corner
  * (set 2 h107 and h111, set 3 h231), 5, 3 and 7 short, were claimed. */
 bool pushseen_felt_object(const Controller *c, Vec2 *at);

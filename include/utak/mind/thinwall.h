@@ -12,7 +12,7 @@
  * rooms (screen.h, fixed). doorsure.h's reading "faint floor taken for wall"
  * closed the faint ends but left that stretch open, so a door in the wall was a
  * gap of the stretch's length plus the door, no door, and the rooms one: on
- * /tmp/s27/door27's two-room grid (a wall 1 thick across a 40 x 30 TABLE, the
+ * tests/gen/tworooms.py's two-room grid (a wall 1 thick across a 40 x 30 TABLE, the
  * door 3 or 4 wide) Utak walked through the door into the next room's corner and
  * claimed it (37 false successes of 4320 runs at main 742d775, the trace of
  * h10-t1-d3-x15-s0-east "go nw-corner": the stretch beside the door object2, its
