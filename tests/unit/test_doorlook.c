@@ -15,67 +15,10 @@
  *    of them ended in doorsure's doubt), and every claim after a look was made
  *    with each look set off on reached (doorlook.h, SAFETY). */
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "test.h"
 #include "world_fixture.h"
-#include "utak/body/judge.h"
-#include "utak/body/motion.h"
-#include "utak/body/retina.h"
-#include "utak/mind/controller.h"
-
-/* A run's outcome: the judge's verdict, Utak's belief, and his looks. */
-typedef struct Outcome {
-	bool achieved, believed;
-	int looks;
-	bool pending;
-} Outcome;
-
-/* run(text, task_text): the task on the world, by the action cycle, at most 300
- * cycles (main.c's run_task, without output). */
-static Outcome run(const char *text, const char *task_text)
-{
-	Outcome o = {0};
-	load(text);
-	Task task;
-	Diag d;
-	TEST_CHECK(task_parse(task_text, &task, &d) == 0);
-	World start = world;
-	start.objects = calloc((size_t)world.object_count + 1, sizeof *start.objects);
-	if (world.object_count > 0)
-		memcpy(start.objects, world.objects, sizeof *start.objects * (size_t)world.object_count);
-	Controller *ctl = calloc(1, sizeof *ctl);
-	controller_init(ctl, PLANNER_SKELETON);
-	controller_set_task(ctl, &task);
-	MotionNoise noise;
-	motion_noise_init(&noise, 0, 1);
-	Impression sensed;
-	retina_sense(&world, &table, &sensed);
-	controller_start(ctl, &sensed);
-	Vec2 *trail = malloc(sizeof *trail * 302);
-	int32_t n = 0;
-	trail[n++] = world.utak;
-	MotorCommand cmd;
-	for (int cycle = 0; cycle < 300 && controller_decide(ctl, &cmd); cycle++) {
-		MotorOutcome mo;
-		motion_execute_noisy(&world, &table, &cmd, &noise, &mo);
-		trail[n++] = world.utak;
-		retina_sense(&world, &table, &sensed);
-		controller_perceive(ctl, &cmd, &sensed);
-	}
-	char why[256];
-	o.achieved = judge_task(&start, &world, &table, &task, trail, n, why, sizeof why);
-	o.believed = ctl->phase == PHASE_DONE;
-	o.looks = ctl->door_looks;
-	o.pending = ctl->door_look_pending;
-	controller_free(ctl);
-	free(ctl);
-	free(trail);
-	free(start.objects);
-	unload();
-	return o;
-}
+#include "task_run.h"
 
 TEST_CASE(a_look_never_buys_a_false_success)
 {
@@ -95,7 +38,7 @@ TEST_CASE(a_look_never_buys_a_false_success)
 							 x0, x0, 18 + th, 18 + th, x0 + dw, 18 + th, x0 + dw, 18 + th, heading[hi]);
 						Outcome o = run(text, corner[ci]);
 						runs++;
-						if (o.looks == 0)
+						if (o.door_looks == 0)
 							continue;
 						looked++;
 						if (!o.believed)
@@ -103,7 +46,7 @@ TEST_CASE(a_look_never_buys_a_false_success)
 						if (!o.achieved)
 							fprintf(stderr, "  false success after a look: %s on\n%s", corner[ci], text);
 						TEST_CHECK(o.achieved);
-						TEST_CHECK(!o.pending);
+						TEST_CHECK(!o.door_look_pending);
 						claimed_after += o.achieved;
 					}
 	TEST_CHECK(runs == 48);
