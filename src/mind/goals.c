@@ -822,6 +822,12 @@ void goals_choose(Controller *c, GoalResult *out)
 				out->found = true;
 				break;
 			}
+			/* Pushing, behind the object, he cannot feel what it presses on: a
+			 * corner of the wall toward the task's corner that may be an object
+			 * pressed into it is felt first, hands free (wallbump.h). */
+			if (k >= 0 && push_task &&
+			    wallbump_corner_set_off(c, dist, goals_room_corner_best(c, &rm, start_room), out))
+				break;
 			if (k >= 0 && push_task && push_grasp_side(c, k, dist, &rm, start_room, &out->goal)) {
 				out->found = true;
 				break;

@@ -222,23 +222,76 @@ void wallbump_feel(Controller *c)
 	}
 }
 
+/* corner_sign(c, sx, sy): the task's corner's direction, the sign of each axis in
+ * its score. */
+static void corner_sign(const Controller *c, int *sx, int *sy)
+{
+	*sx = goals_corner_score(c->task.corner, 1, 0) > goals_corner_score(c->task.corner, 0, 0) ? 1 : -1;
+	*sy = goals_corner_score(c->task.corner, 0, 1) > goals_corner_score(c->task.corner, 0, 0) ? 1 : -1;
+}
+
+/* toward_corner(c, x, y, best, sx, sy): (x, y) is a corner of the wall, its body
+ * (away from the floor) toward the task's corner, not settled by touch, within 2
+ * WALLBUMP_MAX_SIDE of the room's best score `best`, beside floor of the start's
+ * room: wallbump_in_corner's doubt. The held object's squares count as floor. */
+static bool toward_corner(const Controller *c, int32_t x, int32_t y, int64_t best, int sx, int sy)
+{
+	return corner_of(c, x, y, -sx, -sy, true) && !settled(c, x, y, -sx, -sy) &&
+	       goals_corner_score(c->task.corner, x, y) >= best - 2 * WALLBUMP_MAX_SIDE &&
+	       goals_in_start_room(c, &(Vec2){x - sx + 0.5, y - sy + 0.5}, 1);
+}
+
 bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at)
 {
 	const WorldModel *m = &c->model;
 	if (m->seen_count == 0 || best == INT64_MIN)
 		return false;
-	/* The corner's direction: the sign of each axis in its score. */
-	int sx = goals_corner_score(c->task.corner, 1, 0) > goals_corner_score(c->task.corner, 0, 0) ? 1 : -1;
-	int sy = goals_corner_score(c->task.corner, 0, 1) > goals_corner_score(c->task.corner, 0, 0) ? 1 : -1;
+	int sx, sy;
+	corner_sign(c, &sx, &sy);
+	for (int32_t y = m->seen_y0; y <= m->seen_y1; y++)
+		for (int32_t x = m->seen_x0; x <= m->seen_x1; x++)
+			if (toward_corner(c, x, y, best, sx, sy)) {
+				*at = goals_centre(x, y);
+				return true;
+			}
+	return false;
+}
+
+bool wallbump_corner_look(const Controller *c, const int32_t *dist, int64_t best, Vec2 *goal)
+{
+	const WorldModel *m = &c->model;
+	const Screen *s = &c->screen;
+	if (m->seen_count == 0 || best == INT64_MIN || c->bump_trips >= WALLBUMP_TRIPS)
+		return false;
+	int sx, sy;
+	corner_sign(c, &sx, &sy);
+	int32_t fewest = -1;
 	for (int32_t y = m->seen_y0; y <= m->seen_y1; y++)
 		for (int32_t x = m->seen_x0; x <= m->seen_x1; x++) {
-			/* Its body (away from the floor) toward the corner, and near it. */
-			if (!corner_of(c, x, y, -sx, -sy, true) || settled(c, x, y, -sx, -sy) ||
-			    goals_corner_score(c->task.corner, x, y) < best - 2 * WALLBUMP_MAX_SIDE ||
-			    !goals_in_start_room(c, &(Vec2){x - sx + 0.5, y - sy + 0.5}, 1))
+			if (tried(c, x, y) || !toward_corner(c, x, y, best, sx, sy))
 				continue;
-			*at = goals_centre(x, y);
-			return true;
+			/* The floor square beside it fewest steps away: touch there
+			 * reaches the corner and the next square of each face. */
+			for (int32_t j = y - 1; j <= y + 1; j++)
+				for (int32_t i = x - 1; i <= x + 1; i++) {
+					int32_t si, sj;
+					if (!floor_at(c, i, j) || !goals_cell_of(s, goals_centre(i, j), &si, &sj))
+						continue;
+					int32_t steps = dist[(int64_t)sj * s->w + si];
+					if (steps >= 0 && steps <= WALLBUMP_CORNER_REACH && (fewest < 0 || steps < fewest)) {
+						fewest = steps;
+						*goal = goals_centre(i, j);
+					}
+				}
 		}
-	return false;
+	return fewest >= 0;
+}
+
+bool wallbump_corner_set_off(Controller *c, const int32_t *dist, int64_t best, GoalResult *out)
+{
+	if (c->task.kind != TASK_PUSH_CORNER || c->model.holding || !wallbump_corner_look(c, dist, best, &out->goal))
+		return false;
+	wallbump_going(c, out->goal);
+	out->exploring = out->found = true;
+	return true;
 }

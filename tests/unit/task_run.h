@@ -2,7 +2,7 @@
  * judge's verdict on it beside Utak's belief (paper 2.2's perceive-plan-act cycle,
  * as main.c's run_task runs it, without output): for the controller's tests that
  * take the simulator and the judge as their oracle. Shared by test_joined.c,
- * test_roomlean.c, test_roundhome.c, test_thinwall.c and test_doorlook.c. Include after world_fixture.h (load, unload, world, table). */
+ * test_roomlean.c, test_roundhome.c, test_thinwall.c, test_doorlook.c and test_wallbump.c. Include after world_fixture.h (load, unload, world, table). */
 #ifndef UTAK_TEST_TASK_RUN_H
 #define UTAK_TEST_TASK_RUN_H
 
@@ -20,14 +20,15 @@
 /* A run's outcome: the judge's verdict, Utak's belief, and his reason; the
  * corrections of his place the last CONTROLLER_FIXES impressions made (oldest
  * first), and the corner looks he set off on (doorlook.h: how many, and whether
- * the last was left unreached), which a test may read to see what the run put him
- * through. */
+ * the last was left unreached), and the trips to corners of the wall he set off on
+ * to feel (wallbump.h), which a test may read to see what the run put him through. */
 typedef struct Outcome {
 	bool achieved, believed;
 	char why[320];
 	Vec2 fix[CONTROLLER_FIXES];
 	int door_looks;
 	bool door_look_pending;
+	int bump_trips;
 } Outcome;
 
 /* run_noisy(text, task_text, sigma, seed): the task on the world, by the action
@@ -71,6 +72,7 @@ static inline Outcome run_noisy(const char *text, const char *task_text, double 
 		o.fix[i] = ctl->fix[(ctl->fix_next + i) % CONTROLLER_FIXES];
 	o.door_looks = ctl->door_looks;
 	o.door_look_pending = ctl->door_look_pending;
+	o.bump_trips = ctl->bump_trips;
 	controller_free(ctl);
 	free(ctl);
 	free(trail);

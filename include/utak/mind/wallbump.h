@@ -41,6 +41,10 @@
 /* Trips to corners a task, at most (each a few cycles; a corner the eye shows
  * and then does not may be set off for again, and this ends it). */
 #define WALLBUMP_TRIPS 8
+/* Steps to the place a corner toward the task's corner is felt from, at most, before
+ * a push (wallbump_corner_look): the way there and back must leave cycles for the
+ * push itself. */
+#define WALLBUMP_CORNER_REACH 60
 
 /* wallbump_within(c, from, d, at, object): a corner of the wall not felt B whose
  * square could have its centroid nearer `from` than d; its centre in *at, and in
@@ -62,6 +66,23 @@ bool wallbump_look(const Controller *c, const int32_t *dist, Vec2 from, double d
  * judge's corner, and Utak, behind the square, cannot feel what it presses on
  * (push.c, push_seat_finish: a doubt). */
 bool wallbump_in_corner(const Controller *c, int64_t best, Vec2 *at);
+
+/* wallbump_corner_look(c, dist, best, goal): the reachable floor square (dist:
+ * steps on the screen, -1 unreached, at most WALLBUMP_CORNER_REACH) beside a corner
+ * that wallbump_in_corner would name against the room's best score `best`, not yet
+ * within touch's reach, fewest steps away; false when none, or the task's trips
+ * (WALLBUMP_TRIPS) are spent. WHY: pushing, Utak is behind the object and cannot
+ * feel what it presses on, so that doubt stood at the corner (push.c,
+ * push_seat_finish) wherever the eye showed such a corner; before he grasps, his
+ * hands are free and touch settles it (B felt lifts it, a letter leaves it). The
+ * rule that decides is wallbump_in_corner's, unchanged: the trip only adds what
+ * touch felt. */
+bool wallbump_corner_look(const Controller *c, const int32_t *dist, int64_t best, Vec2 *goal);
+
+/* wallbump_corner_set_off(c, dist, best, out): for "push ... into the corner", not
+ * holding: wallbump_corner_look, and, if there is a place, the goal set for it (out
+ * found and exploring) and counted (wallbump_going). */
+bool wallbump_corner_set_off(Controller *c, const int32_t *dist, int64_t best, GoalResult *out);
 
 /* wallbump_going(c, goal): goals.c sets off for a place wallbump_look chose; a
  * place other than the last counts one trip of WALLBUMP_TRIPS. */
