@@ -535,11 +535,15 @@ bool probe_begin_object(Controller *c, int32_t k)
 {
 	ProbeRun *p = &c->probe;
 	const WorldModel *m = &c->model;
-	if (c->task.shape != SHAPE_SQUARE || p->runs >= PROBE_RUNS || k < 0 ||
-	    m->node[k].kind != NODE_OBJECT)
+	if (p->runs >= PROBE_RUNS || k < 0 || m->node[k].kind != NODE_OBJECT)
 		return false;
 	ObjectReading o = objects_read(c, k);
 	if (!o.confirmed || o.squares > PROBE_MAX_SQUARES)
+		return false;
+	/* WIDTH ONLY (probe.h): for another shape, a probe only where its squares
+	 * leave its width in doubt (a crumb), and only the width is asked. */
+	bool width_only = c->task.shape != SHAPE_SQUARE;
+	if (width_only && !objects_narrow(c, k))
 		return false;
 	/* Its squares, and the window round them (3 squares of margin). */
 	const Box *r = &m->node[k].rect;
@@ -596,6 +600,7 @@ bool probe_begin_object(Controller *c, int32_t k)
 	p->ident = m->node[k].ident;
 	p->at = o.centroid;
 	p->narrow = o.reading.min_width < OBJECTS_NAMED_WIDTH - 1e-9;
+	p->width_only = width_only;
 	p->look = 0;
 	p->ncells = 0;
 	p->changed = false;
@@ -624,7 +629,9 @@ static void judge(Controller *c, ProbeRun *p)
 		from = p->corner[l];
 		p->looks[l] = (ProbeLook){p->corner[l], rate * sqrt(pushed_sq), p->shifts[l], rate};
 	}
-	p->verdict = probe_square_consistent(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true, PROBE_BUDGET);
+	if (!p->width_only) /* else the square's test does not apply: UNDECIDED */
+		p->verdict = probe_square_consistent(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true,
+						     PROBE_BUDGET);
 	p->width = probe_least_width(p->bx, p->by, p->nb, p->looks, looks, p->cells, p->ncells, true);
 }
 
@@ -784,8 +791,9 @@ bool probe_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		return false;
 	switch (cmd->kind) {
 	case MOTOR_GRASP:
-		snprintf(note, size, "; probe: grasped the square, to push it %d way%s by a quarter square and back (probe.h)",
-			 p->corners, p->corners > 1 ? "s" : "");
+		snprintf(note, size, "; probe: grasped the %s, to push it %d way%s by a quarter square and back (probe.h%s)",
+			 task_shape_name(c->task.shape), p->corners, p->corners > 1 ? "s" : "",
+			 p->width_only ? ", its width only" : "");
 		break;
 	case MOTOR_PUSH:
 		if (p->stage == PROBE_PUSH) {
@@ -798,15 +806,21 @@ bool probe_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		break;
 	default:
 		judge(c, p);
-		static const char *const said[3] = {"fit a square: the claim stands", "fit no square: it is not the square",
-						    "do not decide: the claim stands"};
-		snprintf(note, size, "; probe: released; its squares %s", said[p->verdict]);
+		snprintf(note, size, "; probe: released; its squares %s", probe_said(p));
 		probe_width_note(p, note, size);
 		break;
 	}
 	c->have_plan = false;
 	return true;
 }
+const char *probe_said(const ProbeRun *p)
+{
+	static const char *const said[3] = {"fit a square: the claim stands", "fit no square: it is not the square",
+					    "do not decide: the claim stands"};
+	return p->width_only ? "were measured, not weighed against a square: the claim is judged again"
+			     : said[p->verdict];
+}
+
 bool probe_disproved(const Controller *c, int32_t ident, Vec2 at)
 {
 	const ProbeRun *p = &c->probe;

@@ -492,6 +492,7 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 		snprintf(c->rival.note + n, sizeof c->rival.note - n,
 		         c->rival.own_alone ? "; probed, for a doubt on its own squares: %s" : "; probed first, before a rival: %s",
 		         verdict == PROBE_INCONSISTENT ? "it is no square, dropped"
+		         : c->probe.width_only         ? "its width measured"
 		                                       : "it may be a square");
 		if (c->task.kind == TASK_GO_ROUND) {
 			/* The loop was walked round it. No square: the loop counts for
@@ -530,10 +531,10 @@ bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		return false;
 	if (c->rival.stage == RIVAL_OWN && cmd->kind == MOTOR_RELEASE) {
 		snprintf(note, size, "; probe: released the object he would claim; its squares %s",
-		         c->probe.verdict == PROBE_INCONSISTENT
-		             ? "fit no square: it is not the square"
-		             : c->rival.own_alone ? "may be a square's: the claim is judged again"
-		                                  : "may be a square's: the claim waits on the rival");
+		         c->probe.verdict == PROBE_INCONSISTENT ? "fit no square: it is not the square"
+		         : c->probe.width_only                  ? "were measured: the claim is judged again"
+		         : c->rival.own_alone                   ? "may be a square's: the claim is judged again"
+		                                                : "may be a square's: the claim waits on the rival");
 		probe_width_note(&c->probe, note, size);
 		return true;
 	}

@@ -313,6 +313,7 @@ typedef struct ProbeRun {
 	 * and by where they were (probe_width). */
 	double width;
 	bool narrow; /* its squares standing still may be a polygon's under 2 wide */
+	bool width_only; /* WIDTH ONLY: a brick, L-shape or triangle, its width asked alone */
 	int32_t measured_ident[PROBE_DISPROVED];
 	Vec2 measured_at[PROBE_DISPROVED];
 	double measured_width[PROBE_DISPROVED];
@@ -325,7 +326,15 @@ struct Controller;
 bool probe_begin(struct Controller *c, int32_t k);
 /* probe_begin_object(c, k): the same for any task whose object is the square
  * ("go round square", "push square" too: rival.h probes the object Utak would
- * claim and its rival before the claim); probe_begin is it for "go square". */
+ * claim and its rival before the claim); probe_begin is it for "go square".
+ * WIDTH ONLY: for a task on another shape (brick, L-shape, triangle), a probe of
+ * the object he would claim is begun only when its squares standing still leave
+ * its width under 2 (objects_narrow: a 9 x 3 brick's 27 squares are those of a
+ * sliver 1.01 wide too, the middle row and two thin edges, and the verdicts name
+ * no polygon under 2 wide), made as above, and judged by its width alone
+ * (probe_least_width): the square's test does not apply, so the verdict is
+ * UNDECIDED and nothing is dropped; a width of 2 or more lifts that doubt
+ * (objects.h, A CRUMB), and the claim is judged again (rival.h, NARROW). */
 bool probe_begin_object(struct Controller *c, int32_t k);
 /* probe_decide(c, cmd): the probe's next command; false when none is under way,
  * or when it has just ended (the claim made, c->phase DONE, or the object
@@ -344,6 +353,9 @@ bool probe_perceive(struct Controller *c, const MotorCommand *cmd, char *note, s
  * appended to the cycle's note when the object's squares standing still left it
  * in doubt (p->narrow). */
 void probe_width_note(const ProbeRun *p, char *note, size_t size);
+/* probe_said(p): what the release of probe p tells of the object's squares, for
+ * the cycle's note. */
+const char *probe_said(const ProbeRun *p);
 /* probe_disproved(c, ident, at): an object (ident, or centroid at within
  * OBJECTS_SAME of one) that a probe showed is not the square. */
 bool probe_disproved(const struct Controller *c, int32_t ident, Vec2 at);
