@@ -533,6 +533,11 @@ bool probe_begin(Controller *c, int32_t k)
 
 bool probe_begin_object(Controller *c, int32_t k)
 {
+	return probe_begin_step(c, k, PROBE_STEP);
+}
+
+bool probe_begin_step(Controller *c, int32_t k, double step)
+{
 	ProbeRun *p = &c->probe;
 	const WorldModel *m = &c->model;
 	if (p->runs >= PROBE_RUNS || k < 0 || m->node[k].kind != NODE_OBJECT)
@@ -586,9 +591,10 @@ bool probe_begin_object(Controller *c, int32_t k)
 	p->corners = 0;
 	for (int w = 0; w < 4 && p->corners < PROBE_TAKES; w++)
 		if (room_toward(c, p, way[w][0], way[w][1]))
-			p->corner[p->corners++] = vec2(PROBE_STEP * way[w][0], PROBE_STEP * way[w][1]);
+			p->corner[p->corners++] = vec2(step * way[w][0], step * way[w][1]);
 	if (p->corners == 0)
 		return false;
+	p->step = step;
 	p->wx = x0 - 3;
 	p->wy = y0 - 3;
 	for (int32_t j = 0; j < PROBE_WINDOW; j++)
@@ -729,6 +735,37 @@ static uint16_t grid_shifts(const Controller *c, const ProbeRun *p, int32_t bx0,
 	return shifts ? shifts : PROBE_ANY_SHIFT;
 }
 
+/* at_rest_fits(p, first, shifts): the look's cells (from index `first`) show what
+ * the object standing where it was, unmoved, would show through the eye's grid at
+ * some place `shifts` allows. WHY: Utak holds what he pushes and moves with it, and
+ * the grid moves with him; where his point and the object's edges cross a square's
+ * edge on the same pushes, the cells, placed from his square before the probe,
+ * show the same counts as before (perturbed clutter-p4's brick, its edges and his
+ * point both about half way into their squares, pushed by half a square): the
+ * object did move, and it shows where the grid's place is fixed by what else the
+ * look showed. Only a look that no grid place lets the unmoved object explain
+ * shows motion; the others may be a grasp that failed (probe.h, THEN). */
+static bool at_rest_fits(const ProbeRun *p, int32_t first, uint16_t shifts)
+{
+	for (int32_t sy = -1; sy <= 1; sy++)
+		for (int32_t sx = -1; sx <= 1; sx++) {
+			if (!(shifts & (1u << ((sy + 1) * 3 + sx + 1))))
+				continue;
+			bool fits = true;
+			for (int32_t i = first; i < p->ncells && fits; i++) {
+				const ProbeCell *q = &p->cells[i];
+				int32_t n = 0;
+				for (int32_t j = 0; j < q->size; j++)
+					for (int32_t k = 0; k < q->size; k++)
+						n += owned_before(p, q->x + sx + k, q->y + sy + j);
+				fits = n == q->count;
+			}
+			if (fits)
+				return true;
+		}
+	return false;
+}
+
 /* keep_look(c, p): the cells of the look after the push to corner p->look that
  * the object may reach and that hold only its squares and floor, wherever in his
  * square Utak's point was (probe_square_consistent, unplaced): the cell's squares
@@ -747,6 +784,7 @@ static void keep_look(Controller *c, ProbeRun *p)
 		bx1 = p->bx[i] > bx1 ? p->bx[i] : bx1;
 		by1 = p->by[i] > by1 ? p->by[i] : by1;
 	}
+	int32_t first = p->ncells;
 	for (int32_t i = 0; i < PROBE_LOOK_CELLS; i++) {
 		EyeCell e = eye_cell(i);
 		int32_t x = p->ux + e.ox, y = p->uy + e.oy;
@@ -773,6 +811,7 @@ static void keep_look(Controller *c, ProbeRun *p)
 		p->cells[p->ncells++] = (ProbeCell){x, y, e.size, count, p->look};
 	}
 	p->shifts[p->look] = grid_shifts(c, p, bx0, by0, bx1, by1);
+	p->changed |= !at_rest_fits(p, first, p->shifts[p->look]);
 	p->look++;
 }
 

@@ -461,6 +461,26 @@ bool rival_arrive(Controller *c)
 	return true;
 }
 
+/* halfstep_again(c): the rival's probe just ended, pushes of a quarter square
+ * showed no change at all (its edges lie a quarter to three quarters into their
+ * squares, probe.h PROBE_HALF_STEP): a second probe of it begun with pushes of
+ * half a square, which carry every edge across a square's edge; false when none
+ * was (a change was seen, it was the second, or none can be made here). */
+static bool halfstep_again(Controller *c)
+{
+	const ProbeRun *p = &c->probe;
+	if (p->changed || p->step >= PROBE_HALF_STEP)
+		return false;
+	int32_t j = rival_node(c);
+	if (j < 0 || !objects_touching(c, j) || !probe_begin_step(c, j, PROBE_HALF_STEP))
+		return false;
+	size_t n = strlen(c->rival.note);
+	snprintf(c->rival.note + n, sizeof c->rival.note - n,
+	         "; rival at (%.1f, %.1f): the quarter-square pushes showed no change, "
+	         "probed again by half a square (rival.h)", c->rival.at.x, c->rival.at.y);
+	return true;
+}
+
 bool rival_probing(const Controller *c)
 {
 	return c->rival.stage == RIVAL_PROBE || c->rival.stage == RIVAL_OWN || c->rival.stage == RIVAL_APART;
@@ -510,6 +530,8 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 	/* The object probed is the rival: what the probe records (a disproved
 	 * object) is kept, and the task's object and phase are left as they are. */
 	ProbeVerdict verdict = probe_end(c);
+	if (verdict != PROBE_INCONSISTENT && halfstep_again(c))
+		return false; /* HALF A SQUARE: a second probe begun */
 	if (verdict == PROBE_INCONSISTENT)
 		c->have_plan = false;
 	rival_end(c, verdict == PROBE_INCONSISTENT
@@ -543,9 +565,9 @@ bool rival_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 	if (cmd->kind == MOTOR_GRASP)
 		snprintf(note, size,
 		         "; probe: grasped the rival at (%.1f, %.1f), to push it %d way%s by a "
-		         "quarter square and back (rival.h)",
+		         "%s square and back (rival.h)",
 		         c->rival.at.x, c->rival.at.y, c->probe.corners,
-		         c->probe.corners > 1 ? "s" : "");
+		         c->probe.corners > 1 ? "s" : "", c->probe.step >= PROBE_HALF_STEP ? "half" : "quarter");
 	else if (cmd->kind == MOTOR_RELEASE) {
 		snprintf(note, size, "; probe: released the rival; its squares %s",
 		         c->probe.verdict == PROBE_INCONSISTENT ? "fit no square"

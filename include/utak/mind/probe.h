@@ -236,6 +236,13 @@ double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const
  * object is not the square (probe_disproved: objects.c names it nothing), and
  * the task goes on: another object, a look further, or an honest failure. */
 #define PROBE_STEP 0.25
+/* A second probe's push, where the first showed no change (rival.h, HALF A
+ * SQUARE): an edge at a fraction f of a square is carried across a square's edge
+ * by +s when f >= 1 - s, by -s when f < s, so pushes of a quarter both ways miss
+ * every edge with f in [0.25, 0.75) on both axes (clutter.w moved by fractions:
+ * bricks at .34 and .36 showed nothing), and +-0.5 carry every edge across one
+ * (f >= 0.5, or f < 0.5). Still under a square: the same room suffices. */
+#define PROBE_HALF_STEP 0.5
 /* Looks a probe takes at most (corners with room): each costs a cycle. With
  * Utak's point not known in his square, two looks left the pieces of random
  * worlds g123 and g208 in doubt (some place of the grid explained them), three
@@ -265,7 +272,10 @@ double probe_least_width(const int32_t *bx, const int32_t *by, int32_t nb, const
  * overstates noise of 0.05 (it showed 0.10 to 0.16 on worlds/ with 0.05), so
  * under noise that it has seen the slack is larger, 4 x its estimate. */
 #define PROBE_SLACK_RATE 0.1
-#define PROBE_RUNS 4
+/* Probes a task, at most: the claim's own, up to RIVAL_MAX rivals', and a second
+ * of a rival by half a square (rival.h); four ran out on perturbed clutter-p1's
+ * third rival before its second probe. */
+#define PROBE_RUNS 8
 #define PROBE_WINDOW 32
 /* The search's budget of boxes (about 0.2 s a million, -O2): a true square is
  * found in a few thousand, a piece disproved in up to a million or so. */
@@ -297,12 +307,15 @@ typedef struct ProbeRun {
 	 * one being pushed to, and the looks taken there. */
 	Vec2 corner[PROBE_LOOKS];
 	int corners, look;
+	double step; /* ... each a push of this on each axis (PROBE_STEP, or PROBE_HALF_STEP) */
 	ProbeLook looks[PROBE_LOOKS];
 	uint16_t shifts[PROBE_LOOKS]; /* the places of the eye's grid each look allows */
 	ProbeCell cells[PROBE_LOOKS * PROBE_LOOK_CELLS];
 	int32_t ncells;
 	int32_t ux, uy;		/* Utak's square before the probe, model frame */
-	bool changed;		/* some look showed a count other than before */
+	bool changed;		/* some look showed a count other than before, or what no
+				   place of the eye's grid it allows lets the unmoved object
+				   show (at_rest_fits, probe.c) */
 	ProbeVerdict verdict;
 	int runs;
 	int32_t disproved_ident[PROBE_DISPROVED];
@@ -336,6 +349,9 @@ bool probe_begin(struct Controller *c, int32_t k);
  * UNDECIDED and nothing is dropped; a width of 2 or more lifts that doubt
  * (objects.h, A CRUMB), and the claim is judged again (rival.h, NARROW). */
 bool probe_begin_object(struct Controller *c, int32_t k);
+/* probe_begin_step(c, k, step): probe_begin_object with pushes of `step` squares
+ * on each axis (0 < step < 1; PROBE_HALF_STEP for a second probe, rival.h). */
+bool probe_begin_step(struct Controller *c, int32_t k, double step);
 /* probe_decide(c, cmd): the probe's next command; false when none is under way,
  * or when it has just ended (the claim made, c->phase DONE, or the object
  * dropped and the plan to be made again). */

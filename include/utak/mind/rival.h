@@ -79,6 +79,15 @@
  * square, so it shows no pieces that read one), and before a push the object
  * claimed is not probed for it (the probe's error of motion would move the
  * square to be pushed, as for MERGED alone: perturbed slant-p3).
+ * HALF A SQUARE. A rival's probe whose looks showed no change at all (probe.h:
+ * no count other than before, at any place of the eye's grid the look allows)
+ * settles nothing; a rival whose edges lie a quarter to three quarters into
+ * their squares owns exactly the same squares pushed a quarter square either way
+ * (perturbed clutter's 4 x 2 bricks). Touching it still, Utak probes it once more
+ * with pushes of PROBE_HALF_STEP, which carry every such edge across a square's
+ * edge (probe_begin_step); that probe is judged alone, as the first, and only an
+ * INCONSISTENT verdict lifts the doubt (tests/unit/test_halfstep.c: such bricks
+ * rejected every time, true squares never). 6 cycles more, only then.
  * COST: a probe's 6 cycles, the way there and back, and a probe's 6 cycles, only
  * where a rival doubt arises (going round, and the short way back beside the
  * object gone round). */
@@ -93,8 +102,11 @@
 #include "utak/impression.h"
 #include "utak/mind/probe.h"
 
-/* Rivals settled a task, at most. */
-#define RIVAL_MAX 2
+/* Rivals settled a task, at most. Two left the third of perturbed clutter-p1's
+ * and -p2's four bricks nearer the start unvisited (the doubt stood on it, at 88
+ * and 89 cycles of 300); with four, each is gone to and probed (104 and 105
+ * cycles). */
+#define RIVAL_MAX 4
 /* Goals reached going to one rival (looks at its unseen squares, then beside it),
  * at most: a rival whose squares stay unseen from where Utak can stand is left. */
 #define RIVAL_ARRIVALS 4
