@@ -284,6 +284,8 @@ static void arrive(Controller *c)
 		return; /* going to another object the claim is in doubt over (rival.h) */
 	if (joined_arrive(c))
 		return; /* where the object he would claim can be pulled from (joined.h) */
+	if (seam_arrive(c))
+		return; /* where the square he would claim can be pushed both ways from (seam.h) */
 	if (c->exploring) {
 		remember(c, c->goal); /* a frontier or an object to look at: look again from here */
 		if (c->door_look_pending && goals_distance(c->goal, c->door_look_at) < 0.5)
@@ -342,6 +344,7 @@ static void arrive(Controller *c)
 					snprintf(c->why, sizeof c->why, "Utak doubts he touches the %s: %s",
 						 task_shape_name(c->task.shape), doubt);
 				}
+			} else if (seam_begin(c, objects_find_target(c))) { /* one or pieces? pushed both ways first (seam.h) */
 			} else if (rival_own_probed(c, objects_find_target(c)) || !probe_begin(c, objects_find_target(c))) {
 				c->phase = PHASE_DONE; /* else claimed, or dropped, by motion first */
 			}
@@ -366,6 +369,7 @@ static void arrive(Controller *c)
 		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && joined_loop_closed(c)) {
 			/* The loop closed round one object or two pressed together: pulled
 			 * from here, beside it, then home (joined.h). */
+		} else if (c->round_count > 1 && c->round_next + 1 == c->round_count - 1 && seam_loop_closed(c)) { /* (seam.h) */
 		} else if (c->round_count > 0 && ++c->round_next == c->round_count) {
 			/* Home. A loop begun round the wrong object and the one round the
 			 * right one can cancel: then once more round it. */
@@ -392,6 +396,8 @@ static void arrive(Controller *c)
 				} else if (round_home_doubt(c, doubt, sizeof doubt)) {
 					c->phase = PHASE_FAILED;
 					snprintf(c->why, sizeof c->why, "Utak doubts he is back where he began: %s", doubt);
+				} else if (seam_begin(c, k)) {
+					/* one square or pieces pressed together: pushed both ways first, then home again (seam.h) */
 				} else
 					c->phase = PHASE_DONE;
 			}
@@ -435,6 +441,9 @@ static void arrive(Controller *c)
 			/* A doubt over another object: settled before the object to push is
 			 * chosen (rival.h), then back to its grasp side; or over a corner
 			 * of the wall, felt first (wallbump.h, goals.c), then back. */
+		} else if (objects_touching_target(c) && c->clear_tries == 0 && c->turn_tries == 0 &&
+			   seam_begin(c, objects_find_target(c))) {
+			/* The square to push, one or pieces? pushed both ways first (seam.h). */
 		} else if (objects_touching_target(c)) {
 			c->phase = PHASE_GRASP; /* what he doubts, he pushes still, and says so after */
 			/* Fetched again after clearing the way (pushclear.h) or squaring it
@@ -552,6 +561,8 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 	/* The object he would claim pulled first, to see it one (joined.h). */
 	if (joined_decide(c, cmd))
 		return true;
+	if (seam_decide(c, cmd)) /* the square he would claim pushed both ways, to see it one (seam.h) */
+		return true;
 	/* An object not yet told from the wall it leans on: touch and motion. */
 	if (tug_decide(c, cmd))
 		return true;
@@ -560,6 +571,8 @@ bool controller_decide(Controller *c, MotorCommand *cmd)
 		if (rival_decide(c, cmd)) /* begun on arriving (arrive) */
 			return true;
 		if (joined_decide(c, cmd)) /* begun on arriving (arrive) */
+			return true;
+		if (seam_decide(c, cmd)) /* begun on arriving (arrive) */
 			return true;
 		switch (c->phase) {
 		case PHASE_DONE:
@@ -680,6 +693,11 @@ static void perceive(Controller *c, const MotorCommand *cmd, const Impression *i
 	if (c->rival.note[0]) { /* a rival gone to, or settled (rival.h) */
 		n += snprintf(c->note + n, sizeof c->note - (size_t)n, "%s", c->rival.note);
 		c->rival.note[0] = '\0';
+	}
+	if (seam_note(c, c->note + n, sizeof c->note - (size_t)n)) {
+		c->last_position = c->model.utak; /* its pushes are short by design */
+		c->stuck = 0;
+		return;
 	}
 	if (joined_perceive(c, cmd, c->note + n, sizeof c->note - (size_t)n)) {
 		c->last_position = c->model.utak; /* its pulls are short by design */

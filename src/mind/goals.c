@@ -20,6 +20,7 @@
 
 #include "utak/base/util.h"
 #include "utak/mind/joined.h"
+#include "utak/mind/seam.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/push.h"
 #include "utak/mind/pushclear.h"
@@ -735,6 +736,8 @@ void goals_choose(Controller *c, GoalResult *out)
 			break; /* another object the claim is in doubt over: settled first (rival.h) */
 		if (!pushing && joined_goal(c, out))
 			break; /* where the object he would claim can be pulled from (joined.h) */
+		if (!pushing && seam_goal(c, out))
+			break; /* where the square he would claim can be pushed both ways from (seam.h) */
 		if (c->task.kind == TASK_GO_ROUND && c->bump_home) {
 			/* Home from a loop, a corner of the wall in doubt: felt first,
 			 * then home (wallbump.h); the whole trail counts. */

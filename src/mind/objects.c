@@ -129,7 +129,8 @@ ObjectReading objects_read(Controller *c, int32_t k)
 		c->examined[c->examined_count++] = (int32_t)n->ident, known = true;
 	o.examined = known;
 	o.shown_width = probe_width(c, (int32_t)n->ident, o.centroid);
-	if (o.shape == SHAPE_SQUARE && probe_disproved(c, (int32_t)n->ident, o.centroid)) {
+	if (o.shape == SHAPE_SQUARE && (probe_disproved(c, (int32_t)n->ident, o.centroid) ||
+					seam_parted(c, (int32_t)n->ident, objects_node_centre(c, k), n->squares))) {
 		o.shape = SHAPE_NONE;
 		o.disproved = true;
 	}
@@ -731,6 +732,8 @@ static bool doubt_of(Controller *c, int32_t k, char *why, size_t size, int32_t *
 bool objects_doubt(Controller *c, int32_t k, char *why, size_t size)
 {
 	int32_t rival;
+	if (c->task.shape == SHAPE_SQUARE && seam_nearer(c, k, why, size))
+		return true; /* pieces nearer the start, one of which may be the square (seam.h) */
 	return doubt_of(c, k, why, size, &rival);
 }
 

@@ -36,6 +36,7 @@
 #include "utak/base/util.h"
 #include "utak/mind/controller.h"
 #include "utak/mind/goals.h"
+#include "utak/mind/seam.h"
 #include "utak/mind/objects.h"
 #include "probe_work.h"
 
@@ -671,6 +672,8 @@ bool probe_decide(Controller *c, MotorCommand *cmd)
 	if (probe_end(c) == PROBE_INCONSISTENT) {
 		c->target = 0; /* not the square: the task goes on without it */
 		c->have_plan = false;
+	} else if (!seam_felt_after(c)) {
+		c->have_plan = false; /* touch no longer feels it: beside it again first (seam.h) */
 	} else {
 		c->phase = PHASE_DONE;
 	}
@@ -847,6 +850,10 @@ bool probe_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t s
 		judge(c, p);
 		snprintf(note, size, "; probe: released; its squares %s", probe_said(p));
 		probe_width_note(p, note, size);
+		if (p->verdict != PROBE_INCONSISTENT && !seam_felt_after(c)) {
+			size_t n = strlen(note);
+			snprintf(note + n, size - n, "; touch feels it no more: beside it again before the claim (seam.h)");
+		}
 		break;
 	}
 	c->have_plan = false;

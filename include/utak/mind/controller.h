@@ -21,6 +21,7 @@
 #include "utak/mind/planner.h"
 #include "utak/mind/apart.h"
 #include "utak/mind/joined.h"
+#include "utak/mind/seam.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
@@ -264,6 +265,8 @@ typedef struct Controller {
 	/* Pulling the object he would claim, a shape other than the square, to see it
 	 * come away whole (joined.h). */
 	JoinedRun joined;
+	/* Pushing the square he would claim both ways, to see it one object (seam.h). */
+	SeamRun seam;
 	/* Settling a hall doubt by touching the blob (hallsplit.h). */
 	HallRun hall;
 	ShapeMemo memo[CONTROLLER_MEMOS];
