@@ -321,14 +321,81 @@ bool apart_decide(Controller *c, MotorCommand *cmd)
 	case APART_BACK:
 		*cmd = (MotorCommand){.kind = MOTOR_RELEASE};
 		a->stage = APART_IDLE;
-		if (a->verdict == APART_ONE && a->kept < APART_KEPT) {
+		if (a->verdict == APART_ONE && a->kept < APART_KEPT &&
+		    apart_set_make(&a->one_set[a->kept], a->sx, a->sy, a->n)) {
 			a->one_ident[a->kept] = a->ident;
-			a->one_at[a->kept] = a->at;
-			a->one_squares[a->kept++] = a->squares;
+			a->one_squares[a->kept] = a->squares;
+			a->one_at[a->kept++] = a->at;
 		}
 		return true;
 	}
 	return false;
+}
+
+bool apart_redo(Controller *c)
+{
+	ApartRun *a = &c->apart;
+	if (a->stage != APART_IDLE || (a->verdict != APART_LEFT && a->verdict != APART_SHORT) ||
+	    a->redone >= APART_REDO || worldmodel_motion_error(&c->model) <= 0)
+		return false;
+	a->redone++;
+	a->verdict = APART_UNTRIED;
+	return true;
+}
+
+bool apart_set_make(ApartSet *set, const int32_t *sx, const int32_t *sy, int32_t n)
+{
+	if (n <= 0)
+		return false;
+	int32_t x0 = sx[0], y0 = sy[0], x1 = sx[0], y1 = sy[0];
+	for (int32_t i = 1; i < n; i++) {
+		x0 = sx[i] < x0 ? sx[i] : x0;
+		y0 = sy[i] < y0 ? sy[i] : y0;
+		x1 = sx[i] > x1 ? sx[i] : x1;
+		y1 = sy[i] > y1 ? sy[i] : y1;
+	}
+	if ((int64_t)x1 - x0 >= APART_BOX || (int64_t)y1 - y0 >= APART_BOX)
+		return false;
+	*set = (ApartSet){.x0 = x0, .y0 = y0, .n = n};
+	for (int32_t i = 0; i < n; i++)
+		set->row[sy[i] - y0] |= (uint64_t)1 << (sx[i] - x0);
+	return true;
+}
+
+bool apart_set_holds(const ApartSet *set, int32_t x, int32_t y)
+{
+	int64_t bx = (int64_t)x - set->x0, by = (int64_t)y - set->y0;
+	return bx >= 0 && by >= 0 && bx < APART_BOX && by < APART_BOX && ((set->row[by] >> bx) & 1);
+}
+
+/* beside_set(set, x, y): (x, y) is one of the set's or one of the eight round one. */
+static bool beside_set(const ApartSet *set, int32_t x, int32_t y)
+{
+	for (int32_t dy = -1; dy <= 1; dy++)
+		for (int32_t dx = -1; dx <= 1; dx++)
+			if (apart_set_holds(set, x + dx, y + dy))
+				return true;
+	return false;
+}
+
+bool apart_still_one(const ApartSet *set, const int32_t *nx, const int32_t *ny, int32_t n)
+{
+	for (int32_t i = 0; i < n; i++)
+		if (!beside_set(set, nx[i], ny[i]))
+			return false;
+	/* A 2 x 2 block of squares not the set's, with (nx[i], ny[i]) its lower left. */
+	for (int32_t i = 0; i < n; i++) {
+		if (apart_set_holds(set, nx[i], ny[i]))
+			continue;
+		int found = 0;
+		for (int32_t k = 0; k < n; k++)
+			if (!apart_set_holds(set, nx[k], ny[k]) && nx[k] - nx[i] >= 0 && nx[k] - nx[i] <= 1 &&
+			    ny[k] - ny[i] >= 0 && ny[k] - ny[i] <= 1 && (nx[k] != nx[i] || ny[k] != ny[i]))
+				found++;
+		if (found == 3)
+			return false;
+	}
+	return true;
 }
 
 bool apart_one(const Controller *c, int32_t j)
@@ -341,5 +408,37 @@ bool apart_one(const Controller *c, int32_t j)
 		if (objects_same(a->one_ident[i], a->one_at[i], n->ident, objects_node_centre(c, j)) &&
 		    a->one_squares[i] == n->squares)
 			return true;
+	return false;
+}
+
+bool apart_no_square(const Controller *c, int32_t j)
+{
+	const ApartRun *a = &c->apart;
+	if (j < 0 || a->kept == 0)
+		return false;
+	const WorldModel *m = &c->model;
+	const ModelNode *node = &m->node[j];
+	Vec2 at = objects_node_centre(c, j);
+	for (int i = 0; i < a->kept; i++) {
+		if (!objects_same(a->one_ident[i], a->one_at[i], node->ident, at))
+			continue;
+		/* The node's squares, no more than the set's and a ring round it
+		 * could hold (else it is not the set). */
+		int32_t nx[APART_MAX_SQUARES], ny[APART_MAX_SQUARES], n = 0;
+		bool fits = true;
+		const Box *r = &node->rect;
+		for (int32_t y = (int32_t)floor(r->lo.y); fits && y < (int32_t)ceil(r->hi.y); y++)
+			for (int32_t x = (int32_t)floor(r->lo.x); fits && x < (int32_t)ceil(r->hi.x); x++)
+				if (worldmodel_node_at(m, x, y) == j) {
+					if (n == APART_MAX_SQUARES || !beside_set(&a->one_set[i], x, y))
+						fits = false;
+					else {
+						nx[n] = x;
+						ny[n++] = y;
+					}
+				}
+		if (fits && apart_still_one(&a->one_set[i], nx, ny, n))
+			return true;
+	}
 	return false;
 }

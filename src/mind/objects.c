@@ -616,7 +616,7 @@ static bool merged(const Controller *c, int32_t j, const ObjectReading *q, doubl
 static int32_t merged_near(Controller *c, int32_t k, double d)
 {
 	for (int32_t j = 0; j < c->model.node_count; j++) {
-		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j) || apart_one(c, j))
+		if (j == k || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j) || apart_no_square(c, j))
 			continue;
 		ObjectReading q = objects_read(c, j);
 		if (merged(c, j, &q, d))
@@ -627,7 +627,7 @@ static int32_t merged_near(Controller *c, int32_t k, double d)
 
 bool objects_merged_rival(Controller *c, int32_t j)
 {
-	if (j < 0 || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j) || apart_one(c, j))
+	if (j < 0 || c->model.node[j].kind != NODE_OBJECT || objects_wall(c, j) || apart_no_square(c, j))
 		return false;
 	ObjectReading q = objects_read(c, j);
 	return q.examined && merged(c, j, &q, INFINITY);

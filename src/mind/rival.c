@@ -492,7 +492,17 @@ bool rival_decide(Controller *c, MotorCommand *cmd)
 		if (apart_decide(c, cmd))
 			return true;
 		c->have_plan = false;
-		rival_end(c, apart_verdict_text(c->apart.verdict));
+		ApartVerdict v = c->apart.verdict;
+		if (apart_redo(c)) { /* noise spoilt the look: to a place to pull it again (apart.h) */
+			size_t n = strlen(c->rival.note);
+			snprintf(c->rival.note + n, sizeof c->rival.note - n,
+			         "; rival at (%.1f, %.1f): %s; under noise, to pull it again", c->rival.at.x,
+			         c->rival.at.y, apart_verdict_text(v));
+			c->rival.stage = RIVAL_GO;
+			c->rival.arrivals = c->rival.gained = 0;
+			return false;
+		}
+		rival_end(c, apart_verdict_text(v));
 		return false;
 	}
 	if (!rival_probing(c) || c->probe.stage != PROBE_FINISH)

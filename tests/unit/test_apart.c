@@ -11,7 +11,12 @@
  *   - COMPLETE ENOUGH: the L alone, so moved, is APART_ONE wherever the squares it
  *     leaves empty lie in cells of 1 or 2 x 2, and never APART_LEFT.
  *   - the 2 x 2 cell over one occupied square reads above 0 (eye_level), the 4 x 4
- *     one reads 0: why the test counts only the finer cells. */
+ *     one reads 0: why the test counts only the finer cells.
+ *   - apart_still_one (the record of a set shown one, matched later): the L the
+ *     TABLE projects a fraction off the grid in every direction (pushed back under
+ *     --noise), whole or seen in part, is still the set; the L with a square
+ *     (sides 2 to 4, upright and turned, beside it, in its crook, a fraction
+ *     apart) is never, the TABLE's own squares of both as the node. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -183,10 +188,86 @@ TEST_CASE(coarse_cells_hide_one_square)
 		TEST_CHECK(eye_level(o, 4) != eye_level(o + 1, 4)); /* a 2 x 2 cell tells the count */
 }
 
+/* squares_of(text, &n, nx, ny): the squares the TABLE gives every object of the world. */
+static void squares_of(const char *text, int32_t *n, int32_t *nx, int32_t *ny)
+{
+	load(text);
+	gather();
+	*n = sn;
+	memcpy(nx, sx, sizeof sx);
+	memcpy(ny, sy, sizeof sy);
+	unload();
+}
+
+TEST_CASE(an_l_a_fraction_off_the_grid_is_still_one)
+{
+	static char text[1024];
+	static int32_t nx[APART_MAX_SQUARES], ny[APART_MAX_SQUARES], n0, n;
+	world_text(text, sizeof text, false, 0, 0, 0, 0);
+	squares_of(text, &n0, nx, ny);
+	ApartSet set;
+	TEST_CHECK(apart_set_make(&set, nx, ny, n0));
+	TEST_CHECK(apart_still_one(&set, nx, ny, n0));
+	int tried = 0, held = 0;
+	for (double ey = -0.9; ey <= 0.91; ey += 0.15)
+		for (double ex = -0.9; ex <= 0.91; ex += 0.15) {
+			int k = snprintf(text, sizeof text, "table 48 44\nobject lshape L");
+			for (int i = 0; i < 6; i++)
+				k += snprintf(text + k, sizeof text - (size_t)k, " %.3f %.3f", LX + ell[i][0] + ex, LY + ell[i][1] + ey);
+			snprintf(text + k, sizeof text - (size_t)k, "\nutak 2.5 2.5 north\n");
+			squares_of(text, &n, nx, ny);
+			tried++;
+			held += apart_still_one(&set, nx, ny, n);
+			/* seen in part (its first rows only): still the set */
+			held += apart_still_one(&set, nx, ny, n / 2) ? 0 : 1000;
+		}
+	printf("  the L a fraction off the grid: %d of %d still the set (must be all)\n", held, tried);
+	TEST_CHECK(held == tried);
+}
+
+TEST_CASE(an_l_with_a_square_joined_is_never_still_one)
+{
+	static char text[1024];
+	static int32_t nx[APART_MAX_SQUARES], ny[APART_MAX_SQUARES], n0, n;
+	world_text(text, sizeof text, false, 0, 0, 0, 0);
+	squares_of(text, &n0, nx, ny);
+	ApartSet set;
+	TEST_CHECK(apart_set_make(&set, nx, ny, n0));
+	int tried = 0, still = 0;
+	for (double side = 2.0; side <= 4.01; side += 0.5)
+		for (double deg = 0; deg <= 30; deg += 15)
+			for (double cy = LY - 4; cy <= LY + 11.01; cy += 0.5)
+				for (double cx = LX - 4; cx <= LX + 11.01; cx += 0.5) {
+					world_text(text, sizeof text, true, side, deg, cx, cy);
+					Diag d;
+					World w;
+					if (world_parse(&w, "t.w", text, strlen(text), &d))
+						continue;
+					Table t;
+					bool overlaps = table_build(&t, &w, &d) != 0;
+					if (!overlaps)
+						table_free(&t);
+					world_free(&w);
+					if (overlaps)
+						continue;
+					squares_of(text, &n, nx, ny);
+					tried++;
+					if (apart_still_one(&set, nx, ny, n)) {
+						still++;
+						fprintf(stderr, "  still one with a square: side %.1f turned %.0f at (%.1f, %.1f)\n", side, deg,
+							cx, cy);
+					}
+				}
+	printf("  %d worlds of the L and a square, the node both: %d still the set (must be 0)\n", tried, still);
+	TEST_CHECK(still == 0 && tried > 100);
+}
+
 int main(void)
 {
 	TEST_RUN(a_square_beside_an_l_is_never_one);
 	TEST_RUN(an_l_alone_is_one_where_seen_closely);
 	TEST_RUN(coarse_cells_hide_one_square);
+	TEST_RUN(an_l_a_fraction_off_the_grid_is_still_one);
+	TEST_RUN(an_l_with_a_square_joined_is_never_still_one);
 	return TEST_EXIT();
 }
