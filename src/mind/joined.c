@@ -14,6 +14,7 @@
 #include "utak/mind/goals.h"
 #include "utak/mind/objects.h"
 #include "utak/mind/round.h"
+#include "utak/mind/swing.h"
 
 bool joined_open(Controller *c, int32_t k)
 {
@@ -21,7 +22,7 @@ bool joined_open(Controller *c, int32_t k)
 	    c->model.node[k].kind != NODE_OBJECT)
 		return false;
 	ObjectReading o = objects_read(c, k);
-	return o.confirmed && o.shape == c->task.shape && !apart_one(c, k);
+	return o.confirmed && o.shape == c->task.shape && !apart_one(c, k) && !swing_one(c, k);
 }
 
 bool joined_tried(const Controller *c, int32_t k)
@@ -39,12 +40,18 @@ bool joined_tried(const Controller *c, int32_t k)
 bool joined_begin(Controller *c, int32_t k)
 {
 	JoinedRun *j = &c->joined;
-	if (j->pulling || j->going || j->tried >= JOINED_TRIED || !joined_open(c, k) || joined_tried(c, k))
+	if (j->pulling || j->swinging || j->going || j->tried >= JOINED_TRIED || !joined_open(c, k) ||
+	    joined_tried(c, k))
 		return false;
 	j->tried_ident[j->tried] = (int32_t)c->model.node[k].ident;
 	j->tried_at[j->tried++] = objects_node_centre(c, k);
 	if (objects_touching(c, k) && apart_begin(c, k)) {
 		j->pulling = true;
+		c->have_plan = false;
+		return true;
+	}
+	if (objects_touching(c, k) && swing_begin(c, k)) { /* no pull from here: a turn (swing.h) */
+		j->swinging = true;
 		c->have_plan = false;
 		return true;
 	}
@@ -89,9 +96,11 @@ bool joined_arrive(Controller *c)
 	j->going = false;
 	c->have_plan = false;
 	int32_t k = objects_find_target(c);
-	if (k >= 0 && (int32_t)c->model.node[k].ident == j->ident && joined_open(c, k) && objects_touching(c, k) &&
-	    apart_begin(c, k))
+	bool here = k >= 0 && (int32_t)c->model.node[k].ident == j->ident && joined_open(c, k) && objects_touching(c, k);
+	if (here && apart_begin(c, k))
 		j->pulling = true;
+	else if (here && swing_begin(c, k))
+		j->swinging = true;
 	else if (c->task.kind == TASK_GO_ROUND)
 		round_home(c, k); /* no pull from here either: home, the doubt standing */
 	return true; /* else beside it again, the claim is judged with the doubt standing */
@@ -100,11 +109,24 @@ bool joined_arrive(Controller *c)
 bool joined_decide(Controller *c, MotorCommand *cmd)
 {
 	JoinedRun *j = &c->joined;
-	if (!j->pulling)
+	if (j->swinging) {
+		if (swing_decide(c, cmd))
+			return true;
+		j->swinging = false;
+	} else if (j->pulling) {
+		if (apart_decide(c, cmd))
+			return true;
+		j->pulling = false;
+		/* Neither one object nor a piece left (the look could not place him, or
+		 * was too coarse): a quarter turn, which does not move him (swing.h). */
+		int32_t k = objects_find_target(c);
+		if ((c->apart.verdict == APART_SHORT || c->apart.verdict == APART_UNSEEN) && joined_open(c, k) &&
+		    objects_touching(c, k) && swing_begin(c, k) && swing_decide(c, cmd)) {
+			j->swinging = true;
+			return true;
+		}
+	} else
 		return false;
-	if (apart_decide(c, cmd))
-		return true;
-	j->pulling = false;
 	c->have_plan = false; /* beside it still: the claim is judged again (arrive) */
 	if (c->task.kind == TASK_GO_ROUND)
 		round_home(c, objects_find_target(c)); /* the loop walked: home, and judged there */
@@ -113,6 +135,17 @@ bool joined_decide(Controller *c, MotorCommand *cmd)
 
 bool joined_perceive(Controller *c, const MotorCommand *cmd, char *note, size_t size)
 {
+	if (c->joined.swinging) {
+		swing_perceive(c, cmd);
+		static const char *const did[] = {"moved", "grasped", "pushed", "turned", "released"};
+		int i = cmd->kind == MOTOR_GRASP ? 1 : cmd->kind == MOTOR_RELEASE ? 4 : cmd->kind == MOTOR_TURN ? 3 : 0;
+		bool back = cmd->kind == MOTOR_TURN && c->swing.stage == SWING_RELEASE;
+		snprintf(note, size, "; joined: %s the %s he would claim%s, to see it come round whole (swing.h)%s%s",
+			 did[i], task_shape_name(c->task.shape), back ? " back" : cmd->kind == MOTOR_TURN ? " a quarter" : "",
+			 cmd->kind == MOTOR_RELEASE ? ": " : "",
+			 cmd->kind == MOTOR_RELEASE ? swing_verdict_text(c->swing.verdict) : "");
+		return true;
+	}
 	if (!c->joined.pulling)
 		return false;
 	static const char *const what[] = {"moved", "grasped", "pulled", "pushed", "turned", "released"};

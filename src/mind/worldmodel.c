@@ -890,7 +890,11 @@ void worldmodel_accommodate(WorldModel *m, const MotorCommand *cmd, const Impres
 	 * small the rest: with --noise a 2 x 2 cell with two squares over one zero
 	 * 4 x 4 cell was the only sign of a leg 1.75 squares long, worlds/west.w
 	 * seed 10, and the estimate of motion's error needs it). */
-	if ((s.bx != px || s.by != py) &&
+	/* A turn moves the object held about Utak's point, never Utak (paper 2.2):
+	 * no look after one can place him elsewhere. Where the held object did not
+	 * turn as predicted (a turn halted against a piece not held, swing.h), the
+	 * search found the difference a better fit two squares off. */
+	if ((s.bx != px || s.by != py) && cmd->kind != MOTOR_TURN &&
 	    (!judged ||
 	     (s.best_score + WORLDMODEL_DISPARITY_MARGIN < rep->mismatch && !wm_explained(m, px, py, held, under, imp)))) {
 		rep->corrected = true;

@@ -22,6 +22,7 @@
 #include "utak/mind/apart.h"
 #include "utak/mind/joined.h"
 #include "utak/mind/seam.h"
+#include "utak/mind/swing.h"
 #include "utak/mind/hallsplit.h"
 #include "utak/mind/probe.h"
 #include "utak/mind/rival.h"
@@ -265,6 +266,9 @@ typedef struct Controller {
 	/* Pulling the object he would claim, a shape other than the square, to see it
 	 * come away whole (joined.h). */
 	JoinedRun joined;
+	/* ... or turning it a quarter about his point, where a pull cannot settle it
+	 * (swing.h). */
+	SwingRun swing;
 	/* Pushing the square he would claim both ways, to see it one object (seam.h). */
 	SeamRun seam;
 	/* Settling a hall doubt by touching the blob (hallsplit.h). */

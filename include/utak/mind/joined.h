@@ -42,6 +42,7 @@
 
 typedef struct JoinedRun {
 	bool pulling;    /* a pull of the object he would claim under way (apart.h) */
+	bool swinging;   /* ... or a quarter turn of it (swing.h) */
 	bool going;      /* ... or going where it can be pulled from: */
 	Vec2 goal;       /* ... that square's centre, model frame ... */
 	int32_t ident;   /* ... and the node to pull (model ident) */
