@@ -63,7 +63,9 @@ bool joined_begin(Controller *c, int32_t k)
 		return false;
 	int32_t *dist = util_alloc((size_t)g->w * (size_t)g->h, sizeof *dist);
 	goals_reach(g, ui, uj, dist);
-	j->going = apart_goal(c, k, dist, &j->goal);
+	/* Where it can be turned first: a turn needs nothing fixed in view (swing.h),
+	 * a pull does (apart.h); else where it can be pulled. */
+	j->going = swing_goal(c, k, dist, &j->goal) || apart_goal(c, k, dist, &j->goal);
 	free(dist);
 	if (j->going) {
 		j->ident = (int32_t)c->model.node[k].ident;

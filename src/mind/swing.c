@@ -130,6 +130,71 @@ static bool sweep_free(const Controller *c, const SwingRun *s, int sign, int32_t
 	return true;
 }
 
+/* turnable(c, k, ux, uy, s): from model square (ux, uy), node k's squares (into
+ * s->sx, s->sy as offsets) lie within SWING_REACH, and one way of turning (into
+ * s->sign, counter-clockwise first) sweeps free (sweep_free). */
+static bool turnable(const Controller *c, int32_t k, int32_t ux, int32_t uy, SwingRun *s)
+{
+	const WorldModel *m = &c->model;
+	s->n = 0;
+	const Box *r = &m->node[k].rect;
+	for (int32_t y = (int32_t)floor(r->lo.y); y < (int32_t)ceil(r->hi.y); y++)
+		for (int32_t x = (int32_t)floor(r->lo.x); x < (int32_t)ceil(r->hi.x); x++) {
+			if (worldmodel_node_at(m, x, y) != k)
+				continue;
+			if (abs(x - ux) > SWING_REACH || abs(y - uy) > SWING_REACH || s->n == SWING_MAX_SQUARES)
+				return false;
+			s->sx[s->n] = (int8_t)(x - ux);
+			s->sy[s->n++] = (int8_t)(y - uy);
+		}
+	if (s->n != m->node[k].squares)
+		return false;
+	for (int sign = 1; sign >= -1; sign -= 2)
+		if (sweep_free(c, s, sign, ux, uy)) {
+			s->sign = sign;
+			return true;
+		}
+	return false;
+}
+
+bool swing_goal(const Controller *c, int32_t k, const int32_t *dist, Vec2 *goal)
+{
+	const Screen *sc = &c->screen;
+	const WorldModel *m = &c->model;
+	if (k < 0 || m->node[k].kind != NODE_OBJECT || m->node[k].squares > SWING_MAX_SQUARES)
+		return false;
+	SwingRun *trial = malloc(sizeof *trial);
+	int32_t best = -1, best_d = INT32_MAX;
+	for (int32_t at = 0; at < sc->w * sc->h; at++) {
+		if (dist[at] < 0 || dist[at] >= best_d)
+			continue;
+		int32_t x = sc->x0 + at % sc->w, y = sc->y0 + at / sc->w;
+		if (!sure_floor(m, x, y))
+			continue;
+		/* Touch there shows this object, and no other (the grasp takes the
+		 * first object colour it feels): its squares among the eight, no
+		 * other object's; wall reads B, which the grasp passes over. */
+		bool beside = false, other = false;
+		for (int32_t dy = -1; dy <= 1; dy++)
+			for (int32_t dx = -1; dx <= 1; dx++) {
+				int32_t n = worldmodel_node_at(m, x + dx, y + dy);
+				if ((dx || dy) && n == k)
+					beside = true;
+				else if ((dx || dy) && n >= 0 && m->node[n].kind == NODE_OBJECT)
+					other = true;
+			}
+		if (beside && !other && turnable(c, k, x, y, trial)) {
+			best = at;
+			best_d = dist[at];
+		}
+	}
+	free(trial);
+	if (best < 0)
+		return false;
+	*goal = goals_centre(sc->x0 + best % sc->w, sc->y0 + best / sc->w);
+	return true;
+}
+
 bool swing_begin(Controller *c, int32_t k)
 {
 	SwingRun *s = &c->swing;
@@ -151,35 +216,18 @@ bool swing_begin(Controller *c, int32_t k)
 	}
 	if (!touched)
 		return false;
-	s->n = 0;
-	const Box *r = &m->node[k].rect;
-	for (int32_t y = (int32_t)floor(r->lo.y); y < (int32_t)ceil(r->hi.y); y++)
-		for (int32_t x = (int32_t)floor(r->lo.x); x < (int32_t)ceil(r->hi.x); x++) {
-			if (worldmodel_node_at(m, x, y) != k)
-				continue;
-			if (abs(x - ux) > SWING_REACH || abs(y - uy) > SWING_REACH || s->n == SWING_MAX_SQUARES)
-				return false;
-			s->sx[s->n] = (int8_t)(x - ux);
-			s->sy[s->n++] = (int8_t)(y - uy);
-		}
-	if (s->n != m->node[k].squares)
+	if (!turnable(c, k, ux, uy, s))
 		return false;
-	for (int sign = 1; sign >= -1; sign -= 2) {
-		if (!sweep_free(c, s, sign, ux, uy))
-			continue;
-		for (int32_t oy = -EYE_INTERMEDIATE_HALF; oy < EYE_INTERMEDIATE_HALF; oy++)
-			for (int32_t ox = -EYE_INTERMEDIATE_HALF; ox < EYE_INTERMEDIATE_HALF; ox++)
-				s->floor_before[(oy + EYE_INTERMEDIATE_HALF) * 16 + ox + EYE_INTERMEDIATE_HALF] =
-				    sure_floor(m, ux + ox, uy + oy);
-		s->sign = sign;
-		s->ident = m->node[k].ident;
-		s->at = objects_node_centre(c, k);
-		s->squares = m->node[k].squares;
-		s->verdict = APART_UNTRIED;
-		s->stage = SWING_GRASP;
-		return true;
-	}
-	return false;
+	for (int32_t oy = -EYE_INTERMEDIATE_HALF; oy < EYE_INTERMEDIATE_HALF; oy++)
+		for (int32_t ox = -EYE_INTERMEDIATE_HALF; ox < EYE_INTERMEDIATE_HALF; ox++)
+			s->floor_before[(oy + EYE_INTERMEDIATE_HALF) * 16 + ox + EYE_INTERMEDIATE_HALF] =
+			    sure_floor(m, ux + ox, uy + oy);
+	s->ident = m->node[k].ident;
+	s->at = objects_node_centre(c, k);
+	s->squares = m->node[k].squares;
+	s->verdict = APART_UNTRIED;
+	s->stage = SWING_GRASP;
+	return true;
 }
 
 bool swing_decide(Controller *c, MotorCommand *cmd)

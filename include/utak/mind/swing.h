@@ -105,6 +105,14 @@ ApartVerdict swing_vacated_clear(const int8_t *sx, const int8_t *sy, int32_t n, 
  * false when it cannot be made from where Utak stands. */
 bool swing_begin(struct Controller *c, int32_t k);
 
+/* swing_goal(c, k, dist, &goal): the nearest square (fewest steps, dist over the
+ * screen's cells from Utak's, goals_reach) from which node k could be turned:
+ * floor seen closely, beside the object and no other, its squares within reach and
+ * a way of turning free (WHEN); false when there is none. Touching the object at
+ * its end, a brick 8 long lies 7 squares off and cannot be turned: beside its
+ * middle, it can. */
+bool swing_goal(const struct Controller *c, int32_t k, const int32_t *dist, Vec2 *goal);
+
 /* swing_decide(c, cmd): the turn's next command; false when none is under way or it
  * has just ended (the verdict in c->swing.verdict). */
 bool swing_decide(struct Controller *c, MotorCommand *cmd);
