@@ -209,14 +209,8 @@ bool apart_begin(Controller *c, int32_t j)
 	if (worldmodel_node_at(m, ux + ex, uy + ey) != j || !move_from(c, j, ux, uy, &mx, &my) ||
 	    abs(mx) != abs(ex) || abs(my) != abs(ey))
 		return false;
-	a->n = 0;
-	const Box *r = &m->node[j].rect;
-	for (int32_t y = (int32_t)floor(r->lo.y); y < (int32_t)ceil(r->hi.y); y++)
-		for (int32_t x = (int32_t)floor(r->lo.x); x < (int32_t)ceil(r->hi.x); x++)
-			if (worldmodel_node_at(m, x, y) == j && a->n < APART_MAX_SQUARES) {
-				a->sx[a->n] = x;
-				a->sy[a->n++] = y;
-			}
+	a->n = worldmodel_node_squares(m, j, a->sx, a->sy, APART_MAX_SQUARES);
+	a->n = a->n < APART_MAX_SQUARES ? a->n : APART_MAX_SQUARES;
 	a->ident = m->node[j].ident;
 	a->dx = mx;
 	a->dy = my;

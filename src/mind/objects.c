@@ -253,6 +253,22 @@ bool objects_wall(const Controller *c, int32_t k)
 	return listed(c->model.wall_ident, c->model.wall_count, ident) && !listed(c->felt, c->felt_count, ident);
 }
 
+bool objects_touched_only(const Controller *c, int32_t k)
+{
+	int32_t ux, uy;
+	worldmodel_utak_square(&c->model, &ux, &uy);
+	bool touched = false;
+	for (int i = 0; i < TOUCH_CELLS; i++) {
+		char colour = c->impression.touch[i];
+		if (colour < 'A' || colour > 'Z' || colour == 'B')
+			continue;
+		if (worldmodel_node_at(&c->model, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]) != k)
+			return false;
+		touched = true;
+	}
+	return touched;
+}
+
 bool objects_touching(const Controller *c, int32_t k)
 {
 	int32_t ux, uy;

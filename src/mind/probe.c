@@ -575,19 +575,10 @@ bool probe_begin_step(Controller *c, int32_t k, double step)
 					return false;
 			}
 	/* The grasp takes the first object colour touch shows: it must be this one's. */
+	if (!objects_touched_only(c, k))
+		return false;
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
-	bool touched = false;
-	for (int i = 0; i < TOUCH_CELLS; i++) {
-		char colour = c->impression.touch[i];
-		if (colour < 'A' || colour > 'Z' || colour == 'B')
-			continue;
-		if (worldmodel_node_at(m, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]) != k)
-			return false;
-		touched = true;
-	}
-	if (!touched)
-		return false;
 	static const int8_t way[4][2] = {{1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
 	p->corners = 0;
 	for (int w = 0; w < 4 && p->corners < PROBE_TAKES; w++)

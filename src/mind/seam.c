@@ -152,15 +152,8 @@ static void conclude(Controller *c);
 static void collect(Controller *c, int32_t k)
 {
 	SeamRun *r = &c->seam;
-	const WorldModel *m = &c->model;
-	r->n = 0;
-	const Box *b = &m->node[k].rect;
-	for (int32_t y = (int32_t)floor(b->lo.y); y < (int32_t)ceil(b->hi.y); y++)
-		for (int32_t x = (int32_t)floor(b->lo.x); x < (int32_t)ceil(b->hi.x); x++)
-			if (worldmodel_node_at(m, x, y) == k && r->n < SEAM_MAX_SQUARES) {
-				r->sx[r->n] = x;
-				r->sy[r->n++] = y;
-			}
+	r->n = worldmodel_node_squares(&c->model, k, r->sx, r->sy, SEAM_MAX_SQUARES);
+	r->n = r->n < SEAM_MAX_SQUARES ? r->n : SEAM_MAX_SQUARES;
 }
 
 /* plan(c, k, x, y, i): the pushes from model square (x, y), touch's first object in

@@ -135,20 +135,16 @@ static bool sweep_free(const Controller *c, const SwingRun *s, int sign, int32_t
  * s->sign, counter-clockwise first) sweeps free (sweep_free). */
 static bool turnable(const Controller *c, int32_t k, int32_t ux, int32_t uy, SwingRun *s)
 {
-	const WorldModel *m = &c->model;
-	s->n = 0;
-	const Box *r = &m->node[k].rect;
-	for (int32_t y = (int32_t)floor(r->lo.y); y < (int32_t)ceil(r->hi.y); y++)
-		for (int32_t x = (int32_t)floor(r->lo.x); x < (int32_t)ceil(r->hi.x); x++) {
-			if (worldmodel_node_at(m, x, y) != k)
-				continue;
-			if (abs(x - ux) > SWING_REACH || abs(y - uy) > SWING_REACH || s->n == SWING_MAX_SQUARES)
-				return false;
-			s->sx[s->n] = (int8_t)(x - ux);
-			s->sy[s->n++] = (int8_t)(y - uy);
-		}
-	if (s->n != m->node[k].squares)
+	int32_t xs[SWING_MAX_SQUARES], ys[SWING_MAX_SQUARES];
+	s->n = worldmodel_node_squares(&c->model, k, xs, ys, SWING_MAX_SQUARES);
+	if (s->n > SWING_MAX_SQUARES || s->n != c->model.node[k].squares)
 		return false;
+	for (int32_t i = 0; i < s->n; i++) {
+		if (abs(xs[i] - ux) > SWING_REACH || abs(ys[i] - uy) > SWING_REACH)
+			return false;
+		s->sx[i] = (int8_t)(xs[i] - ux);
+		s->sy[i] = (int8_t)(ys[i] - uy);
+	}
 	for (int sign = 1; sign >= -1; sign -= 2)
 		if (sweep_free(c, s, sign, ux, uy)) {
 			s->sign = sign;
@@ -203,20 +199,8 @@ bool swing_begin(Controller *c, int32_t k)
 		return false;
 	int32_t ux, uy;
 	worldmodel_utak_square(m, &ux, &uy);
-	/* The grasp takes the first object colour touch shows: every one must be
-	 * on this node, and one at least. */
-	bool touched = false;
-	for (int i = 0; i < TOUCH_CELLS; i++) {
-		char colour = c->impression.touch[i];
-		if (colour < 'A' || colour > 'Z' || colour == 'B')
-			continue;
-		if (worldmodel_node_at(m, ux + goals_touch_offset[i][0], uy + goals_touch_offset[i][1]) != k)
-			return false;
-		touched = true;
-	}
-	if (!touched)
-		return false;
-	if (!turnable(c, k, ux, uy, s))
+	/* The grasp takes the first object colour touch shows: it must be this one's. */
+	if (!objects_touched_only(c, k) || !turnable(c, k, ux, uy, s))
 		return false;
 	for (int32_t oy = -EYE_INTERMEDIATE_HALF; oy < EYE_INTERMEDIATE_HALF; oy++)
 		for (int32_t ox = -EYE_INTERMEDIATE_HALF; ox < EYE_INTERMEDIATE_HALF; ox++)

@@ -126,6 +126,22 @@ int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y)
 	return m->node_at[(int64_t)y * m->node_at_w + x];
 }
 
+int32_t worldmodel_node_squares(const WorldModel *m, int32_t k, int32_t *xs, int32_t *ys, int32_t max)
+{
+	const Box *r = &m->node[k].rect;
+	int32_t n = 0;
+	for (int32_t y = (int32_t)floor(r->lo.y); y < (int32_t)ceil(r->hi.y); y++)
+		for (int32_t x = (int32_t)floor(r->lo.x); x < (int32_t)ceil(r->hi.x); x++)
+			if (worldmodel_node_at(m, x, y) == k) {
+				if (n < max) {
+					xs[n] = x;
+					ys[n] = y;
+				}
+				n++;
+			}
+	return n;
+}
+
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y)
 {
 	*x = (int32_t)floor(m->utak.x);

@@ -116,6 +116,11 @@ bool objects_wall(const Controller *c, int32_t k);
  * object when k < 0). */
 bool objects_touching(const Controller *c, int32_t k);
 
+/* objects_touched_only(c, k): touch shows an object's colour, and every one it
+ * shows lies on a square of node k: the grasp, which takes the first object colour
+ * touch feels (paper 2.2), takes node k (probe.h, swing.h). */
+bool objects_touched_only(const Controller *c, int32_t k);
+
 /* objects_touching_target(c): Utak touches the task's object, confirmed as the
  * task's shape; a target confirmed as another shape is dropped (c->target = 0). */
 bool objects_touching_target(Controller *c);

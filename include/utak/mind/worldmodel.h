@@ -322,6 +322,11 @@ Evidence worldmodel_evidence(const WorldModel *m, int32_t x, int32_t y);
  * square (x, y): an object or an uncertain set; -1 for floor, unknown, or Utak. */
 int32_t worldmodel_node_at(const WorldModel *m, int32_t x, int32_t y);
 
+/* worldmodel_node_squares(m, k, xs, ys, max): node k's squares, row by row from its
+ * rectangle's lower left, at most max of them into (xs, ys); how many it has (more
+ * than max when they did not all fit). */
+int32_t worldmodel_node_squares(const WorldModel *m, int32_t k, int32_t *xs, int32_t *ys, int32_t max);
+
 /* worldmodel_utak_square(m, &x, &y): the square holding Utak's believed point. */
 void worldmodel_utak_square(const WorldModel *m, int32_t *x, int32_t *y);
 /* worldmodel_set_position(m, p): overrides the belief (tests give a wrong one). */
